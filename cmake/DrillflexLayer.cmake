@@ -1,0 +1,14 @@
+# drillflex_layer(<layer> [DEPENDS <targets>...])
+# One library target per layer, drillflex_<layer>, from src/<layer>/*.cpp. A layer that has only
+# headers so far is an INTERFACE target, so the layer graph stays the same as the code grows.
+function(drillflex_layer layer)
+  cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  if(sources)
+    add_library(drillflex_${layer} STATIC ${sources})
+    target_link_libraries(drillflex_${layer} PUBLIC ${ARG_DEPENDS})
+  else()
+    add_library(drillflex_${layer} INTERFACE)
+    target_link_libraries(drillflex_${layer} INTERFACE ${ARG_DEPENDS})
+  endif()
+endfunction()
