@@ -58,7 +58,8 @@ Dimension DimensionOf(Quantity quantity);
 // A readable name for error messages: "a diameter (length)", "a density", ...
 std::string QuantityName(Quantity quantity);
 
-// A readable name of a dimension: "a length", "a force", "a density", or "m^a kg^b s^c rad^d".
+// A readable name of a dimension: "a length", "a force", "a density", ..., else the exponent form
+// "a quantity in m^a kg^b s^c rad^d" (zero powers left out).
 std::string DimensionName(const Dimension& dimension);
 
 // The default unit symbol of a quantity in a system, e.g. (Diameter, Field) -> "in".
@@ -72,14 +73,16 @@ struct Unit {
 
 // Parses a unit expression: symbols (m, mm, in, ft, N, kN, lbf, klbf, ppg, sg, psi, ksi, cP, rpm,
 // deg, ...), products with '*', '·' or a space, one '/', exponents (m3, m^3, m³) and numeric
-// factors in the denominator ("deg/100ft", "°/30 m"). Throws UnitError on an unknown symbol.
+// factors in the denominator ("deg/100ft", "°/30 m"). An empty expression is dimensionless 1.
+// Throws UnitError on an unknown symbol (naming close known ones) or a malformed expression.
 Unit ParseUnit(std::string_view expression);
 
 // SI value of a bare number given in the system's default unit for the quantity.
 double ToSI(double value, Quantity quantity, System system);
 
-// The value in the system's default unit of an SI value.
-double FromSI(double si_value, Quantity quantity, System system);
+// The value in the system's default unit of an SI value. (Not named si_value: glibc's <signal.h>
+// defines si_value as a macro.)
+double FromSI(double value_in_si, Quantity quantity, System system);
 
 // Converts between any two units of the same dimension; throws UnitError otherwise.
 double Convert(double value, std::string_view from_unit, std::string_view to_unit);
