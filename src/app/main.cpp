@@ -1,1 +1,71 @@
-int main() { return 0; }
+// drillflex: drill-string and BHA dynamics. `drillflex <analysis> CASE.yaml [-o OUTDIR]`.
+#include <functional>
+#include <iostream>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+
+namespace {
+
+using drillflex::app::CommandOptions;
+
+struct Subcommand {
+  const char* name;
+  const char* description;
+  std::function<int(const CommandOptions&)> run;
+  bool writes_results;
+};
+
+// Runs a subcommand, turning every error into a message on stderr and an exit status.
+int Guarded(const Subcommand& command, const CommandOptions& options) {
+  using namespace drillflex;
+  try {
+    return command.run(options);
+  } catch (const InputError& error) {
+    std::cerr << "drillflex: error: " << error.what() << "\n";
+    return app::kExitBadInput;
+  } catch (const SolverError& error) {
+    std::cerr << "drillflex: " << command.name << " did not converge: " << error.what() << "\n";
+    return app::kExitNotConverged;
+  } catch (const std::exception& error) {
+    std::cerr << "drillflex: error: " << error.what() << "\n";
+    return app::kExitFailure;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"drillflex: drill-string and BHA dynamics by flexible multibody simulation"};
+  cli.require_subcommand(1);
+  cli.set_version_flag("--version", "drillflex 0.1.0");
+
+  const std::vector<Subcommand> commands = {
+      {"check", "Read and validate a case; print a summary of the well, the string and the analyses",
+       drillflex::app::RunCheck, false},
+      {"well", "Write the well trajectory (trajectory.csv, results.json)", drillflex::app::RunWell, true},
+  };
+
+  CommandOptions options;
+  int status = drillflex::app::kExitOk;
+  for (const auto& command : commands) {
+    CLI::App* sub = cli.add_subcommand(command.name, command.description);
+    sub->add_option("case", options.case_path, "Case file (YAML)")->required();
+    if (command.writes_results) {
+      sub->add_option("-o,--output", options.output_directory,
+                      "Output directory (default: results/<case name>)");
+    }
+    sub->callback([&status, &options, command]() { status = Guarded(command, options); });
+  }
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = cli.exit(error);
+    return code == 0 ? 0 : drillflex::app::kExitBadInput;
+  }
+  return status;
+}

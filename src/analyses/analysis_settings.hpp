@@ -1,0 +1,65 @@
+// What each analysis is asked to do, as a case describes it: plain data in SI.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace drillflex::analyses {
+
+enum class StaticMethod { Newton, DynamicRelaxation };
+struct StaticSettings {
+  StaticMethod method = StaticMethod::Newton;
+  int max_iterations = 200;
+};
+
+enum class ModeKind { All, Lateral, Axial, Torsional };
+struct ModesSettings {
+  int count = 10;
+  ModeKind kind = ModeKind::All;
+  bool gyroscopic = false;
+};
+
+enum class ExcitationType { Imbalance, Bit, Motor };
+struct Excitation {
+  ExcitationType type = ExcitationType::Imbalance;
+  double at = 0.0;          // m from the bit (imbalance)
+  double imbalance = 0.0;   // kg·m (m·e)
+  int harmonic = 1;         // multiple of the rotary speed (bit: blades or cones)
+  double lateral = 0.0;     // N
+  double axial = 0.0;       // N
+  double torsional = 0.0;   // N·m
+  int lobes = 0;            // motor rotor lobes
+  int source_line = 0;
+};
+
+struct VibrationSettings {
+  double rpm_from = 20.0 * kPi / 30.0;   // rad/s
+  double rpm_to = 250.0 * kPi / 30.0;    // rad/s
+  double rpm_step = 1.0 * kPi / 30.0;    // rad/s
+  std::vector<Excitation> excitations;
+};
+
+struct BucklingSettings {
+  int modes = 1;  // buckling modes reported
+};
+
+struct TransientSettings {
+  double duration = 1.0;          // s
+  double output_interval = 0.01;  // s
+  std::vector<double> probes;     // m from the bit
+  std::optional<double> time_step;  // s; default adaptive
+};
+
+// The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.
+struct AnalysesConfig {
+  std::optional<StaticSettings> static_analysis;
+  std::optional<ModesSettings> modes;
+  std::optional<VibrationSettings> vibration;
+  std::optional<BucklingSettings> buckling;
+  std::optional<TransientSettings> transient;
+};
+
+}  // namespace drillflex::analyses

@@ -1,0 +1,23 @@
+// The subcommands of the `drillflex` command line. Each returns the process exit status.
+#pragma once
+
+#include <string>
+
+namespace drillflex::app {
+
+// Exit statuses: 0 success, 2 bad input (file, line, key named), 3 a solver that did not
+// converge, 1 anything else (an unwritable output directory, an internal error).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitNotConverged = 3;
+
+struct CommandOptions {
+  std::string case_path;
+  std::string output_directory;  // "" = results/<case name>
+};
+
+int RunCheck(const CommandOptions& options);
+int RunWell(const CommandOptions& options);
+
+}  // namespace drillflex::app

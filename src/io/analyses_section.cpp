@@ -1,0 +1,133 @@
+// Reads `analyses:`: which analyses a plain `run` performs, with their settings.
+#include <fmt/format.h>
+
+#include "io/case_sections.hpp"
+
+namespace drillflex::io {
+namespace {
+
+using units::Quantity;
+
+analyses::StaticSettings ReadStatic(const YamlView& node) {
+  node.ExpectMap("the static analysis settings");
+  node.AllowOnlyKeys({"method", "max_iterations"});
+  analyses::StaticSettings settings;
+  if (const auto method = node.OptionalChild("method")) {
+    const std::string name = method->AsString();
+    if (name == "newton") settings.method = analyses::StaticMethod::Newton;
+    else if (name == "relaxation") settings.method = analyses::StaticMethod::DynamicRelaxation;
+    else method->Fail(fmt::format("expected 'newton' or 'relaxation', got '{}'", name));
+  }
+  settings.max_iterations = node.IntegerOr("max_iterations", settings.max_iterations);
+  if (settings.max_iterations < 1) node.Child("max_iterations").Fail("expected at least 1 iteration");
+  return settings;
+}
+
+analyses::ModesSettings ReadModes(const YamlView& node) {
+  node.ExpectMap("the modes settings {count, kind}");
+  node.AllowOnlyKeys({"count", "kind", "gyroscopic"});
+  analyses::ModesSettings settings;
+  settings.count = node.IntegerOr("count", settings.count);
+  if (settings.count < 1 || settings.count > 1000) node.Child("count").Fail("expected between 1 and 1000 modes");
+  if (const auto kind = node.OptionalChild("kind")) {
+    const std::string name = kind->AsString();
+    if (name == "all") settings.kind = analyses::ModeKind::All;
+    else if (name == "lateral") settings.kind = analyses::ModeKind::Lateral;
+    else if (name == "axial") settings.kind = analyses::ModeKind::Axial;
+    else if (name == "torsional") settings.kind = analyses::ModeKind::Torsional;
+    else kind->Fail(fmt::format("expected all, lateral, axial or torsional, got '{}'", name));
+  }
+  if (const auto gyro = node.OptionalChild("gyroscopic")) settings.gyroscopic = gyro->AsBool();
+  return settings;
+}
+
+analyses::Excitation ReadExcitation(const YamlView& item) {
+  item.ExpectMap("an excitation {type, ...}", false);
+  analyses::Excitation excitation;
+  excitation.source_line = item.location().line;
+  const std::string type = item.Child("type").AsString();
+  if (type == "imbalance") {
+    item.AllowOnlyKeys({"type", "at", "me"});
+    excitation.type = analyses::ExcitationType::Imbalance;
+    excitation.at = item.Quantity("at", Quantity::Length);
+    excitation.imbalance = item.Positive("me", Quantity::Imbalance);
+  } else if (type == "bit") {
+    item.AllowOnlyKeys({"type", "harmonic", "lateral", "axial", "torsional"});
+    excitation.type = analyses::ExcitationType::Bit;
+    excitation.harmonic = item.IntegerOr("harmonic", 1);
+    excitation.lateral = item.QuantityOr("lateral", Quantity::Force, 0.0);
+    excitation.axial = item.QuantityOr("axial", Quantity::Force, 0.0);
+    excitation.torsional = item.QuantityOr("torsional", Quantity::Moment, 0.0);
+    if (excitation.harmonic < 1) item.Child("harmonic").Fail("expected a harmonic of at least 1");
+  } else if (type == "motor") {
+    item.AllowOnlyKeys({"type", "lobes", "lateral", "at"});
+    excitation.type = analyses::ExcitationType::Motor;
+    excitation.lobes = item.IntegerOr("lobes", 0);
+    excitation.lateral = item.Positive("lateral", Quantity::Force);
+    excitation.at = item.QuantityOr("at", Quantity::Length, -1.0);
+    if (item.Has("lobes") && excitation.lobes < 1) item.Child("lobes").Fail("expected at least 1 lobe");
+  } else {
+    item.Child("type").Fail(fmt::format("unknown excitation type '{}'; expected imbalance, bit or motor", type));
+  }
+  return excitation;
+}
+
+analyses::VibrationSettings ReadVibration(const YamlView& node) {
+  node.ExpectMap("the vibration settings {rpm, excitations}");
+  node.AllowOnlyKeys({"rpm", "excitations"});
+  analyses::VibrationSettings settings;
+  if (const auto rpm = node.OptionalChild("rpm")) {
+    rpm->ExpectMap("an RPM sweep {from, to, step}", false);
+    rpm->AllowOnlyKeys({"from", "to", "step"});
+    settings.rpm_from = rpm->QuantityOr("from", Quantity::RotarySpeed, settings.rpm_from);
+    settings.rpm_to = rpm->QuantityOr("to", Quantity::RotarySpeed, settings.rpm_to);
+    settings.rpm_step = rpm->OptionalPositive("step", Quantity::RotarySpeed).value_or(settings.rpm_step);
+    if (settings.rpm_from <= 0.0) rpm->Child("from").Fail("the sweep must start above 0 rpm");
+    if (!(settings.rpm_to >= settings.rpm_from)) rpm->Fail("'to' must not lie below 'from'");
+    if ((settings.rpm_to - settings.rpm_from) / settings.rpm_step > 1.0e5) rpm->Fail("more than 100000 RPM values: use a larger step");
+  }
+  if (const auto list = node.OptionalChild("excitations")) {
+    list->ExpectSequence("excitations");
+    for (std::size_t i = 0; i < list->size(); ++i) settings.excitations.push_back(ReadExcitation(list->Item(i)));
+  }
+  return settings;
+}
+
+analyses::TransientSettings ReadTransient(const YamlView& node) {
+  node.ExpectMap("the transient settings {duration, output_interval, probes}");
+  node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step"});
+  analyses::TransientSettings settings;
+  settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
+  settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
+  settings.time_step = node.OptionalPositive("time_step", Quantity::Time);
+  if (const auto probes = node.OptionalChild("probes")) {
+    probes->ExpectSequence("probe distances from the bit");
+    for (std::size_t i = 0; i < probes->size(); ++i) {
+      settings.probes.push_back(probes->Item(i).AsQuantity(Quantity::Length));
+    }
+  }
+  return settings;
+}
+
+}  // namespace
+
+analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node) {
+  node.ExpectMap("the analyses to run (static, modes, vibration, buckling, transient)");
+  node.AllowOnlyKeys({"static", "modes", "vibration", "buckling", "transient"});
+  analyses::AnalysesConfig config;
+  // A key that is present runs its analysis, even with empty settings (`static: {}` or `static:`).
+  if (const auto item = node.PresentChild("static")) config.static_analysis = ReadStatic(*item);
+  if (const auto item = node.PresentChild("modes")) config.modes = ReadModes(*item);
+  if (const auto item = node.PresentChild("vibration")) config.vibration = ReadVibration(*item);
+  if (const auto item = node.PresentChild("buckling")) {
+    item->ExpectMap("the buckling settings");
+    item->AllowOnlyKeys({"modes"});
+    config.buckling = analyses::BucklingSettings{};
+    config.buckling->modes = item->IntegerOr("modes", 1);
+    if (config.buckling->modes < 1) item->Child("modes").Fail("expected at least 1 buckling mode");
+  }
+  if (const auto item = node.PresentChild("transient")) config.transient = ReadTransient(*item);
+  return config;
+}
+
+}  // namespace drillflex::io

@@ -1,0 +1,57 @@
+// A case: everything one job needs, read from one YAML file (docs/case-format.md). Plain data in SI.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analyses/analysis_settings.hpp"
+#include "core/error.hpp"
+#include "fe/material.hpp"
+#include "model/string_config.hpp"
+#include "units/units.hpp"
+#include "well/survey.hpp"
+
+namespace drillflex::io {
+
+struct WellConfig {
+  std::vector<well::SurveyStation> survey;  // MD (m), inclination and azimuth (rad)
+  std::string survey_file;                  // as given (relative to the case file), or ""
+  std::vector<well::HoleSection> hole;      // top down
+  double bit_md = 0.0;                      // m
+  double output_step = 0.0;                 // m, spacing of trajectory output between stations
+};
+
+struct Case {
+  std::string name;
+  std::string file;        // path of the case file as given
+  std::string directory;   // its directory, for relative paths
+  units::System units = units::System::SI;
+  units::System output_units = units::System::SI;
+
+  std::optional<WellConfig> well;
+  std::optional<model::FluidConfig> fluid;
+  double gravity = 0.0;  // m/s², along +z (down)
+  std::map<std::string, fe::Material> materials;  // built-ins plus the case's own
+  model::StringConfig string;
+  model::ModelSettings model;
+  std::vector<model::Support> supports;
+  std::vector<model::Load> loads;
+  model::Operation operation;
+  analyses::AnalysesConfig analyses;
+};
+
+// Reads and validates a case file. Throws InputError naming the file, line, column and key path.
+Case ReadCase(const std::string& path);
+
+// The same from text (tests); `file` names it in messages, `directory` resolves survey_file.
+Case ParseCase(const std::string& text, const std::string& file, const std::string& directory = ".");
+
+// Total length of the string (m) from the bit end to its top.
+double StringLength(const Case& c);
+
+// The default output directory of a case: results/<case name with spaces as '-'>.
+std::string DefaultOutputDirectory(const Case& c);
+
+}  // namespace drillflex::io

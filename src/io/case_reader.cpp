@@ -1,0 +1,101 @@
+// Reads a case file: the top-level keys, in an order that lets every section see what it needs
+// (the unit system first, the materials before the string).
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "io/case.hpp"
+#include "io/case_sections.hpp"
+
+namespace drillflex::io {
+namespace {
+
+using units::Quantity;
+
+constexpr double kStandardGravity = 9.81;  // m/s², the case contract's default with a well
+
+units::System ReadSystem(const YamlView& root, const char* key, units::System fallback) {
+  const auto node = root.OptionalChild(key);
+  if (!node) return fallback;
+  try {
+    return units::ParseSystem(node->AsString());
+  } catch (const UnitError&) {
+    node->Fail(fmt::format("expected SI or field, got '{}'", node->AsString()));
+  }
+}
+
+Case ReadRoot(const YamlView& root, const std::string& file, const std::string& directory) {
+  root.ExpectMap("a case (a map of keys: name, units, well, string, ...)", false);
+  root.AllowOnlyKeys({"name", "units", "output_units", "well", "fluid", "gravity", "materials",
+                      "string", "model", "supports", "loads", "operation", "analyses"});
+  Case c;
+  c.file = file;
+  c.directory = directory;
+  c.name = root.StringOr("name", std::filesystem::path(file).stem().string());
+  if (c.name.empty()) root.Child("name").Fail("the case name must not be empty");
+  c.units = ReadSystem(root, "units", units::System::SI);
+  c.output_units = ReadSystem(root, "output_units", c.units);
+
+  // Every node below reads bare numbers in the case's unit system.
+  const auto context = std::make_shared<ReadContext>(ReadContext{file, c.units});
+  const YamlView top(root.node(), "", context);
+
+  if (const auto well = top.OptionalChild("well")) c.well = ReadWellSection(*well, directory);
+  if (const auto fluid = top.OptionalChild("fluid")) c.fluid = ReadFluidSection(*fluid);
+  c.gravity = top.QuantityOr("gravity", Quantity::Acceleration, c.well ? kStandardGravity : 0.0);
+  if (c.gravity < 0.0) top.Child("gravity").Fail("gravity acts along +z (down): give its magnitude, >= 0");
+  for (const std::string& name : fe::BuiltInMaterialNames()) {
+    if (const auto material = fe::FindBuiltInMaterial(name)) c.materials[name] = *material;
+  }
+  if (const auto materials = top.OptionalChild("materials")) ReadMaterialsSection(*materials, c.materials);
+  c.string = ReadStringSection(top.Child("string"), c.materials);
+  if (const auto model = top.PresentChild("model")) c.model = ReadModelSection(*model);
+  if (const auto supports = top.OptionalChild("supports")) c.supports = ReadSupportsSection(*supports);
+  if (const auto loads = top.OptionalChild("loads")) c.loads = ReadLoadsSection(*loads);
+  if (const auto operation = top.PresentChild("operation")) c.operation = ReadOperationSection(*operation);
+  if (const auto analyses = top.PresentChild("analyses")) c.analyses = ReadAnalysesSection(*analyses);
+  CheckCaseConsistency(c, top);
+  return c;
+}
+
+}  // namespace
+
+Case ParseCase(const std::string& text, const std::string& file, const std::string& directory) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& error) {
+    throw InputError({file, error.mark.line + 1, error.mark.column + 1}, "",
+                     fmt::format("not valid YAML: {}", error.msg));
+  }
+  const auto context = std::make_shared<ReadContext>(ReadContext{file, units::System::SI});
+  return ReadRoot(YamlView(root, "", context, {file, 1, 1}), file, directory);
+}
+
+Case ReadCase(const std::string& path) {
+  std::ifstream stream(path);
+  if (!stream) throw InputError({path, 0, 0}, "", "cannot open the case file");
+  std::ostringstream text;
+  text << stream.rdbuf();
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  return ParseCase(text.str(), path, directory.empty() ? "." : directory.string());
+}
+
+double StringLength(const Case& c) {
+  double length = 0.0;
+  for (const auto& component : c.string.components) length += component.length * component.count;
+  return length;
+}
+
+std::string DefaultOutputDirectory(const Case& c) {
+  std::string name;
+  for (const char ch : c.name) {
+    const bool safe = std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_' || ch == '.';
+    name.push_back(safe ? ch : '-');
+  }
+  return (std::filesystem::path("results") / name).string();
+}
+
+}  // namespace drillflex::io

@@ -1,0 +1,28 @@
+// The readers of each section of a case file (internal to io/). Each reads one YAML map into
+// plain config structs in SI and throws InputError at the offending node.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "io/case.hpp"
+#include "io/yaml_view.hpp"
+
+namespace drillflex::io {
+
+WellConfig ReadWellSection(const YamlView& node, const std::string& directory);
+model::FluidConfig ReadFluidSection(const YamlView& node);
+void ReadMaterialsSection(const YamlView& node, std::map<std::string, fe::Material>& materials);
+model::StringConfig ReadStringSection(const YamlView& node,
+                                      const std::map<std::string, fe::Material>& materials);
+model::ModelSettings ReadModelSection(const YamlView& node);
+std::vector<model::Support> ReadSupportsSection(const YamlView& node);
+std::vector<model::Load> ReadLoadsSection(const YamlView& node);
+model::Operation ReadOperationSection(const YamlView& node);
+analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node);
+
+// Checks that need more than one section: the string fits the hole at every MD, the string does
+// not reach above the surface, supports and loads lie on the string. `root` locates messages.
+void CheckCaseConsistency(const Case& c, const YamlView& root);
+
+}  // namespace drillflex::io

@@ -1,0 +1,75 @@
+#include "io/result_files.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace drillflex::io {
+
+void ResultFiles::Add(std::string name, std::string content) {
+  files_.emplace_back(std::move(name), std::move(content));
+}
+
+std::vector<std::string> ResultFiles::Commit() const {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  fs::create_directories(directory_, error);
+  if (error) {
+    throw std::runtime_error(fmt::format("cannot create the output directory '{}': {}", directory_, error.message()));
+  }
+  std::vector<std::string> written;
+  for (const auto& [name, content] : files_) {
+    const std::string path = (fs::path(directory_) / name).string();
+    WriteFileAtomically(path, content);
+    written.push_back(path);
+  }
+  const std::string json_path = (fs::path(directory_) / "results.json").string();
+  WriteFileAtomically(json_path, json_.dump(2) + "\n");
+  written.push_back(json_path);
+  return written;
+}
+
+void WriteFileAtomically(const std::string& path, const std::string& content) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) throw std::runtime_error(fmt::format("cannot write '{}': {}", temporary, std::strerror(errno)));
+    file << content;
+    file.flush();
+    if (!file) throw std::runtime_error(fmt::format("cannot write '{}': {}", temporary, std::strerror(errno)));
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw std::runtime_error(fmt::format("cannot move '{}' into place: {}", path, error.message()));
+  }
+}
+
+void CsvTable::AddRow(const std::vector<double>& values) {
+  if (values.size() != columns_.size()) {
+    throw LogicError(fmt::format("CSV row of {} values for {} columns", values.size(), columns_.size()));
+  }
+  rows_.push_back(values);
+}
+
+std::string CsvTable::ToString() const {
+  std::string text;
+  for (std::size_t c = 0; c < columns_.size(); ++c) text.append(c ? "," : "").append(columns_[c]);
+  text.append("\n");
+  for (const auto& row : rows_) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      text.append(c ? "," : "").append(fmt::format("{:.10g}", row[c]));
+    }
+    text.append("\n");
+  }
+  return text;
+}
+
+}  // namespace drillflex::io

@@ -1,0 +1,186 @@
+// Reads `materials:` and `string:` (the components from the bit upward).
+#include <fmt/format.h>
+
+#include "io/case_sections.hpp"
+
+namespace drillflex::io {
+namespace {
+
+using model::ComponentType;
+using units::Quantity;
+
+const std::vector<std::pair<std::string, ComponentType>>& ComponentTypes() {
+  static const std::vector<std::pair<std::string, ComponentType>> types = {
+      {"bit", ComponentType::Bit},         {"stabilizer", ComponentType::Stabilizer},
+      {"collar", ComponentType::Collar},   {"hwdp", ComponentType::Hwdp},
+      {"pipe", ComponentType::Pipe},       {"mwd", ComponentType::Mwd},
+      {"lwd", ComponentType::Lwd},         {"jar", ComponentType::Jar},
+      {"motor", ComponentType::Motor},     {"sub", ComponentType::Sub},
+      {"crossover", ComponentType::Crossover}};
+  return types;
+}
+
+ComponentType ReadComponentType(const YamlView& node) {
+  const std::string name = node.AsString();
+  std::vector<std::string> names;
+  for (const auto& [type_name, type] : ComponentTypes()) {
+    if (type_name == name) return type;
+    names.push_back(type_name);
+  }
+  std::string message = fmt::format("unknown component type '{}'", name);
+  const std::string suggestion = ClosestMatch(name, names);
+  if (!suggestion.empty()) message.append(fmt::format(" (did you mean '{}'?)", suggestion));
+  else message.append("; expected one of: ").append(JoinWords(names));
+  node.Fail(message);
+}
+
+std::vector<std::string> AllowedComponentKeys(ComponentType type) {
+  std::vector<std::string> keys = {"type", "name", "od", "id", "length", "material", "count"};
+  switch (type) {
+    case ComponentType::Stabilizer:
+      keys.insert(keys.end(), {"blade_od", "blade_length"});
+      break;
+    case ComponentType::Pipe:
+    case ComponentType::Hwdp:
+      keys.insert(keys.end(), {"joint_od", "joint_id", "joint_length", "joint_spacing"});
+      break;
+    case ComponentType::Motor:
+      keys.insert(keys.end(), {"bend", "bend_to_bit", "toolface", "rev_per_volume", "lobes", "blade_od", "blade_length"});
+      break;
+    default:
+      break;
+  }
+  return keys;
+}
+
+// Checks a diameter pair: both positive, the bore smaller than the outside.
+void CheckBore(const YamlView& item, const char* id_key, double outer, double inner, const char* od_key) {
+  if (inner < 0.0) item.Child(id_key).Fail("the inner diameter must not be negative");
+  if (inner >= outer) {
+    const units::System system = item.context().system;
+    item.Child(id_key).Fail(fmt::format(
+        "the inner diameter ({:.6g} {unit}) must be smaller than '{}' ({:.6g} {unit})",
+        units::FromSI(inner, Quantity::Diameter, system), od_key,
+        units::FromSI(outer, Quantity::Diameter, system),
+        fmt::arg("unit", units::DefaultUnit(Quantity::Diameter, system))));
+  }
+}
+
+void ReadStabilizerKeys(const YamlView& item, model::Component& component) {
+  component.blade_diameter = item.OptionalPositive("blade_od", Quantity::Diameter);
+  component.blade_length = item.OptionalPositive("blade_length", Quantity::Length);
+  if (component.blade_diameter && *component.blade_diameter < component.outer_diameter) {
+    item.Child("blade_od").Fail("the blade OD must not be smaller than the body OD");
+  }
+  if (component.blade_length && *component.blade_length > component.length) {
+    item.Child("blade_length").Fail("the blades must not be longer than the stabilizer");
+  }
+}
+
+void ReadToolJointKeys(const YamlView& item, model::Component& component) {
+  component.joint_diameter = item.OptionalPositive("joint_od", Quantity::Diameter);
+  component.joint_inner_diameter = item.OptionalPositive("joint_id", Quantity::Diameter);
+  component.joint_length = item.OptionalPositive("joint_length", Quantity::Length);
+  component.joint_spacing = item.OptionalPositive("joint_spacing", Quantity::Length);
+  if (component.joint_diameter && *component.joint_diameter < component.outer_diameter) {
+    item.Child("joint_od").Fail("the tool-joint OD must not be smaller than the body OD");
+  }
+  if (component.joint_diameter && component.joint_inner_diameter) {
+    CheckBore(item, "joint_id", *component.joint_diameter, *component.joint_inner_diameter, "joint_od");
+  }
+}
+
+void ReadMotorKeys(const YamlView& item, model::Component& component) {
+  component.bend_angle = item.OptionalQuantity("bend", Quantity::Angle);
+  component.bend_to_bit = item.OptionalPositive("bend_to_bit", Quantity::Length);
+  component.toolface = item.OptionalQuantity("toolface", Quantity::Angle);
+  component.speed_per_flow = item.OptionalPositive("rev_per_volume", Quantity::RevolutionsPerVolume);
+  if (const auto lobes = item.OptionalChild("lobes")) {
+    component.lobes = lobes->AsInteger();
+    if (*component.lobes < 1) lobes->Fail("expected a positive number of rotor lobes");
+  }
+  if (component.bend_angle && (*component.bend_angle < 0.0 || *component.bend_angle > 5.0 * kDegree)) {
+    item.Child("bend").Fail("expected a bend angle between 0 and 5 deg");
+  }
+  if (component.bend_angle && !component.bend_to_bit) {
+    item.Child("bend").Fail("a bent motor needs 'bend_to_bit', the distance from the bit to the bend");
+  }
+  component.blade_diameter = item.OptionalPositive("blade_od", Quantity::Diameter);
+  component.blade_length = item.OptionalPositive("blade_length", Quantity::Length);
+}
+
+model::Component ReadComponent(const YamlView& item, const std::map<std::string, fe::Material>& materials) {
+  item.ExpectMap("a component {type, od, id, length, ...}", false);
+  model::Component component;
+  component.type = ReadComponentType(item.Child("type"));
+  item.AllowOnlyKeys(AllowedComponentKeys(component.type));
+  component.source_line = item.location().line;
+  component.name = item.StringOr("name", model::ComponentTypeName(component.type));
+  component.outer_diameter = item.Positive("od", Quantity::Diameter);
+  const bool bore_optional = component.type == ComponentType::Bit;
+  component.inner_diameter = bore_optional ? item.QuantityOr("id", Quantity::Diameter, 0.0)
+                                           : item.Quantity("id", Quantity::Diameter);
+  CheckBore(item, "id", component.outer_diameter, component.inner_diameter, "od");
+  component.length = item.Positive("length", Quantity::Length);
+  component.count = item.IntegerOr("count", 1);
+  if (component.count < 1) item.Child("count").Fail("expected a count of at least 1");
+  if (const auto material = item.OptionalChild("material")) {
+    component.material = material->AsString();
+    if (!materials.count(component.material)) {
+      std::vector<std::string> names;
+      for (const auto& entry : materials) names.push_back(entry.first);
+      std::string message = fmt::format("unknown material '{}'", component.material);
+      const std::string suggestion = ClosestMatch(component.material, names);
+      if (!suggestion.empty()) message.append(fmt::format(" (did you mean '{}'?)", suggestion));
+      else message.append("; known: ").append(JoinWords(names)).append(" (define others under 'materials')");
+      material->Fail(message);
+    }
+  } else if (component.type == ComponentType::Mwd || component.type == ComponentType::Lwd) {
+    component.material = "nonmag";
+  }
+  switch (component.type) {
+    case ComponentType::Stabilizer: ReadStabilizerKeys(item, component); break;
+    case ComponentType::Pipe:
+    case ComponentType::Hwdp: ReadToolJointKeys(item, component); break;
+    case ComponentType::Motor: ReadMotorKeys(item, component); break;
+    default: break;
+  }
+  return component;
+}
+
+}  // namespace
+
+void ReadMaterialsSection(const YamlView& node, std::map<std::string, fe::Material>& materials) {
+  node.ExpectMap("materials by name", false);
+  for (const std::string& name : node.Keys()) {
+    const YamlView item = node.Child(name);
+    item.ExpectMap("a material {E, nu, density}", false);
+    item.AllowOnlyKeys({"E", "nu", "density"});
+    fe::Material material;
+    material.name = name;
+    material.youngs_modulus = item.Positive("E", Quantity::Stress);
+    material.poisson_ratio = item.Quantity("nu", Quantity::Dimensionless);
+    material.density = item.Positive("density", Quantity::Density);
+    if (material.poisson_ratio <= -1.0 || material.poisson_ratio >= 0.5) {
+      item.Child("nu").Fail("expected a Poisson ratio between -1 and 0.5");
+    }
+    materials[name] = material;
+  }
+}
+
+model::StringConfig ReadStringSection(const YamlView& node,
+                                      const std::map<std::string, fe::Material>& materials) {
+  node.ExpectSequence("the string's components from the bit upward");
+  if (node.size() == 0) node.Fail("the string needs at least one component");
+  model::StringConfig string;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YamlView item = node.Item(i);
+    string.components.push_back(ReadComponent(item, materials));
+    if (string.components.back().type == ComponentType::Bit && i != 0) {
+      item.Child("type").Fail("the bit must be the first component (the string is listed from the bit upward)");
+    }
+  }
+  return string;
+}
+
+}  // namespace drillflex::io

@@ -1,0 +1,122 @@
+// The drill string, model settings, supports, loads and operating point as a case describes them:
+// plain data in SI (m, kg, N, Pa, rad, s). Read by io/, consumed by the model builder.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace drillflex::model {
+
+enum class ComponentType { Bit, Stabilizer, Collar, Hwdp, Pipe, Mwd, Lwd, Jar, Motor, Sub, Crossover };
+
+// One entry of the string list (from the bit upward). `count` repeats it.
+struct Component {
+  ComponentType type = ComponentType::Collar;
+  std::string name;             // as the user called it, or the type name
+  double outer_diameter = 0.0;  // m: body OD
+  double inner_diameter = 0.0;  // m: bore
+  double length = 0.0;          // m: one item (count repeats it)
+  std::string material = "steel";
+  int count = 1;
+  // Stabilizer: blade OD and blade length (m); the blades sit at mid-length by default.
+  std::optional<double> blade_diameter;
+  std::optional<double> blade_length;
+  // Drill pipe and HWDP: tool joints (m); a joint every `joint_spacing` (default one per item).
+  std::optional<double> joint_diameter;
+  std::optional<double> joint_inner_diameter;
+  std::optional<double> joint_length;
+  std::optional<double> joint_spacing;
+  // Mud motor: bend angle (rad) of the bent housing, its distance from the bit (m), toolface (rad),
+  // and the motor speed per flow rate (rad per m³).
+  std::optional<double> bend_angle;
+  std::optional<double> bend_to_bit;
+  std::optional<double> toolface;
+  std::optional<double> speed_per_flow;
+  std::optional<int> lobes;  // rotor lobes
+  int source_line = 0;       // line in the case file, for messages
+};
+
+// The largest diameter of a component that can touch the wall: blade, tool joint or body.
+double ContactDiameter(const Component& component);
+
+// Tool-joint defaults where a pipe entry does not give them (API RP 7G range 2 joints).
+inline constexpr double kDefaultJointSpacing = 9.144;  // m (30 ft): one joint per pipe length
+inline constexpr double kDefaultJointLength = 0.4572;  // m (18 in): box plus pin
+
+// Cross-section areas (m²) averaged along a component, tool joints smeared over their
+// spacing: the material area sets the mass, the outer and bore areas the displaced and internal fluid.
+struct AveragedAreas {
+  double material = 0.0;
+  double outer = 0.0;
+  double bore = 0.0;
+};
+AveragedAreas AverageAreas(const Component& component);
+
+struct FluidConfig {
+  double density = 0.0;                   // kg/m³, annulus
+  double viscosity = 0.0;                 // Pa·s
+  std::optional<double> internal_density; // kg/m³, inside the string (default: same as annulus)
+  double added_mass_coefficient_override = -1.0;  // < 0: from the confinement (method.md §7)
+};
+
+struct ContactSettings {
+  double stiffness = 1.0e8;      // N/m
+  double damping_ratio = 0.1;
+  double friction = 0.25;        // tangential (rotating) Coulomb coefficient
+  std::optional<double> axial_friction;  // sliding along the hole, default = friction
+};
+
+enum class MassKind { Consistent, Lumped };
+enum class BeamTheory { EulerBernoulli, Timoshenko };
+
+struct ModelSettings {
+  double body_length = 3.0;      // m, longest flexible body
+  int elements_per_body = 10;
+  int modes_per_body = 6;        // H: fixed-interface normal modes per body
+  double coupling_factor = 100.0;
+  double structural_damping = 0.01;  // modal damping ratio
+  ContactSettings contact;
+  MassKind mass = MassKind::Consistent;
+  BeamTheory beam = BeamTheory::EulerBernoulli;
+};
+
+// Degrees of freedom in the string frame: x along the string (up-hole), y right, z high side.
+enum Dof { kX = 0, kY = 1, kZ = 2, kRx = 3, kRy = 4, kRz = 5 };
+
+struct Support {
+  double at = 0.0;                   // m from the bit end
+  std::array<bool, 6> fixed{};       // indexed by Dof
+  int source_line = 0;
+};
+
+// A point load (at) or a distributed load (from..to), forces and moments in the string frame.
+struct Load {
+  bool distributed = false;
+  double at = 0.0;                   // m, point loads
+  double from = 0.0, to = 0.0;       // m, distributed loads
+  Vec3 force = Vec3::Zero();         // N (point)
+  Vec3 moment = Vec3::Zero();        // N·m (point)
+  Vec3 force_per_length = Vec3::Zero();   // N/m (distributed)
+  Vec3 moment_per_length = Vec3::Zero();  // N·m/m (distributed)
+  int source_line = 0;
+};
+
+struct Operation {
+  double weight_on_bit = 0.0;   // N, compression at the bit
+  double rpm = 0.0;             // surface rotary speed, rad/s
+  double torque_on_bit = 0.0;   // N·m
+  std::optional<double> flow_rate;  // m³/s
+  std::optional<double> hook_load;  // N
+};
+
+struct StringConfig {
+  std::vector<Component> components;
+};
+
+const char* ComponentTypeName(ComponentType type);
+
+}  // namespace drillflex::model

@@ -1,0 +1,277 @@
+// The case reader: every key of the contract read into SI, and every rejected input reported with
+// its file, line and key path.
+#include "io/case.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace drillflex::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr double kFt = 0.3048;
+constexpr double kIn = 0.0254;
+constexpr double kLbf = 4.4482216152605;
+
+const char* kFieldCase = R"(name: 8-1/2 in rotary BHA in a build section
+units: field
+well:
+  survey:
+    - [0, 0, 0]
+    - [5000, 0, 0]
+    - [6000, 30, 45]
+  hole:
+    - {to: 4000, diameter: 9.625}
+    - {diameter: 8.5}
+  bit_md: 6000
+fluid: {density: 10.5, viscosity: 20}
+materials:
+  brass: {E: 1.0e11 Pa, nu: 0.33, density: 8500 kg/m3}
+string:
+  - {type: bit, od: 8.5, length: 1.0}
+  - {type: stabilizer, od: 6.75, id: 2.8125, length: 5, blade_od: 8.375}
+  - {type: collar, od: 6.75, id: 2.8125, length: 30, count: 3}
+  - {type: pipe, od: 5, id: 4.276, length: 1000, material: steel, joint_od: 6.625}
+model:
+  body_length: 3.0 m
+  elements_per_body: 10
+  modes_per_body: 6
+  coupling_factor: 100
+  structural_damping: 0.01
+  contact: {stiffness: 1e8 N/m, damping_ratio: 0.1, friction: 0.25}
+supports:
+  - {at: 0, fix: [x, y, z]}
+loads:
+  - {at: 5.08 m, force: [0, 1000, 0]}
+  - {from: 0, to: 5.08 m, per_length: [0, 0, 100]}
+  - {at: 5.08 m, moment: [0, 0, 500]}
+operation: {wob: 25, rpm: 120, torque_on_bit: 5000}
+analyses:
+  static: {}
+  modes: {count: 10, kind: all}
+  vibration:
+    rpm: {from: 20, to: 250, step: 1}
+    excitations:
+      - {type: imbalance, at: 40, me: 0.02 kg*m}
+      - {type: bit, harmonic: 3, lateral: 500 lbf, axial: 1000 lbf}
+  transient: {duration: 10 s, output_interval: 0.01 s, probes: [10 ft, 60 ft]}
+)";
+
+TEST(CaseReader, ReadsEveryKeyOfTheContractInSI) {
+  const Case c = ParseCase(kFieldCase, "case.yaml");
+  EXPECT_EQ(c.name, "8-1/2 in rotary BHA in a build section");
+  EXPECT_EQ(c.units, units::System::Field);
+  EXPECT_EQ(c.output_units, units::System::Field);
+  ASSERT_TRUE(c.well);
+  ASSERT_EQ(c.well->survey.size(), 3u);
+  EXPECT_NEAR(c.well->survey[2].md, 6000 * kFt, 1e-9);
+  EXPECT_NEAR(c.well->survey[2].inclination, 30 * kDegree, 1e-12);
+  EXPECT_NEAR(c.well->survey[2].azimuth, 45 * kDegree, 1e-12);
+  ASSERT_EQ(c.well->hole.size(), 2u);
+  EXPECT_NEAR(*c.well->hole[0].to_md, 4000 * kFt, 1e-9);
+  EXPECT_NEAR(c.well->hole[1].diameter, 8.5 * kIn, 1e-12);
+  EXPECT_FALSE(c.well->hole[1].to_md);
+  EXPECT_NEAR(c.well->bit_md, 6000 * kFt, 1e-9);
+  EXPECT_NEAR(c.well->output_step, 30 * kFt, 1e-12);
+  ASSERT_TRUE(c.fluid);
+  EXPECT_NEAR(c.fluid->density, 10.5 * 119.826427, 1e-3);
+  EXPECT_NEAR(c.fluid->viscosity, 0.020, 1e-12);
+  EXPECT_DOUBLE_EQ(c.gravity, 9.81);
+  ASSERT_TRUE(c.materials.count("brass"));
+  EXPECT_DOUBLE_EQ(c.materials.at("brass").youngs_modulus, 1.0e11);
+  ASSERT_TRUE(c.materials.count("steel"));
+  ASSERT_EQ(c.string.components.size(), 4u);
+  const auto& stabilizer = c.string.components[1];
+  EXPECT_EQ(stabilizer.type, model::ComponentType::Stabilizer);
+  EXPECT_NEAR(stabilizer.inner_diameter, 2.8125 * kIn, 1e-12);
+  EXPECT_NEAR(*stabilizer.blade_diameter, 8.375 * kIn, 1e-12);
+  EXPECT_EQ(c.string.components[2].count, 3);
+  EXPECT_NEAR(*c.string.components[3].joint_diameter, 6.625 * kIn, 1e-12);
+  EXPECT_NEAR(c.model.body_length, 3.0, 1e-12);
+  EXPECT_EQ(c.model.modes_per_body, 6);
+  EXPECT_DOUBLE_EQ(c.model.contact.stiffness, 1e8);
+  ASSERT_EQ(c.supports.size(), 1u);
+  EXPECT_TRUE(c.supports[0].fixed[model::kX] && c.supports[0].fixed[model::kZ]);
+  EXPECT_FALSE(c.supports[0].fixed[model::kRx]);
+  ASSERT_EQ(c.loads.size(), 3u);
+  EXPECT_NEAR(c.loads[0].force.y(), 1000 * kLbf, 1e-9);
+  EXPECT_TRUE(c.loads[1].distributed);
+  EXPECT_NEAR(c.loads[1].force_per_length.z(), 100 * kLbf / kFt, 1e-9);
+  EXPECT_NEAR(c.loads[2].moment.z(), 500 * kLbf * kFt, 1e-9);
+  EXPECT_NEAR(c.operation.weight_on_bit, 25000 * kLbf, 1e-6);
+  EXPECT_NEAR(c.operation.rpm, 120 * 2 * kPi / 60, 1e-12);
+  EXPECT_NEAR(c.operation.torque_on_bit, 5000 * kLbf * kFt, 1e-9);
+  ASSERT_TRUE(c.analyses.static_analysis);
+  ASSERT_TRUE(c.analyses.modes);
+  EXPECT_EQ(c.analyses.modes->count, 10);
+  ASSERT_TRUE(c.analyses.vibration);
+  EXPECT_NEAR(c.analyses.vibration->rpm_to, 250 * 2 * kPi / 60, 1e-12);
+  ASSERT_EQ(c.analyses.vibration->excitations.size(), 2u);
+  EXPECT_NEAR(c.analyses.vibration->excitations[0].at, 40 * kFt, 1e-12);
+  EXPECT_NEAR(c.analyses.vibration->excitations[0].imbalance, 0.02, 1e-15);
+  EXPECT_EQ(c.analyses.vibration->excitations[1].harmonic, 3);
+  EXPECT_NEAR(c.analyses.vibration->excitations[1].axial, 1000 * kLbf, 1e-9);
+  ASSERT_TRUE(c.analyses.transient);
+  EXPECT_NEAR(c.analyses.transient->duration, 10.0, 1e-12);
+  ASSERT_EQ(c.analyses.transient->probes.size(), 2u);
+  EXPECT_NEAR(c.analyses.transient->probes[1], 60 * kFt, 1e-12);
+  EXPECT_FALSE(c.analyses.buckling);
+}
+
+TEST(CaseReader, DefaultsWithoutAWell) {
+  const Case c = ParseCase(R"(
+string:
+  - {type: collar, od: 0.0762, id: 0, length: 5.08}
+supports: [{at: 0, fix: all}]
+analyses: {modes: }
+)", "beam.yaml");
+  EXPECT_EQ(c.name, "beam");
+  EXPECT_EQ(c.units, units::System::SI);
+  EXPECT_FALSE(c.well);
+  EXPECT_DOUBLE_EQ(c.gravity, 0.0);
+  EXPECT_EQ(c.model.elements_per_body, 10);
+  ASSERT_TRUE(c.analyses.modes);
+  EXPECT_EQ(c.analyses.modes->count, 10);
+  EXPECT_TRUE(c.supports[0].fixed[model::kRz]);
+  EXPECT_NEAR(StringLength(c), 5.08, 1e-12);
+}
+
+// The message of the InputError a case raises, or "" when it reads.
+std::string ErrorOf(const std::string& text, int* line = nullptr, std::string* key = nullptr) {
+  try {
+    ParseCase(text, "bad.yaml", DRILLFLEX_SOURCE_DIR "/tests/io");
+  } catch (const InputError& error) {
+    if (line) *line = error.location().line;
+    if (key) *key = error.key_path();
+    return error.what();
+  }
+  return "";
+}
+
+const char* kGoodString = "string:\n  - {type: collar, od: 8, id: 2.8125, length: 30}\n";
+
+struct RejectedCase {
+  const char* label;
+  std::string text;
+  int line;
+  const char* key;
+  const char* says;
+};
+
+void PrintTo(const RejectedCase& rejected, std::ostream* os) { *os << rejected.label; }
+
+class RejectedInput : public ::testing::TestWithParam<RejectedCase> {};
+
+TEST_P(RejectedInput, NamesFileLineKeyAndWhatWasExpected) {
+  const RejectedCase& rejected = GetParam();
+  int line = 0;
+  std::string key;
+  const std::string message = ErrorOf(rejected.text, &line, &key);
+  ASSERT_FALSE(message.empty()) << rejected.label << ": the case was accepted";
+  EXPECT_EQ(line, rejected.line) << message;
+  EXPECT_EQ(key, rejected.key) << message;
+  EXPECT_THAT(message, HasSubstr("bad.yaml:" + std::to_string(rejected.line) + ":")) << message;
+  EXPECT_THAT(message, HasSubstr(rejected.says)) << message;
+}
+
+const std::string kWellHead = "units: field\nwell:\n  survey:\n    - [0, 0, 0]\n    - [1000, 10, 0]\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    CaseReader, RejectedInput,
+    ::testing::Values(
+        RejectedCase{"unknown key", std::string(kGoodString) + "modle: {}\n", 3, "modle", "did you mean 'model'"},
+        RejectedCase{"unknown nested key", "units: field\nstring:\n  - {type: collar, od: 8, idd: 2, length: 30}\n", 3,
+                     "string[0].idd", "did you mean 'id'"},
+        RejectedCase{"missing key", "units: field\nstring:\n  - {type: collar, od: 8, length: 30}\n", 3,
+                     "string[0]", "missing required key 'id'"},
+        RejectedCase{"missing string", "name: x\n", 1, "", "missing required key 'string'"},
+        RejectedCase{"wrong type", "units: field\nstring:\n  - {type: collar, od: [8], id: 2, length: 30}\n", 3,
+                     "string[0].od", "expected a diameter"},
+        RejectedCase{"ID >= OD", "units: field\nstring:\n  - {type: collar, od: 6.75, id: 7, length: 30}\n", 3,
+                     "string[0].id", "must be smaller than 'od'"},
+        RejectedCase{"zero length", "units: field\nstring:\n  - {type: collar, od: 6.75, id: 2, length: 0}\n", 3,
+                     "string[0].length", "greater than zero"},
+        RejectedCase{"negative diameter", "units: field\nstring:\n  - {type: collar, od: -6.75, id: 2, length: 3}\n", 3,
+                     "string[0].od", "greater than zero"},
+        RejectedCase{"wrong unit dimension", "string:\n  - {type: collar, od: 12.5 ppg, id: 2, length: 3}\n", 2,
+                     "string[0].od", "density"},
+        RejectedCase{"unknown component type", "string:\n  - {type: colar, od: 1, id: 0.5, length: 3}\n", 2,
+                     "string[0].type", "did you mean 'collar'"},
+        RejectedCase{"survey MD backwards", kWellHead + "    - [900, 12, 0]\n  hole: 12.25\n" + kGoodString, 6,
+                     "well.survey[2]", "strictly increase"},
+        RejectedCase{"inclination out of range", kWellHead + "    - [2000, 181, 0]\n  hole: 12.25\n" + kGoodString, 6,
+                     "well.survey[2]", "between 0 and 180"},
+        RejectedCase{"hole smaller than string", kWellHead + "  hole: 7.5\n" + kGoodString, 8, "string[0]",
+                     "does not fit the hole"},
+        RejectedCase{"bit beyond survey", kWellHead + "  hole: 12.25\n  bit_md: 1200\n" + kGoodString, 7,
+                     "well.bit_md", "beyond the last survey station"},
+        RejectedCase{"unreadable survey file", "units: field\nwell:\n  survey_file: no-such.csv\n  hole: 12.25\n" +
+                                                   std::string(kGoodString), 3, "well.survey_file",
+                     "cannot read the survey file"},
+        RejectedCase{"unknown unit", "string:\n  - {type: collar, od: 8 furlong, id: 0, length: 3}\n", 2,
+                     "string[0].od", "furlong"},
+        RejectedCase{"bad units system", "units: imperial\n" + std::string(kGoodString), 1, "units",
+                     "expected SI or field"},
+        RejectedCase{"load off the string", std::string(kGoodString) + "loads:\n  - {at: 40, force: [0, 1, 0]}\n", 4,
+                     "loads[0].at", "off the string"},
+        RejectedCase{"bad dof", std::string(kGoodString) + "supports:\n  - {at: 0, fix: [x, w]}\n", 4,
+                     "supports[0].fix[1]", "unknown degree of freedom 'w'"},
+        RejectedCase{"invalid yaml", "string: [\n  - {", 2, "", "not valid YAML"},
+        RejectedCase{"bad mode kind", std::string(kGoodString) + "analyses:\n  modes: {kind: bending}\n", 4,
+                     "analyses.modes.kind", "lateral"},
+        RejectedCase{"string longer than well", kWellHead + "  hole: 12.25\nstring:\n  - {type: pipe, od: 5, id: 4, length: 2000}\n",
+                     8, "string", "longer than the well"}),
+    [](const ::testing::TestParamInfo<RejectedCase>& info) {
+      std::string name = info.param.label;
+      for (char& ch : name) if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
+
+TEST(CaseReader, SurveyFileRelativeToTheCaseWithHeader) {
+  const auto directory = std::filesystem::temp_directory_path() / "drillflex-io-test";
+  std::filesystem::create_directories(directory);
+  {
+    std::ofstream csv(directory / "survey.csv");
+    csv << "md_ft,inc_deg,azi_deg\n0,0,0\n1000,0,0\n2000,20,90\n";
+    std::ofstream yaml(directory / "case.yaml");
+    yaml << "units: field\nwell:\n  survey_file: survey.csv\n  hole: 12.25\n" << kGoodString;
+  }
+  const Case c = ReadCase((directory / "case.yaml").string());
+  ASSERT_EQ(c.well->survey.size(), 3u);
+  EXPECT_NEAR(c.well->survey[2].md, 2000 * kFt, 1e-9);
+  EXPECT_NEAR(c.well->survey[2].azimuth, kPi / 2, 1e-12);
+  EXPECT_NEAR(c.well->bit_md, 2000 * kFt, 1e-9);
+}
+
+TEST(CaseReader, SurveyFileErrorsNameTheCsvLine) {
+  const auto directory = std::filesystem::temp_directory_path() / "drillflex-io-test2";
+  std::filesystem::create_directories(directory);
+  {
+    std::ofstream csv(directory / "survey.csv");
+    csv << "md,inc,azi\n0,0,0\n1000,0,0\n900,20,90\n";
+    std::ofstream yaml(directory / "case.yaml");
+    yaml << "units: field\nwell:\n  survey_file: survey.csv\n  hole: 12.25\n" << kGoodString;
+  }
+  try {
+    ReadCase((directory / "case.yaml").string());
+    FAIL() << "accepted a survey whose MD goes backwards";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("survey.csv:4"));
+    EXPECT_THAT(error.what(), HasSubstr("strictly increase"));
+  }
+}
+
+TEST(CaseReader, UnitsWithTheirOwnUnitOverrideTheSystem) {
+  const Case si = ParseCase("string:\n  - {type: collar, od: 8 in, id: 2.8125 in, length: 30 ft}\n", "a.yaml");
+  const Case field = ParseCase("units: field\nstring:\n  - {type: collar, od: 8, id: 2.8125, length: 30}\n", "b.yaml");
+  EXPECT_DOUBLE_EQ(si.string.components[0].outer_diameter, field.string.components[0].outer_diameter);
+  EXPECT_DOUBLE_EQ(si.string.components[0].length, field.string.components[0].length);
+}
+
+}  // namespace
+}  // namespace drillflex::io
