@@ -35,9 +35,9 @@ void AddBarBlock(int dof, double diagonal, double off_diagonal, Mat12& element) 
 // [a, b, −a, b; b, d, −b, e; −a, −b, a, −b; b, e, −b, d].
 Mat4 AntisymmetricPattern(double a, double b, double d, double e) {
   Mat4 m;
-  m << a, b, -a, b,  //
-      b, d, -b, e,   //
-      -a, -b, a, -b, //
+  m << a, b, -a, b,   //
+      b, d, -b, e,    //
+      -a, -b, a, -b,  //
       b, e, -b, d;
   return m;
 }
@@ -75,9 +75,9 @@ Mat12 ElementStiffness(const BeamElementProperties& p, BeamTheory theory) {
   // Przemieniecki (1968): EI/((1+Φ)L³)·[12, 6L, −12, 6L; 6L, (4+Φ)L², −6L, (2−Φ)L²; …].
   const double c = p.youngs_modulus * p.second_moment / ((1.0 + phi) * L * L * L);
   Mat4 bending;
-  bending << 12.0, 6.0 * L, -12.0, 6.0 * L,                                  //
-      6.0 * L, (4.0 + phi) * L * L, -6.0 * L, (2.0 - phi) * L * L,           //
-      -12.0, -6.0 * L, 12.0, -6.0 * L,                                       //
+  bending << 12.0, 6.0 * L, -12.0, 6.0 * L,                         //
+      6.0 * L, (4.0 + phi) * L * L, -6.0 * L, (2.0 - phi) * L * L,  //
+      -12.0, -6.0 * L, 12.0, -6.0 * L,                              //
       6.0 * L, (2.0 - phi) * L * L, -6.0 * L, (4.0 + phi) * L * L;
   AddBendingBlock(c * bending, k);
   return k;

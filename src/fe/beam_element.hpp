@@ -25,8 +25,8 @@ enum class BeamTheory { kEulerBernoulli, kTimoshenko };
 
 // Rotary inertia of a lumped node (element-level choice, see ElementLumpedMass).
 enum class LumpedRotaryInertia {
-  kSection,             // ρ J L/2 (torsion), ρ I L/2 (bending): the cross-sections' own inertia
-  kSectionAndSegment,   // plus (ρA + m_lat)(L/2)³/3 on θy, θz: the half-segment's mass moment
+  kSection,            // ρ J L/2 (torsion), ρ I L/2 (bending): the cross-sections' own inertia
+  kSectionAndSegment,  // plus (ρA + m_lat)(L/2)³/3 on θy, θz: the half-segment's mass moment
 };
 
 // Everything a uniform element needs. SI units.
@@ -40,7 +40,7 @@ struct BeamElementProperties {
   double density = 0.0;                  // ρ, kg/m³
   double shear_coefficient = 1.0;        // κ (Timoshenko only)
   double lateral_mass_per_length = 0.0;  // extra mass moving with v and w only (fluid), kg/m
-  bool bending_rotary_inertia = true;    // ρ I terms of θy, θz (false: Euler–Bernoulli inertia)
+  bool bending_rotary_inertia = true;  // ρ I terms of θy, θz (false: Euler–Bernoulli inertia)
 };
 
 // Properties of an element of length `length` cut from a section of a material.

@@ -67,9 +67,8 @@ BodyFeModel BuildBodyFeModel(const BodySpec& spec) {
 
   // Every element is the same, so each matrix is one element matrix assembled n times.
   const Mat12 lumped = ElementLumpedMass(element, options.lumped_rotary);
-  const Mat12 mass = options.mass == MassKind::kConsistent
-                         ? ElementConsistentMass(element, options.beam)
-                         : lumped;
+  const Mat12 mass =
+      options.mass == MassKind::kConsistent ? ElementConsistentMass(element, options.beam) : lumped;
   model.stiffness = Assemble(ElementStiffness(element, options.beam), n);
   model.mass = Assemble(mass, n);
   model.geometric_stiffness = Assemble(ElementGeometricStiffness(element, options.beam), n);

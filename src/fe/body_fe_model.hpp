@@ -43,7 +43,7 @@ struct BodySpec {
 
 struct BodyFeModel {
   BodySpec spec;
-  std::vector<double> node_x;  // node positions along the body axis, m (x_0 = 0, x_n = L)
+  std::vector<double> node_x;     // node positions along the body axis, m (x_0 = 0, x_n = L)
   SparseMat stiffness;            // K, N × N, N = 6 (n + 1)
   SparseMat mass;                 // M (consistent or lumped per spec.options.mass)
   SparseMat geometric_stiffness;  // K_G per unit axial force (tension positive), 1/m

@@ -24,7 +24,9 @@ std::optional<Material> FindBuiltInMaterial(std::string_view name) {
   return std::nullopt;
 }
 
-std::vector<std::string> BuiltInMaterialNames() { return {"steel", "nonmag", "brass", "aluminium"}; }
+std::vector<std::string> BuiltInMaterialNames() {
+  return {"steel", "nonmag", "brass", "aluminium"};
+}
 
 void ValidateMaterial(const Material& material) {
   const auto fail = [&](const std::string& what) {
@@ -35,7 +37,8 @@ void ValidateMaterial(const Material& material) {
   if (!(material.youngs_modulus > 0.0) || !std::isfinite(material.youngs_modulus)) {
     fail("Young's modulus must be positive");
   }
-  if (!(material.density > 0.0) || !std::isfinite(material.density)) fail("density must be positive");
+  if (!(material.density > 0.0) || !std::isfinite(material.density))
+    fail("density must be positive");
   if (!(material.poisson_ratio > -1.0 && material.poisson_ratio < 0.5)) {
     fail("Poisson's ratio must lie in (-1, 0.5)");
   }

@@ -33,8 +33,9 @@ double HollowSection::shear_coefficient(double poisson_ratio) const {
 }
 
 void ValidateSection(const HollowSection& section) {
-  const bool valid = std::isfinite(section.outer_diameter) && std::isfinite(section.inner_diameter) &&
-                     section.outer_diameter > 0.0 && section.inner_diameter >= 0.0 &&
+  const bool valid = std::isfinite(section.outer_diameter) &&
+                     std::isfinite(section.inner_diameter) && section.outer_diameter > 0.0 &&
+                     section.inner_diameter >= 0.0 &&
                      section.inner_diameter < section.outer_diameter;
   if (!valid) {
     std::string message = "need OD > 0 and 0 <= ID < OD, got OD = ";

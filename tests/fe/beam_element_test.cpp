@@ -13,8 +13,8 @@ namespace {
 
 // A thick steel collar element (Timoshenko shear is visible): 8 in × 2.8125 in, 0.5 m long.
 BeamElementProperties Collar(double length = 0.5) {
-  return MakeElementProperties(HollowSection{0.2032, 0.0714375}, Material{"steel", 2.1e11, 0.3, 7850.0},
-                               length);
+  return MakeElementProperties(HollowSection{0.2032, 0.0714375},
+                               Material{"steel", 2.1e11, 0.3, 7850.0}, length);
 }
 
 using Vec12 = Eigen::Matrix<double, 12, 1>;
@@ -33,7 +33,9 @@ Eigen::Matrix<double, 6, 1> Load(int dof, double value) {
   return f;
 }
 
-double Rel(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
+double Rel(double value, double reference) {
+  return std::abs(value - reference) / std::abs(reference);
+}
 
 TEST(BeamElement, EulerBernoulliCantileverIsExact) {
   const BeamElementProperties p = Collar(2.0);
@@ -118,13 +120,14 @@ Interpolation Shapes(double xi, double L, double phi) {
   Interpolation s;
   s.v << c * (2 * xi * xi * xi - 3 * xi * xi - phi * xi + 1 + phi),
       c * L * (xi * xi * xi - (2 + phi / 2) * xi * xi + (1 + phi / 2) * xi),
-      c * (-2 * xi * xi * xi + 3 * xi * xi + phi * xi), c * L * (xi * xi * xi - (1 - phi / 2) * xi * xi - phi / 2 * xi);
+      c * (-2 * xi * xi * xi + 3 * xi * xi + phi * xi),
+      c * L * (xi * xi * xi - (1 - phi / 2) * xi * xi - phi / 2 * xi);
   s.dv << c * (6 * xi * xi - 6 * xi - phi) / L, c * (3 * xi * xi - (4 + phi) * xi + 1 + phi / 2),
       c * (-6 * xi * xi + 6 * xi + phi) / L, c * (3 * xi * xi - (2 - phi) * xi - phi / 2);
   s.theta << c * 6 / L * (xi * xi - xi), c * (3 * xi * xi - (4 + phi) * xi + 1 + phi),
       -c * 6 / L * (xi * xi - xi), c * (3 * xi * xi - (2 - phi) * xi);
-  s.dtheta << c * 6 / (L * L) * (2 * xi - 1), c * (6 * xi - 4 - phi) / L, -c * 6 / (L * L) * (2 * xi - 1),
-      c * (6 * xi - 2 + phi) / L;
+  s.dtheta << c * 6 / (L * L) * (2 * xi - 1), c * (6 * xi - 4 - phi) / L,
+      -c * 6 / (L * L) * (2 * xi - 1), c * (6 * xi - 2 + phi) / L;
   return s;
 }
 
@@ -134,8 +137,8 @@ struct PlaneMatrices {
 
 // Five-point Gauss–Legendre quadrature (exact to degree 9) of the energy integrands.
 PlaneMatrices Quadrature(const BeamElementProperties& p, double phi) {
-  const std::array<double, 5> x = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                                   0.9061798459386640};
+  const std::array<double, 5> x = {-0.9061798459386640, -0.5384693101056831, 0.0,
+                                   0.5384693101056831, 0.9061798459386640};
   const std::array<double, 5> w = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                    0.4786286704993665, 0.2369268850561891};
   const double L = p.length;
@@ -148,7 +151,8 @@ PlaneMatrices Quadrature(const BeamElementProperties& p, double phi) {
     const double dx = 0.5 * w[g] * L;
     const Eigen::RowVector4d shear = s.dv - s.theta;
     out.stiffness += dx * (EI * s.dtheta.transpose() * s.dtheta + kGA * shear.transpose() * shear);
-    out.translation += dx * (p.density * p.area + p.lateral_mass_per_length) * s.v.transpose() * s.v;
+    out.translation +=
+        dx * (p.density * p.area + p.lateral_mass_per_length) * s.v.transpose() * s.v;
     out.rotary += dx * p.density * p.second_moment * s.theta.transpose() * s.theta;
     out.geometric += dx * s.dv.transpose() * s.dv;
   }

@@ -28,7 +28,9 @@ BodySpec V1Rod(int elements, MassKind mass, bool rotary = false) {
   return spec;
 }
 
-double Rel(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
+double Rel(double value, double reference) {
+  return std::abs(value - reference) / std::abs(reference);
+}
 
 TEST(BodyFeModel, SizesNodesAndLumpedNodalData) {
   BodySpec spec = V1Rod(8, MassKind::kConsistent, true);
@@ -211,8 +213,8 @@ TEST(BodyFeModel, TimoshenkoBucklingFollowsEngesser) {
   spec.element_count = 20;
   spec.options.beam = BeamTheory::kTimoshenko;
   const double p_euler = kPi * kPi * 2.1e11 * spec.section.second_moment() / (1.2 * 1.2);
-  const double kga = spec.section.shear_coefficient(0.3) * spec.material.shear_modulus() *
-                     spec.section.area();
+  const double kga =
+      spec.section.shear_coefficient(0.3) * spec.material.shear_modulus() * spec.section.area();
   ASSERT_GT(p_euler / kga, 0.05);
   std::vector<int> pinned = SelectDofs(1, 19, {1, 5});
   pinned.insert(pinned.begin(), 5);
@@ -227,7 +229,8 @@ TEST(BodyFeModel, LargeMeshIsCheapToBuild) {
   EXPECT_LT(model.stiffness.nonZeros(), 1000 * 144);
   const MatX r = RigidBodyFields(model.node_x);
   const VecX ones = r.col(1);
-  EXPECT_LT(Rel(ones.dot(model.mass * ones), 7800.0 * BodySpec{V1Rod(1, MassKind::kLumped)}.section.area() * 5.08),
+  EXPECT_LT(Rel(ones.dot(model.mass * ones),
+                7800.0 * BodySpec{V1Rod(1, MassKind::kLumped)}.section.area() * 5.08),
             1e-12);
   EXPECT_LT((model.stiffness * r).norm(), 1e-6 * model.stiffness.norm());
 }
