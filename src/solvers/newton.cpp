@@ -1,0 +1,250 @@
+#include "solvers/newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "solvers/linear_solver.hpp"
+
+namespace drillflex::solvers {
+namespace {
+
+// What one Newton solve at a fixed load factor ended with.
+struct StepOutcome {
+  bool converged = false;
+  VecX q;
+  double residual_norm = 0.0;  // last finite |R|₂
+  int iterations = 0;
+  std::vector<double> history;
+  std::string reason;  // why it failed
+};
+
+// Newton iterations at the load factor currently set on the problem.
+class NewtonStepper {
+ public:
+  NewtonStepper(const StaticProblem& problem, const NewtonOptions& options, double tolerance)
+      : problem_(problem),
+        options_(options),
+        tolerance_(tolerance),
+        zero_(VecX::Zero(problem.num_velocities())),
+        symmetry_(problem.IsIterationMatrixSymmetric() ? MatrixSymmetry::kAuto
+                                                       : MatrixSymmetry::kUnsymmetric) {}
+
+  StepOutcome Run(const VecX& q_start);
+
+ private:
+  // Factorizes K(q); returns an empty string or the reason it failed.
+  std::string Factorize(const VecX& q);
+
+  const StaticProblem& problem_;
+  const NewtonOptions& options_;
+  const double tolerance_;
+  const VecX zero_;
+  const MatrixSymmetry symmetry_;
+  SparseLinearSolver linear_solver_;
+};
+
+std::string NewtonStepper::Factorize(const VecX& q) {
+  try {
+    const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
+    linear_solver_.Factorize(k, symmetry_);
+  } catch (const SolverError& error) {
+    return fmt::format("the iteration matrix cannot be factorized ({})", error.what());
+  }
+  return {};
+}
+
+StepOutcome NewtonStepper::Run(const VecX& q_start) {
+  StepOutcome out;
+  out.q = q_start;
+  VecX residual = problem_.Residual(options_.time, out.q, zero_, zero_);
+  const bool reuse = problem_.CanReuseIterationMatrix();
+  bool fresh = false;  // the factorization belongs to the current q
+  double first_norm = -1.0;
+  while (true) {
+    if (!residual.allFinite()) {
+      out.reason = "the residual became non-finite (NaN or Inf)";
+      return out;
+    }
+    const double norm = residual.norm();
+    out.residual_norm = norm;
+    out.history.push_back(norm);
+    if (first_norm < 0.0) first_norm = norm;
+    if (norm <= tolerance_) {
+      out.converged = true;
+      return out;
+    }
+    if (out.iterations >= options_.max_iterations) {
+      out.reason = fmt::format("no convergence within {} iterations", options_.max_iterations);
+      return out;
+    }
+    if (norm > options_.divergence_factor * std::max(first_norm, tolerance_)) {
+      out.reason = fmt::format("diverging (|R| grew {:.3g} times)", norm / first_norm);
+      return out;
+    }
+    if (!reuse || !linear_solver_.has_factorization() || out.iterations == 0) {
+      if (std::string failure = Factorize(out.q); !failure.empty()) {
+        out.reason = std::move(failure);
+        return out;
+      }
+      fresh = true;
+    }
+    VecX dv;
+    try {
+      dv = -linear_solver_.Solve(residual);
+    } catch (const SolverError& error) {
+      out.reason = fmt::format("the Newton correction cannot be computed ({})", error.what());
+      return out;
+    }
+    ++out.iterations;
+    LineSearchResult search = BacktrackingLineSearch(problem_, options_.time, out.q, residual, dv,
+                                                     options_.line_search);
+    if (options_.line_search.enabled && !search.decreased) {
+      if (reuse && !fresh) {  // an old matrix: refresh it at q and try again
+        if (std::string failure = Factorize(out.q); !failure.empty()) {
+          out.reason = std::move(failure);
+          return out;
+        }
+        fresh = true;
+        out.history.pop_back();
+        continue;
+      }
+      out.reason = fmt::format(
+          "no decrease of the merit along the Newton direction (step length down to {:.3g})",
+          search.step);
+      return out;
+    }
+    fresh = false;
+    out.q = std::move(search.q);
+    residual = std::move(search.residual);
+    if (options_.increment_tolerance > 0.0 && residual.allFinite() &&
+        search.step * dv.lpNorm<Eigen::Infinity>() <= options_.increment_tolerance) {
+      out.residual_norm = residual.norm();
+      out.history.push_back(out.residual_norm);
+      out.converged = true;
+      return out;
+    }
+  }
+}
+
+double DetermineForceScale(StaticProblem& problem, const VecX& q_start,
+                           const NewtonOptions& options) {
+  if (options.force_scale > 0.0) return options.force_scale;
+  if (problem.ForceScale() > 0.0) return problem.ForceScale();
+  const VecX zero = VecX::Zero(problem.num_velocities());
+  problem.SetLoadFactor(1.0);
+  const VecX residual = problem.Residual(options.time, q_start, zero, zero);
+  if (!residual.allFinite()) {
+    throw SolverError(
+        "static Newton solver: the residual of the start state at full load is not finite "
+        "(NaN or Inf)");
+  }
+  const double norm = residual.norm();
+  return norm > 0.0 ? norm : 1.0;
+}
+
+void CheckArguments(const StaticProblem& problem, const VecX& q_start,
+                    const NewtonOptions& options) {
+  if (q_start.size() != problem.num_positions()) {
+    throw LogicError(fmt::format("SolveStatic: q_start has size {}, the problem {}",
+                                 q_start.size(), problem.num_positions()));
+  }
+  if (!q_start.allFinite()) throw LogicError("SolveStatic: q_start is not finite");
+  const LoadSteppingOptions& stepping = options.load_stepping;
+  if (!(options.residual_tolerance > 0.0) || options.max_iterations < 1 ||
+      !(stepping.min_step > 0.0) || stepping.max_step < stepping.min_step ||
+      !(stepping.initial_step > 0.0) || !(stepping.growth_factor >= 1.0)) {
+    throw LogicError("SolveStatic: invalid options (tolerance, iterations or load steps)");
+  }
+}
+
+// Where the failure happened, for the message.
+struct FailurePlace {
+  double load_factor_tried = 1.0;
+  double load_factor_converged = 0.0;
+  double step = 1.0;
+  int rejected_steps = 0;
+};
+
+std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place,
+                           const NewtonOptions& options, double scale, int total_iterations) {
+  std::string where;
+  if (options.load_stepping.enabled) {
+    where = fmt::format(
+        "at load factor {:.6g} (last converged {:.6g}; load step {:.3g} cut below the minimum "
+        "{:.3g} after {} cuts)",
+        place.load_factor_tried, place.load_factor_converged, place.step,
+        options.load_stepping.min_step, place.rejected_steps);
+  } else {
+    where = "at load factor 1 (load stepping off)";
+  }
+  return fmt::format(
+      "static Newton solver failed {}: {}; residual norm {:.4g} N against the tolerance {:.4g} N "
+      "(force scale {:.4g} N) after {} iterations in this step, {} in all",
+      where, outcome.reason, outcome.residual_norm, options.residual_tolerance * scale, scale,
+      outcome.iterations, total_iterations);
+}
+
+}  // namespace
+
+StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
+                         const NewtonOptions& options) {
+  CheckArguments(problem, q_start, options);
+  StaticResult result;
+  result.force_scale = DetermineForceScale(problem, q_start, options);
+  NewtonStepper stepper(problem, options, options.residual_tolerance * result.force_scale);
+  const LoadSteppingOptions& stepping = options.load_stepping;
+
+  VecX q = q_start;
+  double load_factor = 0.0;  // of the last converged state
+  double step = std::clamp(stepping.initial_step, stepping.min_step, stepping.max_step);
+  FailurePlace place;
+  StepOutcome last_failure;
+  bool failed = false;
+  while (!failed) {
+    // With stepping off, a single solve at λ = 1.
+    double trial = stepping.enabled ? load_factor + std::min(step, 1.0 - load_factor) : 1.0;
+    if (1.0 - trial < 1e-12) trial = 1.0;
+    const double trial_step = trial - load_factor;
+    problem.SetLoadFactor(trial);
+    StepOutcome outcome = stepper.Run(q);
+    result.iterations += outcome.iterations;
+    if (outcome.converged) {
+      q = std::move(outcome.q);
+      load_factor = trial;
+      result.residual_norm = outcome.residual_norm;
+      result.residual_history = std::move(outcome.history);
+      ++result.load_steps;
+      if (load_factor >= 1.0) break;
+      if (outcome.iterations <= stepping.fast_iterations) {
+        step = std::min(step * stepping.growth_factor, stepping.max_step);
+      }
+      continue;
+    }
+    ++result.rejected_steps;
+    place = {trial, load_factor, trial_step, result.rejected_steps};
+    step = 0.5 * trial_step;
+    if (!stepping.enabled || step < stepping.min_step) {
+      last_failure = std::move(outcome);
+      failed = true;
+    }
+  }
+  result.q = q;
+  result.load_factor = load_factor;
+  result.converged = !failed;
+  if (failed) {
+    const std::string message =
+        FailureMessage(last_failure, place, options, result.force_scale, result.iterations);
+    if (options.throw_on_failure) throw SolverError(message);
+    problem.SetLoadFactor(load_factor);
+    const VecX zero = VecX::Zero(problem.num_velocities());
+    result.residual_norm = problem.Residual(options.time, q, zero, zero).norm();
+  }
+  return result;
+}
+
+}  // namespace drillflex::solvers

@@ -1,0 +1,64 @@
+// Static equilibrium R(q) = 0 (v = a = 0) by Newton's method with a backtracking line search and
+// adaptive load stepping (continuation in the load factor λ from 0 to 1).
+//
+// Per load step: q ← q ⊕ α dv with K(q) dv = −R(q), K = IterationMatrix(t, q, 0, 0, 1, 0, 0).
+// Converged when |R|₂ ≤ residual_tolerance · force scale (or, if increment_tolerance > 0, when
+// the Newton correction |dv|∞ ≤ increment_tolerance). A step that fails (iteration limit,
+// divergence, non-finite residual, singular matrix, no decrease along dv) is halved and retried
+// from the last converged state; below min_step the solver throws a SolverError that says where
+// (load factor reached) and why (reason, residual norm, iterations). A step that converges in at
+// most fast_iterations iterations lets the next one grow by growth_factor.
+#pragma once
+
+#include <vector>
+
+#include "core/types.hpp"
+#include "solvers/line_search.hpp"
+#include "solvers/problem.hpp"
+
+namespace drillflex::solvers {
+
+struct LoadSteppingOptions {
+  bool enabled = true;          // false: one Newton solve at λ = 1, no step cutting
+  double initial_step = 1.0;    // first Δλ (1: try the full load first)
+  double min_step = 1e-4;       // smallest Δλ before giving up
+  double max_step = 1.0;        // largest Δλ
+  double growth_factor = 2.0;   // Δλ ← min(growth·Δλ, max_step) after a fast step
+  int fast_iterations = 4;      // a step that converges within this many iterations is "fast"
+};
+
+struct NewtonOptions {
+  double residual_tolerance = 1e-8;  // on |R|₂ relative to the force scale
+  // Force scale (N) of the tolerance. ≤ 0: StaticProblem::ForceScale(), and if that is ≤ 0 too,
+  // |R| of the start state at full load (λ = 1); 1 N if that is zero as well.
+  double force_scale = 0.0;
+  double increment_tolerance = 0.0;  // on |dv|∞ (units of v); 0 = not used
+  int max_iterations = 25;           // per load step
+  double divergence_factor = 1e8;    // a step fails when |R| exceeds this × its first |R|
+  double time = 0.0;                 // t passed to Residual / IterationMatrix (s)
+  LineSearchOptions line_search;
+  LoadSteppingOptions load_stepping;
+  bool throw_on_failure = true;  // false: return converged = false with the last converged state
+};
+
+struct StaticResult {
+  VecX q;                     // the equilibrium (or, if not converged, the last converged state)
+  bool converged = false;
+  int iterations = 0;         // Newton iterations over all load steps, failed ones included
+  double residual_norm = 0.0; // |R|₂ at q (N)
+  double force_scale = 0.0;   // the scale the tolerance was relative to (N)
+  double load_factor = 0.0;   // λ of q (1 when converged)
+  int load_steps = 0;         // accepted load steps
+  int rejected_steps = 0;     // load steps that failed and were cut
+  std::vector<double> residual_history;  // |R|₂ at each iteration of the last accepted step
+};
+
+// Finds q with R(q) = 0 at λ = 1, starting from q_start (an equilibrium at λ = 0 when load
+// stepping, a guess otherwise). Sets the problem's load factor along the way (and leaves it at
+// the last λ tried). Throws SolverError on failure (unless throw_on_failure is false) and never
+// returns non-finite values. Uses CanReuseIterationMatrix(): a reusable matrix is factorized once
+// per load step and refreshed only when a step along it makes no progress.
+StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
+                         const NewtonOptions& options = {});
+
+}  // namespace drillflex::solvers

@@ -1,0 +1,73 @@
+// The solver contract: the small interface through which every solver (static Newton, time
+// integrator, eigen solvers on linearized systems) sees a problem. Solvers know nothing of drill
+// strings; the model layer adapts a SystemModel + State to this interface.
+//
+// Equations of motion are written as a residual
+//   R(t, q, v, a) = M(q) a + f_int(q, v) - f_ext(q, v, t),
+// with q the positions (num_positions values, e.g. 4 per rotation stored as a unit quaternion)
+// and v, a the velocities and accelerations (num_velocities values, in the tangent space of q).
+// A position increment dv (same size as v) is applied with the Lie-group update q ⊕ dv.
+#pragma once
+
+#include "core/types.hpp"
+
+namespace drillflex::solvers {
+
+class Problem {
+ public:
+  virtual ~Problem() = default;
+
+  // Size of the position storage q (e.g. 7 per free rigid body: 3 translations + a quaternion).
+  virtual int num_positions() const = 0;
+  // Size of v, a and of a position increment dv (e.g. 6 per free rigid body).
+  virtual int num_velocities() const = 0;
+
+  // q ⊕ dv: applies the tangent-space increment dv to q (rotation-aware, e.g. so3::Compose for
+  // quaternions; plain addition for Euclidean coordinates).
+  virtual VecX Increment(const VecX& q, const VecX& dv) const = 0;
+
+  // R(t, q, v, a) = M(q) a + f_int(q, v) - f_ext(q, v, t), in N (or N·m for rotational rows).
+  // For statics v = a = 0. Must not return non-finite values for states the solver can reach;
+  // the solvers check and stop with a SolverError if it does.
+  virtual VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const = 0;
+
+  // cK·K + cD·D + cM·M, with K = ∂R/∂dv (the derivative along the increment q ⊕ dv, i.e. in the
+  // tangent space), D = ∂R/∂v, M = ∂R/∂a. Size num_velocities × num_velocities.
+  virtual SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a,
+                                    double cK, double cD, double cM) const = 0;
+
+  // True when the iteration matrix may be reused between iterations and steps (it does not
+  // depend, or barely depends, on the state: e.g. a linear problem). A hint, never a duty.
+  virtual bool CanReuseIterationMatrix() const { return false; }
+};
+
+// A problem for the static Newton solver: a load factor λ in [0, 1] scales the applied loads
+// (the problem decides what it scales), and a force scale sets the residual tolerance.
+class StaticProblem : public Problem {
+ public:
+  // Sets λ for the following Residual / IterationMatrix calls. Default: no load stepping.
+  virtual void SetLoadFactor(double /*load_factor*/) {}
+
+  // A typical force (N) of the problem at full load (e.g. the weight of the string); the
+  // residual tolerance is relative to it. 0 = unknown: the solver then uses |R| of the start
+  // state at full load.
+  virtual double ForceScale() const { return 0.0; }
+
+  // False when the iteration matrix is known to be unsymmetric (e.g. with friction): the
+  // solver then goes straight to an LU factorization.
+  virtual bool IsIterationMatrixSymmetric() const { return true; }
+};
+
+// cK·K + cD·D + cM·M of `problem` by central differences of its residual: the position
+// perturbations go through Increment (q ⊕ ±h e_j), those of v and a are h·max(1, |x_j|).
+// Only the parts with a non-zero coefficient are evaluated (2·n residual calls each). Used by
+// tests everywhere to check analytic Jacobians. Error O(h²) plus round-off O(ε|R|/h).
+SparseMat FiniteDifferenceIterationMatrix(const Problem& problem, double t, const VecX& q,
+                                          const VecX& v, const VecX& a, double cK, double cD,
+                                          double cM, double h = 1e-6);
+
+// ‖A − B‖_F / max(‖A‖_F, ‖B‖_F); 0 when both are zero. Throws LogicError on a size mismatch.
+double RelativeMatrixError(const SparseMat& a, const SparseMat& b);
+double RelativeMatrixError(const MatX& a, const MatX& b);
+
+}  // namespace drillflex::solvers

@@ -1,0 +1,292 @@
+// The static Newton solver on toy problems with exact equilibria: quadratic convergence, load
+// stepping, line search, and the SolverError when it cannot converge.
+#include "solvers/newton.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
+#include "toy_problems.hpp"
+
+namespace drillflex::solvers {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::ScalarProblem;
+using testing::SpringChain;
+using testing::VonMisesTruss;
+
+NewtonOptions PlainNewton() {
+  NewtonOptions options;
+  options.line_search.enabled = false;
+  options.load_stepping.enabled = false;
+  return options;
+}
+
+// Exact equilibrium of the chain: choose the spring elongation e*, load P = f(e*), q_i = i e*.
+VecX ChainEquilibrium(int n, double elongation) {
+  return VecX::LinSpaced(n, 1.0, n) * elongation;
+}
+
+TEST(SolveStatic, ConvergesQuadraticallyOnANonlinearSpringChain) {
+  const int n = 10;
+  const double k = 1.0e3, k3 = 1.0e5, elongation = 0.1;  // f(e*) = 100 + 100 N
+  SpringChain chain(n, k, k3, k * elongation + k3 * std::pow(elongation, 3));
+  const StaticResult result = SolveStatic(chain, VecX::Zero(n), PlainNewton());
+  ASSERT_TRUE(result.converged);
+  EXPECT_LT((result.q - ChainEquilibrium(n, elongation)).norm(), 1e-9);
+  // Order of convergence p_k = ln(r_{k+1}/r_k) / ln(r_k/r_{k−1}) → 2 for Newton; taken where
+  // r_{k+1} is still well above round-off (1e-11 × force scale).
+  const std::vector<double>& r = result.residual_history;
+  ASSERT_GE(r.size(), 4u);
+  int measured = 0;
+  for (size_t i = 1; i + 1 < r.size(); ++i) {
+    if (r[i + 1] < 1e-11 * result.force_scale || r[i] > 0.1 * result.force_scale) continue;
+    const double order = std::log(r[i + 1] / r[i]) / std::log(r[i] / r[i - 1]);
+    EXPECT_GT(order, 1.8) << "iteration " << i;
+    ++measured;
+  }
+  EXPECT_GE(measured, 1);
+}
+
+TEST(SolveStatic, LoadSteppingReachesFullLoadWherePlainNewtonFails) {
+  // A very soft start (k = 1 N/m) and strong hardening: the first Newton step from q = 0
+  // overshoots e* by a factor 4e4 and |R| grows 6e13-fold; far from the root the cubic only
+  // contracts by 2/3 per iteration, so plain Newton needs 31 iterations (measured, with the
+  // divergence check off; with it on, it stops after the first).
+  const int n = 5;
+  const double k = 1.0, k3 = 1.0e6, elongation = 0.2;
+  SpringChain chain(n, k, k3, k * elongation + k3 * std::pow(elongation, 3));
+  NewtonOptions plain = PlainNewton();
+  plain.max_iterations = 20;
+  plain.divergence_factor = std::numeric_limits<double>::infinity();
+  try {
+    SolveStatic(chain, VecX::Zero(n), plain);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    EXPECT_THAT(std::string(error.what()), HasSubstr("no convergence within 20 iterations"));
+  }
+  plain.divergence_factor = NewtonOptions().divergence_factor;
+  try {
+    SolveStatic(chain, VecX::Zero(n), plain);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    EXPECT_THAT(std::string(error.what()), HasSubstr("diverging"));
+  }
+
+  NewtonOptions stepping = plain;
+  stepping.load_stepping.enabled = true;
+  stepping.load_stepping.min_step = 1e-6;
+  const StaticResult result = SolveStatic(chain, VecX::Zero(n), stepping);
+  ASSERT_TRUE(result.converged);
+  EXPECT_EQ(result.load_factor, 1.0);
+  EXPECT_GT(result.load_steps, 1);
+  EXPECT_GE(result.rejected_steps, 1);
+  EXPECT_LT((result.q - ChainEquilibrium(n, elongation)).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(SolveStatic, FollowsAVonMisesTrussUpToNearItsLimitPoint) {
+  // EA = 1e7 N, b = 1 m, h = 0.1 m (shallow). Choose w* on the rising branch and apply the load
+  // the truss carries there, F(w*), so w* is the exact answer.
+  VonMisesTruss probe(1.0e7, 1.0, 0.1, 0.0);
+  const double w_exact = 0.035;  // the limit point is at w ≈ 0.042 m
+  VonMisesTruss truss(1.0e7, 1.0, 0.1, probe.InternalForce(w_exact));
+  ASSERT_GT(probe.InternalForce(w_exact), 0.97 * probe.LimitLoad());
+  const StaticResult result = SolveStatic(truss, VecX::Zero(1));
+  ASSERT_TRUE(result.converged);
+  EXPECT_NEAR(result.q[0], w_exact, 1e-10);
+}
+
+TEST(SolveStatic, StopsAtTheLimitPointAndSaysWhere) {
+  // Beyond the limit load there is no nearby equilibrium: the load steps shrink at the limit
+  // point λ* = P_max / P and the error reports the load factor reached.
+  VonMisesTruss probe(1.0e7, 1.0, 0.1, 0.0);
+  const double load = 1.05 * probe.LimitLoad();
+  VonMisesTruss truss(1.0e7, 1.0, 0.1, load);
+  NewtonOptions options;
+  options.throw_on_failure = false;
+  options.load_stepping.min_step = 1e-5;
+  const StaticResult result = SolveStatic(truss, VecX::Zero(1), options);
+  EXPECT_FALSE(result.converged);
+  const double limit_factor = probe.LimitLoad() / load;
+  EXPECT_LE(result.load_factor, limit_factor);
+  EXPECT_GT(result.load_factor, limit_factor * (1.0 - 1e-4));  // measured 3.8e-6 below
+  EXPECT_TRUE(result.q.allFinite());
+
+  options.throw_on_failure = true;
+  try {
+    SolveStatic(truss, VecX::Zero(1), options);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    const std::string message = error.what();
+    EXPECT_THAT(message, HasSubstr("load factor"));
+    EXPECT_THAT(message, HasSubstr("last converged 0.95"));  // λ* = 1/1.05 = 0.952
+    EXPECT_THAT(message, HasSubstr("residual norm"));
+    EXPECT_THAT(message, HasSubstr("iterations"));
+  }
+}
+
+TEST(SolveStatic, LineSearchRescuesAStepIntoTheInvalidDomain) {
+  // R(q) = √q − 2, root q = 4, from q = 25: the full Newton step goes to q = −5, where √q is NaN.
+  auto residual = [](double q, double) { return std::sqrt(q) - 2.0; };
+  auto derivative = [](double q, double) { return 0.5 / std::sqrt(q); };
+  ScalarProblem problem(residual, derivative);
+  const VecX start = VecX::Constant(1, 25.0);
+  NewtonOptions plain = PlainNewton();
+  plain.force_scale = 1.0;
+  try {
+    SolveStatic(problem, start, plain);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    EXPECT_THAT(std::string(error.what()), HasSubstr("non-finite"));
+  }
+  NewtonOptions searched = plain;
+  searched.line_search.enabled = true;
+  const StaticResult result = SolveStatic(problem, start, searched);
+  ASSERT_TRUE(result.converged);
+  EXPECT_NEAR(result.q[0], 4.0, 1e-7);
+}
+
+TEST(SolveStatic, LineSearchCutsTheOvershootOfAHardeningChain) {
+  // The soft-start chain of the load stepping test (31 plain Newton iterations) with the line
+  // search: the first step is cut back to α ≈ 1e-5, then Newton converges (7 iterations).
+  const int n = 5;
+  const double k = 1.0, k3 = 1.0e6, elongation = 0.2;
+  SpringChain chain(n, k, k3, k * elongation + k3 * std::pow(elongation, 3));
+  NewtonOptions options = PlainNewton();
+  options.max_iterations = 20;
+  options.line_search.enabled = true;
+  const StaticResult result = SolveStatic(chain, VecX::Zero(n), options);
+  ASSERT_TRUE(result.converged);
+  EXPECT_LE(result.iterations, 10);
+  EXPECT_LT((result.q - ChainEquilibrium(n, elongation)).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(SolveStatic, ReportsWhereAndWhyForAnUnsolvableProblem) {
+  // R(q) = q² + 1 has no real root: Newton wanders, every load step fails.
+  auto residual = [](double q, double) { return q * q + 1.0; };
+  auto derivative = [](double q, double) { return 2.0 * q; };
+  ScalarProblem problem(residual, derivative);
+  NewtonOptions options;
+  options.force_scale = 1.0;
+  options.max_iterations = 30;
+  try {
+    SolveStatic(problem, VecX::Constant(1, 0.7), options);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    const std::string message = error.what();
+    EXPECT_THAT(message, HasSubstr("static Newton solver failed at load factor"));
+    EXPECT_THAT(message, HasSubstr("last converged 0"));
+    EXPECT_THAT(message, HasSubstr("residual norm"));
+    EXPECT_THAT(message, HasSubstr("tolerance 1e-08 N"));
+    EXPECT_THAT(message, HasSubstr("iterations in this step"));
+  }
+  options.throw_on_failure = false;
+  const StaticResult result = SolveStatic(problem, VecX::Constant(1, 0.7), options);
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.load_factor, 0.0);
+  EXPECT_EQ(result.q[0], 0.7);
+  EXPECT_DOUBLE_EQ(result.residual_norm, 0.7 * 0.7 + 1.0);
+}
+
+TEST(SolveStatic, PlainNewtonFailureNamesTheIterationLimit) {
+  auto residual = [](double q, double) { return q * q + 1.0; };
+  auto derivative = [](double q, double) { return 2.0 * q; };
+  ScalarProblem problem(residual, derivative);
+  NewtonOptions options = PlainNewton();
+  options.force_scale = 1.0;
+  options.max_iterations = 7;
+  try {
+    SolveStatic(problem, VecX::Constant(1, 0.7), options);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    const std::string message = error.what();
+    EXPECT_THAT(message, HasSubstr("load stepping off"));
+    EXPECT_THAT(message, HasSubstr("no convergence within 7 iterations"));
+  }
+}
+
+TEST(SolveStatic, ReportsASingularIterationMatrix) {
+  // R = q² − 1 started at q = 0, where dR/dq = 0.
+  auto residual = [](double q, double) { return q * q - 1.0; };
+  auto derivative = [](double q, double) { return 2.0 * q; };
+  ScalarProblem problem(residual, derivative);
+  try {
+    SolveStatic(problem, VecX::Zero(1), PlainNewton());
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    EXPECT_THAT(std::string(error.what()), HasSubstr("cannot be factorized"));
+  }
+}
+
+TEST(SolveStatic, IncrementToleranceStopsAtRoundOff) {
+  // A residual tolerance far below round-off (1e-20 of the force scale) can only be met through
+  // the increment criterion.
+  const int n = 10;
+  SpringChain chain(n, 1.0e3, 1.0e5, 200.0);
+  NewtonOptions options = PlainNewton();
+  options.residual_tolerance = 1e-20;
+  options.increment_tolerance = 1e-13;
+  const StaticResult result = SolveStatic(chain, VecX::Zero(n), options);
+  ASSERT_TRUE(result.converged);
+  EXPECT_LT((result.q - ChainEquilibrium(n, 0.1)).norm(), 1e-11);
+  options.increment_tolerance = 0.0;
+  EXPECT_THROW(SolveStatic(chain, VecX::Zero(n), options), SolverError);
+}
+
+// A spring chain that counts its iteration matrices and allows their reuse.
+class ReusableChain final : public StaticProblem {
+ public:
+  ReusableChain(int n, double k, double k3, double load) : chain_(n, k, k3, load) {}
+  int num_positions() const override { return chain_.num_positions(); }
+  int num_velocities() const override { return chain_.num_velocities(); }
+  VecX Increment(const VecX& q, const VecX& dv) const override { return chain_.Increment(q, dv); }
+  VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
+    return chain_.Residual(t, q, v, a);
+  }
+  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double cK,
+                            double cD, double cM) const override {
+    ++matrices;
+    return chain_.IterationMatrix(t, q, v, a, cK, cD, cM);
+  }
+  bool CanReuseIterationMatrix() const override { return true; }
+  void SetLoadFactor(double load_factor) override { chain_.SetLoadFactor(load_factor); }
+  mutable int matrices = 0;
+
+ private:
+  SpringChain chain_;
+};
+
+TEST(SolveStatic, ReusesTheIterationMatrixWhenAllowed) {
+  // Linear chain (k3 = 0): one matrix, one iteration, exact answer q_i = i P / k.
+  ReusableChain linear(8, 500.0, 0.0, 10.0);
+  const StaticResult exact = SolveStatic(linear, VecX::Zero(8));
+  ASSERT_TRUE(exact.converged);
+  EXPECT_EQ(linear.matrices, 1);
+  EXPECT_EQ(exact.iterations, 1);
+  EXPECT_LT((exact.q - ChainEquilibrium(8, 10.0 / 500.0)).norm(), 1e-14);
+  // Mildly nonlinear chain: modified Newton (one matrix per load step) converges linearly, so it
+  // takes more iterations than matrices.
+  const double k = 1.0e3, k3 = 1.0e4, elongation = 0.1;  // f(e*) = 100 + 10 N
+  ReusableChain chain(8, k, k3, k * elongation + k3 * std::pow(elongation, 3));
+  NewtonOptions options;
+  options.max_iterations = 60;
+  const StaticResult result = SolveStatic(chain, VecX::Zero(8), options);
+  ASSERT_TRUE(result.converged);
+  EXPECT_LT(chain.matrices, result.iterations);
+  // Linear convergence stops just below |R| ≤ 1e-8 × 110 N; the position error is then bounded
+  // by |K⁻¹| |R| ≤ (8/k)(1.1e-6 N) ≈ 9e-9 m.
+  EXPECT_LT((result.q - ChainEquilibrium(8, elongation)).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+TEST(SolveStatic, RejectsAStartOfTheWrongSize) {
+  SpringChain chain(3, 1.0, 1.0, 1.0);
+  EXPECT_THROW(SolveStatic(chain, VecX::Zero(2)), LogicError);
+}
+
+}  // namespace
+}  // namespace drillflex::solvers
