@@ -51,7 +51,7 @@ model::FluidConfig ReadFluidSection(const YamlView& node) {
 model::ModelSettings ReadModelSection(const YamlView& node) {
   node.ExpectMap("the model settings");
   node.AllowOnlyKeys({"body_length", "elements_per_body", "modes_per_body", "coupling_factor",
-                      "structural_damping", "contact", "mass", "beam"});
+                      "structural_damping", "contact", "mass", "beam", "rotary_inertia"});
   model::ModelSettings settings;
   if (node.IsNull()) return settings;
   settings.body_length = node.OptionalPositive("body_length", Quantity::Length).value_or(settings.body_length);
@@ -82,6 +82,7 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
     else if (kind == "timoshenko") settings.beam = model::BeamTheory::Timoshenko;
     else beam->Fail(fmt::format("expected 'euler_bernoulli' or 'timoshenko', got '{}'", kind));
   }
+  if (const auto rotary = node.OptionalChild("rotary_inertia")) settings.rotary_inertia = rotary->AsBool();
   if (const auto contact = node.OptionalChild("contact")) {
     contact->ExpectMap("the contact settings {stiffness, damping_ratio, friction}");
     contact->AllowOnlyKeys({"stiffness", "damping_ratio", "friction", "axial_friction"});

@@ -118,7 +118,10 @@ std::vector<well::HoleSection> ReadHole(const YamlView& node) {
     section.diameter_at_end = item.OptionalPositive("diameter_at_end", Quantity::Diameter);
     const bool last = i + 1 == node.size();
     if (!last && !section.to_md) item.Fail("only the last hole section may omit 'to' (it runs to the bottom)");
-    if (last && section.to_md) section.to_md.reset();  // the last one runs to the bottom anyway
+    if (last && section.diameter_at_end && !section.to_md) {
+      item.Fail("a tapered last section ('diameter_at_end') needs 'to', the MD where it ends");
+    }
+    if (last && section.to_md && !section.diameter_at_end) section.to_md.reset();  // runs to the bottom
     if (!sections.empty() && section.to_md && !(*section.to_md > *sections.back().to_md)) {
       item.Child("to").Fail("hole sections must be listed top down with increasing 'to'");
     }

@@ -77,11 +77,12 @@ struct ModelSettings {
   double body_length = 3.0;      // m, longest flexible body
   int elements_per_body = 10;
   int modes_per_body = 6;        // H: fixed-interface normal modes per body
-  double coupling_factor = 100.0;
+  double coupling_factor = 1000.0;  // measured: docs/validation.md (coupling study)
   double structural_damping = 0.01;  // modal damping ratio
   ContactSettings contact;
   MassKind mass = MassKind::Consistent;
   BeamTheory beam = BeamTheory::EulerBernoulli;
+  bool rotary_inertia = true;  // bending rotary inertia ρI of the beam sections
 };
 
 // Degrees of freedom in the string frame: x along the string (up-hole), y right, z high side.

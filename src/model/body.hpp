@@ -1,0 +1,68 @@
+// A flexible body of the system: its reduced model (shared between identical bodies), where it
+// sits in the string and in the coordinate vectors, and the section data its force elements need.
+//
+// Coordinates of a body (method.md §4): positions q_b = [r (3, global), unit quaternion (4:
+// w, x, y, z) of the frame orientation A, modal coordinates η (n_f)]; velocities and position
+// increments v_b = [ṙ (3, global), ω (3, body frame), η̇ (n_f)]. The increment of the rotation is
+// q ⊕ Δθ = q · exp(Δθ/2) with Δθ in the body frame, so δA = A skew(δθ).
+#pragma once
+
+#include <memory>
+
+#include "cms/reduced_body.hpp"
+#include "core/types.hpp"
+
+namespace drillflex::model {
+
+struct Body {
+  std::shared_ptr<const cms::ReducedBody> reduced;
+  int component = 0;          // index of the string component it was cut from
+  double s_start = 0.0;       // distance of node 0 from the bit end, m
+  Vec3 reference_position = Vec3::Zero();   // r of the undeformed placement, m
+  Quat reference_orientation = Quat::Identity();
+  int q_offset = 0;           // first position coordinate in the system's q
+  int v_offset = 0;           // first velocity coordinate in the system's v
+  int flexible_count = 0;     // n_f
+
+  // Section data (SI) for couplings, contact and internal forces.
+  double axial_rigidity = 0.0;    // EA, N
+  double bending_rigidity = 0.0;  // EI, N·m²
+  double torsional_rigidity = 0.0;  // GJ, N·m²
+  double element_length = 0.0;    // ℓ of the body's FE mesh, m
+  double outer_diameter = 0.0;    // m
+  double contact_diameter = 0.0;  // m: blade, joint or body OD
+
+  // The body's mean axial force is N = axial_force_rowᵀ η (tension positive): EA/L times the
+  // elongation between the end nodes, u_x(L) − u_x(0), read from the translational mode rows.
+  VecX axial_force_row;
+  // ReferenceMassMatrix − NodalReferenceMassMatrix (cms/reduced_body.hpp): the constant
+  // correction that makes the node-sum mass exact for a consistent FE mass at η = 0.
+  MatX mass_correction;
+
+  double length() const { return reduced->length; }
+  int velocity_count() const { return 6 + flexible_count; }
+  int position_count() const { return 7 + flexible_count; }
+  int node_count() const { return reduced->node_count(); }
+};
+
+// The pose of a body read from the system's positions.
+struct BodyPose {
+  Vec3 r = Vec3::Zero();
+  Quat rotation = Quat::Identity();
+  Mat3 A = Mat3::Identity();  // body frame -> global
+  VecX eta;
+
+  // u_k = ρ_k + Φ_k η: node k's position in the body frame, m.
+  Vec3 NodeOffset(const Body& body, int node) const;
+  // r_k = r + A u_k, m.
+  Vec3 NodePosition(const Body& body, int node) const;
+  // θ_k = Ψ_k η: node k's small elastic rotation in the body frame, rad.
+  Vec3 NodeRotation(const Body& body, int node) const;
+};
+
+BodyPose PoseOf(const Body& body, const VecX& q);
+
+// Writes the undeformed placement of the body into q (η = 0).
+void SetReferencePose(const Body& body, VecX& q);
+
+}  // namespace drillflex::model

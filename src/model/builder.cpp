@@ -1,0 +1,207 @@
+#include "model/builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "cms/reduced_body.hpp"
+#include "core/error.hpp"
+#include "model/nodal_loads.hpp"
+#include "model/spring_elements.hpp"
+
+namespace drillflex::model {
+namespace {
+
+constexpr double kGravityDirection[3] = {0.0, 0.0, 1.0};  // global +z is down
+
+fe::BodyFeOptions FeOptions(const ModelSettings& settings) {
+  fe::BodyFeOptions options;
+  options.mass = settings.mass == MassKind::Lumped ? fe::MassKind::kLumped : fe::MassKind::kConsistent;
+  options.beam = settings.beam == BeamTheory::Timoshenko ? fe::BeamTheory::kTimoshenko : fe::BeamTheory::kEulerBernoulli;
+  options.bending_rotary_inertia = settings.rotary_inertia;
+  return options;
+}
+
+// Coupling stiffness of a body's section (method.md §5): c·(EA/ℓ, 12EI/ℓ³, 12EI/ℓ³, GJ/ℓ, EI/ℓ, EI/ℓ).
+Vec6 SectionCouplingStiffness(const Body& body, double factor) {
+  const double l = body.element_length;
+  Vec6 k;
+  k << body.axial_rigidity / l, 12.0 * body.bending_rigidity / (l * l * l), 12.0 * body.bending_rigidity / (l * l * l),
+      body.torsional_rigidity / l, body.bending_rigidity / l, body.bending_rigidity / l;
+  return factor * k;
+}
+
+// Masses (kg) and inertias (kg·m²) of one FE element of a body, for spring damping.
+Vec6 ElementInertia(const Body& body) {
+  const auto& spec = body.reduced->spec;
+  const double l = body.element_length;
+  const double rho = spec.material.density;
+  const double mass = rho * spec.section.area() * l;
+  const double bending = rho * spec.section.second_moment() * l + mass * l * l / 12.0;
+  Vec6 m;
+  m << mass, mass, mass, rho * spec.section.polar_moment() * l, bending, bending;
+  return m;
+}
+
+Vec6 SpringDamping(const Vec6& stiffness, const Vec6& inertia) {
+  return (2.0 * kCouplingDampingRatio * (stiffness.cwiseProduct(inertia)).cwiseSqrt());
+}
+
+Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::BodySpec& spec, int component,
+              double s_start, double contact_diameter) {
+  Body body;
+  body.reduced = reduced;
+  body.component = component;
+  body.s_start = s_start;
+  body.flexible_count = reduced->flexible_count;
+  body.reference_position = Vec3(s_start, 0.0, 0.0);
+  body.reference_orientation = Quat::Identity();
+  body.axial_rigidity = spec.material.youngs_modulus * spec.section.area();
+  body.bending_rigidity = spec.material.youngs_modulus * spec.section.second_moment();
+  body.torsional_rigidity = spec.material.shear_modulus() * spec.section.polar_moment();
+  body.element_length = spec.length / spec.element_count;
+  body.outer_diameter = spec.section.outer_diameter;
+  body.contact_diameter = contact_diameter;
+  // N = EA/L (u_x(L) − u_x(0)) from the axial rows of the end nodes.
+  const int last = reduced->node_count() - 1;
+  body.axial_force_row = (body.axial_rigidity / spec.length) *
+                         (reduced->node_translation_modes[last].row(0) - reduced->node_translation_modes[0].row(0)).transpose();
+  body.mass_correction = cms::ReferenceMassMatrix(*reduced) - cms::NodalReferenceMassMatrix(*reduced);
+  return body;
+}
+
+std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache) {
+  std::vector<Body> bodies;
+  const ModelSettings& settings = input.settings;
+  cms::ReductionOptions reduction;
+  reduction.modes_per_body = settings.modes_per_body;
+  reduction.structural_damping = settings.structural_damping;
+  double s = 0.0;
+  for (std::size_t c = 0; c < input.string.components.size(); ++c) {
+    const Component& component = input.string.components[c];
+    const double span = component.length * component.count;
+    const int count = std::max(1, static_cast<int>(std::ceil(span / settings.body_length - 1e-9)));
+    fe::BodySpec spec;
+    spec.section = {component.outer_diameter, component.inner_diameter};
+    spec.material = input.materials.at(component.material);
+    spec.length = span / count;
+    spec.element_count = settings.elements_per_body;
+    spec.options = FeOptions(settings);
+    const auto reduced = cache.Get(spec, reduction);
+    for (int i = 0; i < count; ++i) {
+      bodies.push_back(MakeBody(reduced, spec, static_cast<int>(c), s, ContactDiameter(component)));
+      s += spec.length;
+    }
+  }
+  int q_offset = 0, v_offset = 0;
+  for (Body& body : bodies) {
+    body.q_offset = q_offset;
+    body.v_offset = v_offset;
+    q_offset += body.position_count();
+    v_offset += body.velocity_count();
+  }
+  return bodies;
+}
+
+// Buoyed weight per length, N/m (method.md §7): g (ρ_s A − ρ_f A_o + ρ_f,i A_i).
+double WeightPerLength(const Body& body, const ModelInput& input) {
+  const auto& spec = body.reduced->spec;
+  double mass_per_length = spec.material.density * spec.section.area();
+  if (input.fluid) {
+    const double inside = input.fluid->internal_density.value_or(input.fluid->density);
+    mass_per_length += inside * spec.section.bore_area() - input.fluid->density * spec.section.outer_area();
+  }
+  return input.gravity * mass_per_length;
+}
+
+}  // namespace
+
+BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache) {
+  if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
+  std::vector<Body> bodies = CutBodies(input, cache);
+  double length = 0.0;
+  for (const Body& body : bodies) length = std::max(length, body.s_start + body.length());
+  // Elements refer to bodies by address; moving the vector into the SystemModel keeps its buffer.
+  const std::vector<Body>& placed = bodies;
+  std::vector<std::unique_ptr<ForceElement>> elements;
+  const double factor = input.settings.coupling_factor;
+
+  for (std::size_t b = 0; b + 1 < placed.size(); ++b) {
+    const Body& lower = placed[b];
+    const Body& upper = placed[b + 1];
+    const Vec6 stiffness = SectionCouplingStiffness(lower, factor).cwiseMax(SectionCouplingStiffness(upper, factor));
+    const Vec6 inertia = ElementInertia(lower).cwiseMin(ElementInertia(upper));
+    elements.push_back(std::make_unique<CouplingElement>(&lower, lower.node_count() - 1, &upper, 0, stiffness,
+                                                         SpringDamping(stiffness, inertia)));
+  }
+
+  std::vector<int> support_elements;
+  for (const Support& support : input.supports) {
+    const auto [b, node] = FindNodeAt(placed, support.at);
+    const Body& body = placed[b];
+    const Mat3 frame = body.reference_orientation.toRotationMatrix();
+    const Vec3 position = body.reference_position + frame * body.reduced->node_positions[node];
+    Vec6 stiffness = kSupportStiffnessFactor * SectionCouplingStiffness(body, factor);
+    for (int d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
+    support_elements.push_back(static_cast<int>(elements.size()));
+    elements.push_back(std::make_unique<SupportElement>(&body, node, position, frame, stiffness,
+                                                        SpringDamping(stiffness, ElementInertia(body))));
+  }
+
+  // Applied loads: gravity and the case's loads, gathered per body as nodal forces and moments.
+  double force_scale = 0.0;
+  for (const Body& body : placed) {
+    const int nodes = body.node_count();
+    std::vector<Vec3> forces(nodes, Vec3::Zero()), moments(nodes, Vec3::Zero());
+    const Mat3 frame = body.reference_orientation.toRotationMatrix();
+    auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
+    auto node_s = [&](int k) { return body.s_start + body.reduced->node_positions[k].x(); };
+    const double weight = WeightPerLength(body, input);
+    const Vec3 gravity_load = weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]);
+    for (int k = 0; k + 1 < nodes; ++k) {
+      if (weight != 0.0) {
+        AddUniformLineLoad(node_position(k), node_position(k + 1), gravity_load, forces[k], moments[k], forces[k + 1],
+                           moments[k + 1]);
+      }
+      for (const Load& load : input.loads) {
+        if (!load.distributed) continue;
+        const double a = std::max(load.from, node_s(k)), c = std::min(load.to, node_s(k + 1));
+        if (c <= a) continue;
+        const Vec3 q = frame * load.force_per_length;
+        const Vec3 m = frame * load.moment_per_length;
+        const double h = node_s(k + 1) - node_s(k);
+        if (c - a >= h * (1.0 - 1e-12)) {
+          AddUniformLineLoad(node_position(k), node_position(k + 1), q, forces[k], moments[k], forces[k + 1], moments[k + 1]);
+        } else {  // a partly loaded element: the resultant shared by the lever rule
+          const double share = (0.5 * (a + c) - node_s(k)) / h;
+          forces[k] += (1.0 - share) * (c - a) * q;
+          forces[k + 1] += share * (c - a) * q;
+        }
+        moments[k] += 0.5 * (c - a) * m;
+        moments[k + 1] += 0.5 * (c - a) * m;
+      }
+    }
+    for (int k = 0; k < nodes; ++k) force_scale += forces[k].norm();
+    elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
+  }
+  // Point loads on the nearest node (at a joint, the upper body's start node).
+  for (const Load& load : input.loads) {
+    if (load.distributed) continue;
+    const auto [b, node] = FindNodeAt(placed, load.at);
+    const Body& body = placed[b];
+    const Mat3 frame = body.reference_orientation.toRotationMatrix();
+    std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
+    forces[node] = frame * load.force;
+    moments[node] = frame * load.moment;
+    force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
+    elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
+  }
+  if (force_scale == 0.0) force_scale = placed.front().bending_rigidity / (length * length);
+
+  SystemModel system(std::move(bodies), std::move(elements), length);
+  system.set_force_scale(force_scale);
+  return BuiltModel{std::move(system), std::move(support_elements), force_scale};
+}
+
+}  // namespace drillflex::model

@@ -1,0 +1,43 @@
+// Builds the SystemModel of a string: components -> uniform sections -> flexible bodies (each at
+// most `body_length`, split evenly) -> Craig–Bampton reductions (cached by section) -> couplings
+// between consecutive bodies, supports, loads and gravity. Without a well the string lies straight
+// along +x from the origin (the bit end at x = 0), the string frame is the global frame.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cms/reduction_cache.hpp"
+#include "fe/material.hpp"
+#include "model/string_config.hpp"
+#include "model/system_model.hpp"
+
+namespace drillflex::model {
+
+struct ModelInput {
+  StringConfig string;
+  ModelSettings settings;
+  std::map<std::string, fe::Material> materials;
+  std::vector<Support> supports;
+  std::vector<Load> loads;
+  double gravity = 0.0;              // m/s², along global +z
+  std::optional<FluidConfig> fluid;
+};
+
+// What the builder made, beside the model itself: where each support and load went.
+struct BuiltModel {
+  SystemModel system;
+  std::vector<int> support_elements;  // element index of each case support
+  double force_scale = 0.0;           // a typical applied force, N (Newton tolerance)
+};
+
+// Damping ratio of the coupling and support springs, with the element masses of the joined bodies.
+inline constexpr double kCouplingDampingRatio = 0.05;
+// Supports are this many times stiffer than a coupling of the same section.
+inline constexpr double kSupportStiffnessFactor = 10.0;
+
+BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache);
+
+}  // namespace drillflex::model

@@ -1,0 +1,53 @@
+// Force elements: everything that puts a force on the bodies besides their own inertia and
+// elasticity (couplings, supports, loads, gravity, contact, fluid). An element touches one or two
+// bodies; it returns its contribution to the residual over the concatenated velocity blocks of
+// those bodies, with its exact derivatives, and reports its potential energy.
+//
+// Sign: the residual is R = M a + f_int − f_ext, so an element adds f_int (a spring's restoring
+// force) or −f_ext (an applied load) to `force`. The power it delivers to the system is −force·v.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/body.hpp"
+
+namespace drillflex::model {
+
+struct ElementState {
+  std::vector<const BodyPose*> poses;  // of the element's bodies, in order
+  VecX velocity;                       // concatenated velocities of the element's bodies
+  double time = 0.0;
+  double load_factor = 1.0;            // scales applied loads (load stepping, buckling)
+};
+
+struct ElementContribution {
+  VecX force;      // added to the residual
+  MatX stiffness;  // ∂force/∂(position increment)
+  MatX damping;    // ∂force/∂v
+};
+
+class ForceElement {
+ public:
+  virtual ~ForceElement() = default;
+
+  const std::vector<const Body*>& bodies() const { return bodies_; }
+  int local_size() const { return local_size_; }
+
+  // Checks sizes, then computes. Matrices only when `with_matrices` (else left empty).
+  void Evaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const;
+  // Potential energy (J) of a conservative element; 0 for dissipative or non-conservative parts.
+  double PotentialEnergy(const ElementState& state) const;
+  virtual std::string Describe() const = 0;
+
+ protected:
+  explicit ForceElement(std::vector<const Body*> bodies);
+  virtual void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const = 0;
+  virtual double DoPotentialEnergy(const ElementState& state) const = 0;
+
+ private:
+  std::vector<const Body*> bodies_;
+  int local_size_ = 0;
+};
+
+}  // namespace drillflex::model

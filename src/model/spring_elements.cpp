@@ -1,0 +1,89 @@
+#include "model/spring_elements.hpp"
+
+#include <fmt/format.h>
+
+namespace drillflex::model {
+
+namespace {
+
+// Bᵀf, and the tangent Bᵀ K B + H(f) and damping Bᵀ C B of a spring on coupling kinematics.
+// The derivative of ė = B v with respect to the positions (a term ∝ C v) is left out of the
+// tangent: it vanishes at rest (statics, modes about equilibrium) and only slows Newton slightly
+// in transients.
+void SpringContribution(const CouplingKinematics& k, const Vec6& stiffness, const Vec6& damping,
+                        const VecX& velocity, bool with_matrices, ElementContribution& out) {
+  const Vec6 rate = k.jacobian * velocity;
+  const Vec6 force = stiffness.cwiseProduct(k.strain) + damping.cwiseProduct(rate);
+  out.force.noalias() += k.jacobian.transpose() * force;
+  if (!with_matrices) return;
+  out.stiffness.noalias() += k.jacobian.transpose() * stiffness.asDiagonal() * k.jacobian;
+  out.stiffness += CouplingJacobianDerivative(k, force);
+  out.damping.noalias() += k.jacobian.transpose() * damping.asDiagonal() * k.jacobian;
+}
+
+}  // namespace
+
+CouplingElement::CouplingElement(const Body* lower, int lower_node, const Body* upper, int upper_node,
+                                 const Vec6& stiffness, const Vec6& damping, const Mat3& built_in_rotation)
+    : ForceElement({lower, upper}), lower_node_(lower_node), upper_node_(upper_node), stiffness_(stiffness),
+      damping_(damping), built_in_rotation_(built_in_rotation) {}
+
+std::string CouplingElement::Describe() const {
+  return fmt::format("coupling at {:.4g} m from the bit", bodies()[1]->s_start);
+}
+
+CouplingKinematics CouplingElement::Kinematics(const ElementState& state) const {
+  const CouplingEnd lower{bodies()[0], lower_node_, *state.poses[0]};
+  const CouplingEnd upper{bodies()[1], upper_node_, *state.poses[1]};
+  return ComputeCouplingKinematics(lower, upper, built_in_rotation_);
+}
+
+void CouplingElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
+  SpringContribution(Kinematics(state), stiffness_, damping_, state.velocity, with_matrices, out);
+}
+
+Vec6 CouplingElement::Force(const ElementState& state) const {
+  const CouplingKinematics k = Kinematics(state);
+  return stiffness_.cwiseProduct(k.strain) + damping_.cwiseProduct(k.jacobian * state.velocity);
+}
+
+double CouplingElement::DoPotentialEnergy(const ElementState& state) const {
+  const Vec6 strain = Kinematics(state).strain;
+  return 0.5 * strain.dot(stiffness_.cwiseProduct(strain));
+}
+
+SupportElement::SupportElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
+                               const Vec6& stiffness, const Vec6& damping)
+    : ForceElement({body}), node_(node), stiffness_(stiffness), damping_(damping) {
+  ground_.r = position;
+  ground_.A = frame;
+  // The body's node frame at rest is the body's reference frame; the support's rotational strain
+  // vee(skew(frameᵀ A)) is measured from it, so the frame must be that reference orientation.
+}
+
+std::string SupportElement::Describe() const {
+  return fmt::format("support at {:.4g} m from the bit",
+                     bodies()[0]->s_start + bodies()[0]->reduced->node_positions[node_].x());
+}
+
+CouplingKinematics SupportElement::Kinematics(const ElementState& state) const {
+  const CouplingEnd ground{nullptr, 0, ground_};
+  const CouplingEnd end{bodies()[0], node_, *state.poses[0]};
+  return ComputeCouplingKinematics(ground, end);
+}
+
+void SupportElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
+  SpringContribution(Kinematics(state), stiffness_, damping_, state.velocity, with_matrices, out);
+}
+
+Vec6 SupportElement::Reaction(const ElementState& state) const {
+  const CouplingKinematics k = Kinematics(state);
+  return -(stiffness_.cwiseProduct(k.strain) + damping_.cwiseProduct(k.jacobian * state.velocity));
+}
+
+double SupportElement::DoPotentialEnergy(const ElementState& state) const {
+  const Vec6 strain = Kinematics(state).strain;
+  return 0.5 * strain.dot(stiffness_.cwiseProduct(strain));
+}
+
+}  // namespace drillflex::model

@@ -1,0 +1,55 @@
+// Stiff viscous-elastic springs on the kinematics of model/coupling_kinematics.hpp:
+//  * CouplingElement joins the end node of one body to the start node of the next (method.md §5);
+//  * SupportElement holds a node to its reference place and orientation in chosen directions of the
+//    string frame (a penalty support: `supports` of the case).
+// Force f = K e + C ė with diagonal K, C in side 1's frame (axial x, lateral y, z, torsion,
+// bending y, z); generalized force Bᵀ f; tangent Bᵀ K B + H(f), damping Bᵀ C B.
+#pragma once
+
+#include "model/coupling_kinematics.hpp"
+#include "model/force_element.hpp"
+
+namespace drillflex::model {
+
+class CouplingElement : public ForceElement {
+ public:
+  CouplingElement(const Body* lower, int lower_node, const Body* upper, int upper_node, const Vec6& stiffness,
+                  const Vec6& damping, const Mat3& built_in_rotation = Mat3::Identity());
+  std::string Describe() const override;
+  const Vec6& stiffness() const { return stiffness_; }
+  // The force f = K e + C ė (side-1 frame) at a state.
+  Vec6 Force(const ElementState& state) const;
+
+ protected:
+  void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;
+  double DoPotentialEnergy(const ElementState& state) const override;
+
+ private:
+  CouplingKinematics Kinematics(const ElementState& state) const;
+  int lower_node_, upper_node_;
+  Vec6 stiffness_, damping_;
+  Mat3 built_in_rotation_;
+};
+
+class SupportElement : public ForceElement {
+ public:
+  // Holds `node` of `body` at `position` with the string frame `frame` (columns x, y, z);
+  // stiffness and damping 0 in the free directions.
+  SupportElement(const Body* body, int node, const Vec3& position, const Mat3& frame, const Vec6& stiffness,
+                 const Vec6& damping);
+  std::string Describe() const override;
+  // The reaction the support exerts on the string, in the string frame (force N, moment N·m).
+  Vec6 Reaction(const ElementState& state) const;
+
+ protected:
+  void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;
+  double DoPotentialEnergy(const ElementState& state) const override;
+
+ private:
+  CouplingKinematics Kinematics(const ElementState& state) const;
+  int node_;
+  BodyPose ground_;
+  Vec6 stiffness_, damping_;
+};
+
+}  // namespace drillflex::model

@@ -1,0 +1,34 @@
+// The model as a problem for the static Newton solver (solvers/newton.hpp): v = a = 0, the load
+// factor scales every applied load (gravity, point and distributed loads, WOB).
+#pragma once
+
+#include "model/system_model.hpp"
+#include "solvers/problem.hpp"
+
+namespace drillflex::model {
+
+class StaticModelProblem : public solvers::StaticProblem {
+ public:
+  explicit StaticModelProblem(const SystemModel& model) : model_(model) {}
+
+  int num_positions() const override { return model_.num_positions(); }
+  int num_velocities() const override { return model_.num_velocities(); }
+  VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
+  VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
+    return model_.Residual(t, q, v, a, load_factor_);
+  }
+  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double cK, double cD,
+                            double cM) const override {
+    return model_.IterationMatrix(t, q, v, a, load_factor_, cK, cD, cM);
+  }
+  void SetLoadFactor(double load_factor) override { load_factor_ = load_factor; }
+  double ForceScale() const override { return model_.force_scale(); }
+  bool IsIterationMatrixSymmetric() const override { return false; }
+  double load_factor() const { return load_factor_; }
+
+ private:
+  const SystemModel& model_;
+  double load_factor_ = 1.0;
+};
+
+}  // namespace drillflex::model

@@ -1,0 +1,68 @@
+// The whole multibody model of a string: immutable once built (model/builder.hpp). It owns the
+// bodies and force elements and assembles the residual R(t, q, v, a; λ) = M a + Q_v + f_elastic +
+// Σ elements, its iteration matrix cK·K + cD·D + cM·M (sparse, block-banded) and the energies.
+// The changing state (q, v) lives outside, in plain vectors.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model/body.hpp"
+#include "model/force_element.hpp"
+
+namespace drillflex::model {
+
+struct Energies {
+  double kinetic = 0.0;
+  double elastic = 0.0;    // bodies' strain energy
+  double potential = 0.0;  // force elements (springs, loads)
+  double total() const { return kinetic + elastic + potential; }
+};
+
+class SystemModel {
+ public:
+  SystemModel(std::vector<Body> bodies, std::vector<std::unique_ptr<ForceElement>> elements, double length);
+  SystemModel(SystemModel&&) = default;
+  SystemModel& operator=(SystemModel&&) = default;
+
+  const std::vector<Body>& bodies() const { return bodies_; }
+  const std::vector<std::unique_ptr<ForceElement>>& elements() const { return elements_; }
+  int num_positions() const { return num_positions_; }
+  int num_velocities() const { return num_velocities_; }
+  double length() const { return length_; }  // of the string, m
+
+  VecX ReferencePositions() const;
+  VecX Increment(const VecX& q, const VecX& dv) const;
+  std::vector<BodyPose> Poses(const VecX& q) const;
+
+  VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor) const;
+  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor, double cK,
+                            double cD, double cM) const;
+  SparseMat MassMatrix(const VecX& q) const;
+  Energies ComputeEnergies(const VecX& q, const VecX& v, double load_factor) const;
+
+  // The element's state at (q, v): its bodies' poses and velocities.
+  ElementState StateOf(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v,
+                       double t, double load_factor) const;
+  int IndexOf(const Body* body) const;
+
+  // The body and node at a distance s from the bit (the nearest node; at a joint, the upper body).
+  std::pair<int, int> NodeAt(double s) const;
+  // The force scale of the model's applied loads (N), for solver tolerances.
+  double force_scale() const { return force_scale_; }
+  void set_force_scale(double scale) { force_scale_ = scale; }
+
+ private:
+  std::vector<Body> bodies_;
+  std::vector<std::unique_ptr<ForceElement>> elements_;
+  int num_positions_ = 0;
+  int num_velocities_ = 0;
+  double length_ = 0.0;
+  double force_scale_ = 1.0;
+};
+
+// NodeAt over a list of bodies (used while building).
+std::pair<int, int> FindNodeAt(const std::vector<Body>& bodies, double s);
+
+}  // namespace drillflex::model
