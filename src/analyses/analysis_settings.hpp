@@ -44,6 +44,9 @@ struct VibrationSettings {
 
 struct BucklingSettings {
   int modes = 1;  // buckling modes reported
+  // The frequency-against-load method (the paper's Figure 5) beside the eigenproblem.
+  bool frequency_method = true;
+  int frequency_points = 4;  // load levels in the first f² sweep (refined near the estimate)
 };
 
 struct TransientSettings {

@@ -1,0 +1,50 @@
+// Buckling (method.md §9.3), two ways:
+//  (a) the linearized buckling eigenproblem (K_0 + μ K_G) x = 0 with K_0 the tangent at the
+//      reference placement under no load and K_G = (K_T(q_ref, λ_ref) − K_0)/λ_ref, q_ref the
+//      static equilibrium at load factor λ_ref (1, or smaller if the string buckles before 1);
+//      μ is the multiplier of the case's loads at buckling (solvers::SolveBuckling);
+//  (b) the paper's Figure 5: the lowest non-zero natural frequency f against the load factor,
+//      f² extrapolated to zero.
+// The critical load is reported as the largest axial compression in the string at λ = 1 times
+// the multiplier (prebuckling is linear).
+#pragma once
+
+#include <vector>
+
+#include "analyses/analysis_settings.hpp"
+#include "analyses/string_stations.hpp"
+#include "core/types.hpp"
+#include "model/builder.hpp"
+
+namespace drillflex::analyses {
+
+struct FrequencyLoadPoint {
+  double load_factor = 0.0;      // λ
+  double compression = 0.0;      // largest axial compression at λ, N (> 0 compressive)
+  double frequency_hz = 0.0;     // lowest non-zero natural frequency at λ
+};
+
+struct BucklingResult {
+  // (a) the eigenproblem
+  double load_factor = 0.0;       // μ_cr: the case's loads × μ_cr buckle the string
+  double critical_load = 0.0;     // compression at λ = 1 × μ_cr, N
+  std::vector<double> load_factors;  // the lowest `modes` multipliers, ascending
+  double reference_load_factor = 1.0;  // λ_ref used for K_G
+  double reference_compression = 0.0;  // largest axial compression at λ = 1, N
+  // (b) frequency against load
+  bool frequency_method_converged = false;
+  double frequency_load_factor = 0.0;   // μ from f² → 0
+  double frequency_critical_load = 0.0; // N
+  double unloaded_frequency_hz = 0.0;   // f₀ at λ = 0
+  std::vector<FrequencyLoadPoint> frequency_table;  // ascending λ
+  // The buckled mode (a): per station, string frame, max |displacement| = 1.
+  std::vector<double> s;
+  std::vector<Vec3> mode_displacement;
+  std::vector<Vec3> mode_rotation;
+};
+
+// Throws SolverError if the string has no compression under the case's loads or the eigenproblem
+// fails (e.g. an unsupported string: K_0 singular).
+BucklingResult RunBuckling(const model::BuiltModel& built, const BucklingSettings& settings);
+
+}  // namespace drillflex::analyses

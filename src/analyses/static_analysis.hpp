@@ -1,0 +1,62 @@
+// Static analysis (method.md §9.1): the equilibrium R(q) = 0 of the string under its loads
+// (weight, applied loads, supports), found by Newton's method with load stepping
+// (solvers::SolveStatic) from the reference placement, and the results along the string.
+#pragma once
+
+#include <vector>
+
+#include "analyses/analysis_settings.hpp"
+#include "analyses/string_stations.hpp"
+#include "core/types.hpp"
+#include "model/builder.hpp"
+#include "solvers/newton.hpp"
+
+namespace drillflex::analyses {
+
+// Results at one station (analyses/string_stations.hpp). Frames: the string frame at the node
+// (x along the string toward the top). SI.
+struct StaticNodeResult {
+  double s = 0.0;                      // m from the bit
+  Vec3 position = Vec3::Zero();        // global, m
+  Vec3 displacement = Vec3::Zero();    // string frame, relative to the undeformed placement, m
+  Vec3 rotation = Vec3::Zero();        // string frame, rad
+  double lateral_offset = 0.0;         // |displacement ⊥ string axis|, m
+  double axial_force = 0.0;            // N, tension positive
+  double torque = 0.0;                 // N·m
+  double bending_moment = 0.0;         // N·m (magnitude)
+  double shear_force = 0.0;            // N (magnitude)
+  Vec3 force = Vec3::Zero();           // (N, V_y, V_z) string frame, model/internal_forces.hpp
+  Vec3 moment = Vec3::Zero();          // (T, M_y, M_z) string frame
+  double bending_stress = 0.0;         // M (OD/2) / I, Pa
+  double von_mises_stress = 0.0;       // sqrt(σ² + 3τ²), σ = |N|/A + M c/I, τ = T c/J, Pa
+};
+
+// The reaction a case support exerts on the string, string frame at the support.
+struct SupportReaction {
+  double s = 0.0;                // m
+  Vec3 force = Vec3::Zero();     // N
+  Vec3 moment = Vec3::Zero();    // N·m
+};
+
+struct StaticResult {
+  bool converged = false;
+  VecX q;                      // the equilibrium positions
+  int iterations = 0;          // Newton iterations (or relaxation steps)
+  int load_steps = 0;
+  double residual_norm = 0.0;  // |R|₂ at q, N
+  std::vector<StaticNodeResult> nodes;    // from the bit upward
+  std::vector<SupportReaction> reactions; // one per case support, in case order
+};
+
+// Solves the static equilibrium at load factor 1. Throws SolverError when it does not converge.
+StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings);
+
+// The results along the string at a given state q (used by RunStatic, buckling and tests).
+std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q);
+std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q);
+
+// Newton options recommended for this model (model-orientation notes): increment tolerance 1e-10,
+// no line search (stiff couplings), load stepping as the safeguard.
+solvers::NewtonOptions DefaultNewtonOptions();
+
+}  // namespace drillflex::analyses
