@@ -5,7 +5,10 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
+#include "io/model_input.hpp"
+#include "model/builder.hpp"
 #include "well/hole.hpp"
 #include "well/trajectory.hpp"
 
@@ -93,6 +96,18 @@ void PrintString(const io::Case& c, const Printer& show) {
   std::cout << fmt::format(" (g = {:.5g} m/s2)\n", c.gravity);
 }
 
+void PrintModel(const io::Case& c) {
+  cms::ReductionCache cache;
+  const model::BuiltModel built = model::BuildSystemModel(io::MakeModelInput(c), cache);
+  const auto& settings = c.model;
+  std::cout << fmt::format(
+      "model: {} flexible bodies ({} distinct reductions), {} coordinates, {} couplings, {} supports, 0 contacts\n",
+      built.system.bodies().size(), cache.size(), built.system.num_velocities(),
+      built.system.bodies().empty() ? 0 : built.system.bodies().size() - 1, c.supports.size());
+  std::cout << fmt::format("  {} elements and {} fixed-interface modes a body, coupling factor {:g}\n",
+                           settings.elements_per_body, settings.modes_per_body, settings.coupling_factor);
+}
+
 void PrintAnalyses(const io::Case& c) {
   std::vector<std::string> names;
   const auto& a = c.analyses;
@@ -119,6 +134,7 @@ int RunCheck(const CommandOptions& options) {
                              show(c.fluid->viscosity, Quantity::Viscosity));
   }
   PrintString(c, show);
+  PrintModel(c);
   PrintAnalyses(c);
   std::cout << "the case is valid\n";
   return kExitOk;

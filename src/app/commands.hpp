@@ -19,5 +19,9 @@ struct CommandOptions {
 
 int RunCheck(const CommandOptions& options);
 int RunWell(const CommandOptions& options);
+int RunStaticCommand(const CommandOptions& options);
+int RunModesCommand(const CommandOptions& options);
+int RunBucklingCommand(const CommandOptions& options);
+int RunCaseCommand(const CommandOptions& options);
 
 }  // namespace drillflex::app

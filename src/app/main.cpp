@@ -48,6 +48,13 @@ int main(int argc, char** argv) {
       {"check", "Read and validate a case; print a summary of the well, the string and the analyses",
        drillflex::app::RunCheck, false},
       {"well", "Write the well trajectory (trajectory.csv, results.json)", drillflex::app::RunWell, true},
+      {"static", "Static equilibrium: deformed shape, internal forces and stresses along the string",
+       drillflex::app::RunStaticCommand, true},
+      {"modes", "Natural frequencies and mode shapes about the static equilibrium", drillflex::app::RunModesCommand,
+       true},
+      {"buckling", "Critical load multiplier of the case's loads (eigenproblem and frequency against load)",
+       drillflex::app::RunBucklingCommand, true},
+      {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true},
   };
 
   CommandOptions options;

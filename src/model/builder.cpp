@@ -8,6 +8,7 @@
 #include "cms/reduced_body.hpp"
 #include "core/error.hpp"
 #include "model/nodal_loads.hpp"
+#include "model/placement.hpp"
 #include "model/spring_elements.hpp"
 
 namespace drillflex::model {
@@ -120,6 +121,7 @@ double WeightPerLength(const Body& body, const ModelInput& input) {
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache) {
   if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
   std::vector<Body> bodies = CutBodies(input, cache);
+  if (input.trajectory) PlaceAlongWell(bodies, *input.trajectory, input.bit_md);
   double length = 0.0;
   for (const Body& body : bodies) length = std::max(length, body.s_start + body.length());
   // Elements refer to bodies by address; moving the vector into the SystemModel keeps its buffer.

@@ -13,6 +13,7 @@
 #include "fe/material.hpp"
 #include "model/string_config.hpp"
 #include "model/system_model.hpp"
+#include "well/trajectory.hpp"
 
 namespace drillflex::model {
 
@@ -24,6 +25,9 @@ struct ModelInput {
   std::vector<Load> loads;
   double gravity = 0.0;              // m/s², along global +z
   std::optional<FluidConfig> fluid;
+  // The well the string lies in (bit at bit_md); none: straight along +x from the origin.
+  std::optional<well::Trajectory> trajectory;
+  double bit_md = 0.0;
 };
 
 // What the builder made, beside the model itself: where each support and load went.

@@ -1,0 +1,140 @@
+// `drillflex static|modes|buckling|run CASE [-o DIR]`: build the model of a case, run the
+// analyses, print a summary in the case's units and write the results atomically.
+#include <chrono>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "analyses/buckling_analysis.hpp"
+#include "analyses/modes_analysis.hpp"
+#include "analyses/static_analysis.hpp"
+#include "app/commands.hpp"
+#include "cms/reduction_cache.hpp"
+#include "core/error.hpp"
+#include "io/analysis_results.hpp"
+#include "io/model_input.hpp"
+
+namespace drillflex::app {
+namespace {
+
+using units::Quantity;
+
+struct Requested {
+  bool static_analysis = false, modes = false, buckling = false;
+};
+
+std::string Show(const io::Case& c, double si, Quantity quantity, int digits = 5) {
+  return fmt::format("{:.{}g} {}", units::FromSI(si, quantity, c.units), digits, units::DefaultUnit(quantity, c.units));
+}
+
+void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
+  std::cout << fmt::format("static: converged in {} Newton iterations, {} load steps (|R| = {:.3g} N)\n",
+                           result.iterations, result.load_steps, result.residual_norm);
+  const analyses::StaticNodeResult* widest = nullptr;
+  const analyses::StaticNodeResult* stressed = nullptr;
+  for (const auto& node : result.nodes) {
+    if (!widest || node.lateral_offset > widest->lateral_offset) widest = &node;
+    if (!stressed || node.von_mises_stress > stressed->von_mises_stress) stressed = &node;
+  }
+  if (widest) {
+    std::cout << fmt::format("  largest lateral displacement {} at {} from the bit\n",
+                             Show(c, widest->lateral_offset, Quantity::Diameter), Show(c, widest->s, Quantity::Length));
+    std::cout << fmt::format("  peak von Mises stress {} at {} from the bit (bending {}, axial force {})\n",
+                             Show(c, stressed->von_mises_stress, Quantity::Stress), Show(c, stressed->s, Quantity::Length),
+                             Show(c, stressed->bending_stress, Quantity::Stress),
+                             Show(c, stressed->axial_force, Quantity::Force));
+  }
+  for (const auto& reaction : result.reactions) {
+    std::cout << fmt::format("  support at {}: force [{}, {}, {}]\n", Show(c, reaction.s, Quantity::Length),
+                             Show(c, reaction.force.x(), Quantity::Force), Show(c, reaction.force.y(), Quantity::Force),
+                             Show(c, reaction.force.z(), Quantity::Force));
+  }
+}
+
+void PrintModes(const analyses::ModesResult& result) {
+  std::cout << fmt::format("modes: {} computed\n", result.modes.size());
+  std::cout << fmt::format("  {:>4} {:>12}  {:<10} {:>6} {:>6} {:>6}\n", "#", "f (Hz)", "kind", "axial", "tors", "lat");
+  for (std::size_t m = 0; m < result.modes.size(); ++m) {
+    const auto& mode = result.modes[m];
+    std::cout << fmt::format("  {:>4} {:>12.6g}  {:<10} {:>6.3f} {:>6.3f} {:>6.3f}{}\n", m + 1, mode.frequency_hz,
+                             analyses::ModeKindName(mode.kind), mode.axial_fraction, mode.torsional_fraction,
+                             mode.lateral_fraction, mode.rigid_body ? "  (rigid body)" : "");
+  }
+}
+
+void PrintBuckling(const io::Case& c, const analyses::BucklingResult& result) {
+  std::cout << fmt::format("buckling: load multiplier {:.6g}, critical compression {} (eigenproblem)\n",
+                           result.load_factor, Show(c, result.critical_load, Quantity::Force, 6));
+  if (result.frequency_method_converged) {
+    std::cout << fmt::format("  from the lowest frequency against load: multiplier {:.6g}, compression {}\n",
+                             result.frequency_load_factor, Show(c, result.frequency_critical_load, Quantity::Force, 6));
+  } else {
+    std::cout << "  the frequency-against-load extrapolation did not converge\n";
+  }
+}
+
+int RunAnalyses(const CommandOptions& options, Requested requested) {
+  const auto start = std::chrono::steady_clock::now();
+  const io::Case c = io::ReadCase(options.case_path);
+  if (requested.static_analysis && !c.well && c.supports.empty()) {
+    throw InputError({c.file, 0, 0}, "supports",
+                     "the string has no well and no supports: nothing holds it (add 'supports')");
+  }
+  cms::ReductionCache cache;
+  const model::BuiltModel built = model::BuildSystemModel(io::MakeModelInput(c), cache);
+  std::cout << fmt::format("model: {} bodies, {} coordinates\n", built.system.bodies().size(),
+                           built.system.num_velocities());
+  io::ResultFiles files(options.output_directory.empty() ? io::DefaultOutputDirectory(c) : options.output_directory);
+  io::AddCaseHeader(c, built, files);
+
+  VecX equilibrium = built.system.ReferencePositions();
+  if (requested.static_analysis || requested.modes) {
+    const auto result = analyses::RunStatic(built, c.analyses.static_analysis.value_or(analyses::StaticSettings{}));
+    equilibrium = result.q;
+    if (requested.static_analysis) {
+      PrintStatic(c, result);
+      io::AddStaticResults(c, result, files);
+    }
+  }
+  if (requested.modes) {
+    const auto result = analyses::RunModes(built, equilibrium, c.analyses.modes.value_or(analyses::ModesSettings{}));
+    PrintModes(result);
+    io::AddModesResults(c, result, files);
+  }
+  if (requested.buckling) {
+    const auto result = analyses::RunBuckling(built, c.analyses.buckling.value_or(analyses::BucklingSettings{}));
+    PrintBuckling(c, result);
+    io::AddBucklingResults(c, result, files);
+  }
+  files.Commit();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << fmt::format("results written to {} ({:.3g} s)\n", files.directory(), seconds);
+  return kExitOk;
+}
+
+}  // namespace
+
+int RunStaticCommand(const CommandOptions& options) { return RunAnalyses(options, {true, false, false}); }
+int RunModesCommand(const CommandOptions& options) { return RunAnalyses(options, {false, true, false}); }
+int RunBucklingCommand(const CommandOptions& options) { return RunAnalyses(options, {false, false, true}); }
+
+int RunCaseCommand(const CommandOptions& options) {
+  const io::Case c = io::ReadCase(options.case_path);
+  const auto& a = c.analyses;
+  std::vector<std::string> unavailable;
+  if (a.vibration) unavailable.push_back("vibration");
+  if (a.transient) unavailable.push_back("transient");
+  if (!unavailable.empty()) {
+    std::string list;
+    for (const auto& name : unavailable) list.append(list.empty() ? "" : ", ").append(name);
+    throw InputError({c.file, 0, 0}, "analyses",
+                     fmt::format("this version of drillflex cannot run: {}; remove them from 'analyses' "
+                                 "or run the others one by one (static, modes, buckling)", list));
+  }
+  if (!a.static_analysis && !a.modes && !a.buckling) {
+    throw InputError({c.file, 0, 0}, "analyses", "the case lists no analyses to run");
+  }
+  return RunAnalyses(options, {a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value()});
+}
+
+}  // namespace drillflex::app

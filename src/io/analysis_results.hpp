@@ -1,0 +1,27 @@
+// Results of the analyses into results.json and CSV tables, in the output units of the case
+// (case-format.md "Results"). Forces in N | lbf, moments in N·m | ft·lbf, stresses in Pa | psi,
+// positions along the string in m | ft, displacements in m | in, angles in degrees.
+#pragma once
+
+#include "analyses/buckling_analysis.hpp"
+#include "analyses/modes_analysis.hpp"
+#include "analyses/static_analysis.hpp"
+#include "io/case.hpp"
+#include "io/result_files.hpp"
+#include "model/builder.hpp"
+
+namespace drillflex::io {
+
+// "case", "units", "model": {bodies, coordinates, contacts, ...} and "column_units".
+void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& files);
+// "static" and static.csv (one row per station), static_reactions in the JSON.
+void AddStaticResults(const Case& c, const analyses::StaticResult& result, ResultFiles& files);
+// "modes" and modes.csv (frequencies), mode_shapes.csv (per mode and station).
+void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files);
+// "buckling" and buckling.csv (frequency against load).
+void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, ResultFiles& files);
+
+// MD of a station: bit MD − s with a well, s without one (measured along the string from the bit).
+double StationMd(const Case& c, double s);
+
+}  // namespace drillflex::io

@@ -1,0 +1,21 @@
+#include "io/model_input.hpp"
+
+namespace drillflex::io {
+
+model::ModelInput MakeModelInput(const Case& c) {
+  model::ModelInput input;
+  input.string = c.string;
+  input.settings = c.model;
+  input.materials = c.materials;
+  input.supports = c.supports;
+  input.loads = c.loads;
+  input.gravity = c.gravity;
+  input.fluid = c.fluid;
+  if (c.well) {
+    input.trajectory.emplace(c.well->survey);
+    input.bit_md = c.well->bit_md;
+  }
+  return input;
+}
+
+}  // namespace drillflex::io
