@@ -11,6 +11,7 @@ model::ModelInput MakeModelInput(const Case& c) {
   input.loads = c.loads;
   input.gravity = c.gravity;
   input.fluid = c.fluid;
+  input.operation = c.operation;
   if (c.well) {
     input.trajectory.emplace(c.well->survey);
     input.bit_md = c.well->bit_md;

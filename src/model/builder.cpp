@@ -118,6 +118,16 @@ double WeightPerLength(const Body& body, const ModelInput& input) {
 
 }  // namespace
 
+std::vector<Support> DefaultWellSupports(double string_length) {
+  Support bit;
+  bit.at = 0.0;
+  bit.fixed[kY] = bit.fixed[kZ] = true;
+  Support hook;
+  hook.at = string_length;
+  hook.fixed[kX] = hook.fixed[kRx] = true;
+  return {bit, hook};
+}
+
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache) {
   if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
   std::vector<Body> bodies = CutBodies(input, cache);
@@ -139,7 +149,9 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   }
 
   std::vector<int> support_elements;
-  for (const Support& support : input.supports) {
+  const std::vector<Support> supports =
+      input.trajectory && input.supports.empty() ? DefaultWellSupports(length) : input.supports;
+  for (const Support& support : supports) {
     const auto [b, node] = FindNodeAt(placed, support.at);
     const Body& body = placed[b];
     const Mat3 frame = body.reference_orientation.toRotationMatrix();
@@ -187,8 +199,17 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     for (int k = 0; k < nodes; ++k) force_scale += forces[k].norm();
     elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
   }
-  // Point loads on the nearest node (at a joint, the upper body's start node).
-  for (const Load& load : input.loads) {
+  // Point loads on the nearest node (at a joint, the upper body's start node). The formation
+  // pushes the bit up-hole with the WOB and resists its rotation with the torque on bit.
+  std::vector<Load> point_loads = input.loads;
+  if (input.operation.weight_on_bit != 0.0 || input.operation.torque_on_bit != 0.0) {
+    Load bit;
+    bit.at = 0.0;
+    bit.force = Vec3(input.operation.weight_on_bit, 0.0, 0.0);
+    bit.moment = Vec3(input.operation.torque_on_bit, 0.0, 0.0);
+    point_loads.push_back(bit);
+  }
+  for (const Load& load : point_loads) {
     if (load.distributed) continue;
     const auto [b, node] = FindNodeAt(placed, load.at);
     const Body& body = placed[b];

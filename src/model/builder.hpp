@@ -28,7 +28,14 @@ struct ModelInput {
   // The well the string lies in (bit at bit_md); none: straight along +x from the origin.
   std::optional<well::Trajectory> trajectory;
   double bit_md = 0.0;
+  Operation operation;  // WOB and torque on bit act at the bit (s = 0)
 };
+
+// The supports a string in a well gets when the case gives none (method.md §8, the static BHA
+// convention): the bit held laterally at the hole centre with its tilt and axial motion free (it
+// carries the WOB as an applied force), and the top held axially by the hook and in torsion by the
+// rotary table, free to lie on the wall.
+std::vector<Support> DefaultWellSupports(double string_length);
 
 // What the builder made, beside the model itself: where each support and load went.
 struct BuiltModel {
