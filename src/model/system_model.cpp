@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "core/so3.hpp"
 #include "model/body_dynamics.hpp"
+#include "model/body_inertia_jacobian.hpp"
 
 namespace drillflex::model {
 
@@ -122,15 +123,12 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
                                        double cK, double cD, double cM) const {
   const auto poses = Poses(q);
   std::vector<Triplet> triplets;
-  const bool moving = !v.isZero(0.0) || !a.isZero(0.0);
-  if (moving && cK != 0.0) {
-    throw LogicError("IterationMatrix: the inertia terms' position derivatives are not available yet");
-  }
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     const int n = body.velocity_count();
     MatX local = MatX::Zero(n, n);
-    if (cM != 0.0) local += cM * BodyMassMatrix(body, poses[b]);
+    // cK K_in + cD D_in + cM M of the inertia (exact, model/body_inertia_jacobian.hpp).
+    AddInertiaMatrices(body, poses[b], v.segment(body.v_offset, n), a.segment(body.v_offset, n), cK, cD, cM, local);
     AddElasticMatrices(body, poses[b], cK, cD, local);
     AddBlockTriplets(local, {&body}, triplets);
   }

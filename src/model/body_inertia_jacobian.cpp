@@ -1,0 +1,135 @@
+#include "model/body_inertia_jacobian.hpp"
+
+#include "core/so3.hpp"
+#include "model/body_dynamics.hpp"
+
+namespace drillflex::model {
+
+using so3::Skew;
+
+namespace {
+
+using Matrix3X = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+
+// The body-frame pieces of the derivatives of G = (M̂ + C) α + Q̂ (header), before the rotation Wᵀ.
+struct BodyFrameDerivatives {
+  Vec3 translational_residual = Vec3::Zero();  // G_t
+  MatX translation_columns;  // (M̂ + C)[:, t], n × 3 (stiffness only)
+  MatX modal_stiffness;      // ∂G/∂η, n × n_f (stiffness only)
+  MatX velocity_damping;     // ∂G/∂(ω, η̇), n × (3 + n_f) (damping only)
+};
+
+// Adds L̂_kᵀ x = [x; ũ_k x; Φ_kᵀ x] of a body-frame nodal force (rows) into `target` (n rows).
+template <typename Rows>
+void AddTranslationalMap(const Mat3& skew_offset, const Matrix3X& phi, const Rows& rows, MatX& target) {
+  target.topRows<3>() += rows;
+  target.middleRows<3>(3).noalias() += skew_offset * rows;
+  target.bottomRows(phi.cols()).noalias() += phi.transpose() * rows;
+}
+
+BodyFrameDerivatives ComputeBodyFrameDerivatives(const Body& body, const BodyPose& pose, const VecX& velocity,
+                                                 const VecX& acceleration, bool stiffness, bool damping) {
+  const cms::ReducedBody& reduced = *body.reduced;
+  const int nf = body.flexible_count;
+  const int n = 6 + nf;
+  const Vec3 omega = velocity.segment<3>(3);
+  const auto eta_rate = velocity.tail(nf);
+  VecX alpha = acceleration;  // α = W a
+  alpha.head<3>() = pose.A.transpose() * acceleration.head<3>();
+  const Vec3 alpha_t = alpha.head<3>();
+  const Vec3 alpha_omega = alpha.segment<3>(3);
+  const auto alpha_eta = alpha.tail(nf);
+  const Mat3 skew_omega = Skew(omega);
+  // ∂(a_k + c_k)/∂u_k: α_ω × δu + ω × (ω × δu).
+  const Mat3 offset_rate = Skew(alpha_omega) + skew_omega * skew_omega;
+
+  BodyFrameDerivatives out;
+  if (stiffness) {
+    out.translational_residual = body.mass_correction.topRows<3>() * alpha;
+    out.translation_columns = body.mass_correction.leftCols<3>();
+    out.modal_stiffness = MatX::Zero(n, nf);
+  }
+  if (damping) out.velocity_damping = MatX::Zero(n, 3 + nf);
+  Matrix3X force_rate(3, nf), velocity_rate(3, 3 + nf), gyroscopic_rate(3, 3 + nf);
+  for (int k = 0; k < reduced.node_count(); ++k) {
+    const Mat3 mass = reduced.NodeTranslationalMass(k);
+    const Matrix3X& phi = reduced.node_translation_modes[k];
+    const Matrix3X& psi = reduced.node_rotation_modes[k];
+    const Vec3 offset = pose.NodeOffset(body, k);
+    const Mat3 skew_offset = Skew(offset);
+    const Vec3 modal_velocity = phi * eta_rate;
+    if (stiffness) {
+      const Vec3 node_acceleration = alpha_t + alpha_omega.cross(offset) + phi * alpha_eta +
+                                     omega.cross(omega.cross(offset)) + 2.0 * omega.cross(modal_velocity);
+      const Vec3 force = mass * node_acceleration;  // f_k
+      out.translational_residual += force;
+      AddTranslationalMap(skew_offset, phi, mass, out.translation_columns);
+      force_rate.noalias() = (mass * offset_rate) * phi;  // δf_k / δη
+      AddTranslationalMap(skew_offset, phi, force_rate, out.modal_stiffness);
+      out.modal_stiffness.middleRows<3>(3).noalias() -= Skew(force) * phi;  // δu_k × f_k
+    }
+    if (damping) {
+      // ∂c_k/∂ω and ∂c_k/∂η̇, times M_k.
+      velocity_rate.leftCols<3>() =
+          mass * (-Skew(omega.cross(offset)) - skew_omega * skew_offset - 2.0 * Skew(modal_velocity));
+      velocity_rate.rightCols(nf).noalias() = (2.0 * mass * skew_omega) * phi;
+      AddTranslationalMap(skew_offset, phi, velocity_rate, out.velocity_damping);
+      // ∂g_k/∂Ω_k [I, Ψ_k], mapped by [0; I; Ψ_kᵀ].
+      const Mat3& inertia = reduced.node_rotary_inertia[k];
+      const Vec3 node_omega = omega + psi * eta_rate;
+      const Mat3 gyroscopic = Skew(node_omega) * inertia - Skew(inertia * node_omega);
+      gyroscopic_rate.leftCols<3>() = gyroscopic;
+      gyroscopic_rate.rightCols(nf).noalias() = gyroscopic * psi;
+      out.velocity_damping.middleRows<3>(3) += gyroscopic_rate;
+      out.velocity_damping.bottomRows(nf).noalias() += psi.transpose() * gyroscopic_rate;
+    }
+  }
+  return out;
+}
+
+// Wᵀ X: the translational rows rotate to the global frame.
+void RotateTranslationalRows(const Mat3& A, MatX& rows) { rows.topRows<3>() = A * rows.topRows<3>(); }
+
+}  // namespace
+
+VecX BodyInertialForces(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration) {
+  VecX forces = BodyMassMatrix(body, pose) * acceleration;
+  forces += BodyVelocityForces(body, pose, velocity);
+  return forces;
+}
+
+InertiaJacobians BodyInertiaJacobians(const Body& body, const BodyPose& pose, const VecX& velocity,
+                                      const VecX& acceleration) {
+  const int n = body.velocity_count();
+  InertiaJacobians jacobians{MatX::Zero(n, n), MatX::Zero(n, n)};
+  AddInertiaMatrices(body, pose, velocity, acceleration, 1.0, 0.0, 0.0, jacobians.stiffness);
+  AddInertiaMatrices(body, pose, velocity, acceleration, 0.0, 1.0, 0.0, jacobians.damping);
+  return jacobians;
+}
+
+void AddInertiaMatrices(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration,
+                        double cK, double cD, double cM, MatX& matrix) {
+  if (cM != 0.0) matrix.noalias() += cM * BodyMassMatrix(body, pose);
+  const bool moving = !velocity.isZero(0.0);
+  const bool stiffness = cK != 0.0 && (moving || !acceleration.isZero(0.0));
+  const bool damping = cD != 0.0 && moving;
+  if (!stiffness && !damping) return;
+  const int nf = body.flexible_count;
+  BodyFrameDerivatives d = ComputeBodyFrameDerivatives(body, pose, velocity, acceleration, stiffness, damping);
+  if (stiffness) {
+    // δθ columns: Wᵀ (M̂ + C)[:, t] skew(α_t) − [A skew(G_t); 0; 0].
+    const Vec3 alpha_t = pose.A.transpose() * acceleration.head<3>();
+    MatX rotation_columns = d.translation_columns * Skew(alpha_t);
+    rotation_columns.topRows<3>() -= Skew(d.translational_residual);
+    RotateTranslationalRows(pose.A, rotation_columns);
+    matrix.middleCols<3>(3) += cK * rotation_columns;
+    RotateTranslationalRows(pose.A, d.modal_stiffness);
+    matrix.rightCols(nf) += cK * d.modal_stiffness;
+  }
+  if (damping) {
+    RotateTranslationalRows(pose.A, d.velocity_damping);
+    matrix.rightCols(3 + nf) += cD * d.velocity_damping;
+  }
+}
+
+}  // namespace drillflex::model
