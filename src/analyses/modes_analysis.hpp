@@ -20,7 +20,7 @@ struct ModeResult {
   ModeKind kind = ModeKind::Lateral;  // the dominant family (never All)
   // Kinetic-energy fractions (sum 1): translation along the string axis, rotation about it, rest.
   double axial_fraction = 0.0, torsional_fraction = 0.0, lateral_fraction = 0.0;
-  bool rigid_body = false;       // ω² below the rigid-body threshold (unsupported string)
+  bool rigid_body = false;       // one of the CountRigidBodyModes lowest |ω²| (unsupported directions)
   // Shape per station (ModesResult::s), string frame, scaled so that max |displacement| = 1
   // (rotations by the same factor; a purely torsional mode: max |rotation| = 1).
   std::vector<Vec3> displacement;
@@ -30,22 +30,43 @@ struct ModeResult {
 
 struct ModesResult {
   std::vector<double> s;          // stations (analyses/string_stations.hpp), m
-  std::vector<ModeResult> modes;  // sorted by frequency; rigid-body modes included at 0 Hz
+  // Sorted by ω² (a negative ω² of an unstable state comes first, with frequency 0). Kind All
+  // includes the rigid-body modes (frequency 0, rigid_body set); a family excludes them.
+  std::vector<ModeResult> modes;
   int rigid_body_modes = 0;       // how many of `modes` are rigid-body modes
 };
 
 const char* ModeKindName(ModeKind kind);
 
+// `settings.gyroscopic` is not used yet (the string does not rotate in this analysis).
 // The `count` lowest modes (kind All), or the `count` lowest modes of one family (Lateral,
 // Axial, Torsional: more modes are solved progressively until enough are found, at most
 // kMaxModesSearched). Throws SolverError if the eigen solver fails.
 ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesSettings& settings);
 
-// The same on a bare system model (buckling's frequency method).
-ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings);
+// The same on a bare system model at a given load factor (buckling's frequency method).
+ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings,
+                         double load_factor = 1.0);
+
+// The linearized matrices at q (v = a = 0): K = ∂R/∂q at the load factor, symmetrized
+// ½(K + Kᵀ) (the tangent of dead moments and of the rotation parametrization is slightly
+// unsymmetric away from equilibrium), and M(q).
+struct LinearizedSystem {
+  SparseMat stiffness;
+  SparseMat mass;
+};
+LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, double load_factor);
 
 inline constexpr int kMaxModesSearched = 400;
-// A mode is a rigid-body mode when f < kRigidBodyFrequencyHz.
-inline constexpr double kRigidBodyFrequencyHz = 1e-3;
+
+// The number of rigid-body modes of the linearized system at q: the rigid motions of the whole
+// string (translation t, rotation θ about its centroid c: ṙ_b = t + θ × (r_b − c), ω_b = A_bᵀ θ,
+// η̇ = 0, exact also for a deformed string) that the stiffness does not resist, i.e. the
+// eigenvalues μ of Vᵀ K V x = μ Vᵀ M V x (6 × 6) below 1e-9 max_i(K_ii/M_ii). A restrained rigid
+// motion has μ of the order of a support stiffness over the string's mass, a free one μ at the
+// round-off level ε max_i(K_ii/M_ii): both are orders of magnitude from the threshold, whereas
+// the computed ω² of a free mode (round-off ~1e-3 Hz with the stiff couplings) could not be told
+// from a slow elastic one (a long string under tension: ~0.03 Hz).
+int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system);
 
 }  // namespace drillflex::analyses

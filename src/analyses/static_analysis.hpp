@@ -48,11 +48,17 @@ struct StaticResult {
   std::vector<SupportReaction> reactions; // one per case support, in case order
 };
 
-// Solves the static equilibrium at load factor 1. Throws SolverError when it does not converge.
+// Solves the static equilibrium at load factor 1. Newton: at most min(max_iterations, 50)
+// iterations per load step. DynamicRelaxation: analyses/dynamic_relaxation.hpp, at most
+// max_iterations × 10 pseudo-time steps. Throws SolverError when it does not converge.
 StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings);
 
 // The results along the string at a given state q (used by RunStatic, buckling and tests).
-std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q);
+// `load_factor` scales the dead loads used for the axial force inside bodies
+// (model/internal_forces.hpp). At a joint the internal forces are the coupling force (the section
+// between the two bodies; a point load at the joint acts on the upper body's node, above it).
+std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
+                                                double load_factor = 1.0);
 std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q);
 
 // Newton options recommended for this model (model-orientation notes): increment tolerance 1e-10,

@@ -1,0 +1,196 @@
+#include "analyses/buckling_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analyses/modes_analysis.hpp"
+#include "analyses/static_analysis.hpp"
+#include "core/error.hpp"
+#include "solvers/buckling.hpp"
+#include "solvers/eigen.hpp"
+#include "solvers/newton.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+// The model as a static problem whose loads are `scale` × the solver's load factor: Newton's load
+// stepping then ramps from 0 to λ = scale.
+class ScaledLoadProblem : public solvers::StaticProblem {
+ public:
+  ScaledLoadProblem(const model::SystemModel& model, double scale) : model_(model), scale_(scale) {}
+  int num_positions() const override { return model_.num_positions(); }
+  int num_velocities() const override { return model_.num_velocities(); }
+  VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
+  VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
+    return model_.Residual(t, q, v, a, load_factor_);
+  }
+  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double cK, double cD,
+                            double cM) const override {
+    return model_.IterationMatrix(t, q, v, a, load_factor_, cK, cD, cM);
+  }
+  void SetLoadFactor(double load_factor) override { load_factor_ = scale_ * load_factor; }
+  double ForceScale() const override { return std::abs(scale_) * model_.force_scale(); }
+  bool IsIterationMatrixSymmetric() const override { return false; }
+
+ private:
+  const model::SystemModel& model_;
+  double scale_;
+  double load_factor_ = 0.0;
+};
+
+struct Equilibrium {
+  VecX q;
+  bool converged = false;
+};
+
+// The static equilibrium under λ × the case's loads, from the reference placement.
+Equilibrium SolveAt(const model::SystemModel& model, double load_factor) {
+  if (load_factor == 0.0) return {model.ReferencePositions(), true};
+  ScaledLoadProblem problem(model, load_factor);
+  solvers::NewtonOptions options = DefaultNewtonOptions();
+  options.throw_on_failure = false;
+  const solvers::StaticResult result = solvers::SolveStatic(problem, model.ReferencePositions(), options);
+  return {result.q, result.converged};
+}
+
+// The largest axial compression along the string at q (N, ≥ 0).
+double MaxCompression(const model::SystemModel& model, const VecX& q, double load_factor) {
+  double compression = 0.0;
+  for (const StaticNodeResult& node : StaticNodeResults(model, q, load_factor)) {
+    compression = std::max(compression, -node.axial_force);
+  }
+  return compression;
+}
+
+// The buckled mode per station (string frame, max |displacement| = 1).
+void FillBuckledMode(const model::SystemModel& model, const VecX& q, const VecX& mode, BucklingResult& result) {
+  const auto poses = model.Poses(q);
+  double largest = 0.0;
+  for (const Station& station : StringStations(model)) {
+    const NodeVelocity node = MapToNode(model.bodies()[station.body], poses[station.body], mode, station.node);
+    result.s.push_back(station.s);
+    result.mode_displacement.push_back(node.translation);
+    result.mode_rotation.push_back(node.rotation);
+    largest = std::max(largest, node.translation.norm());
+  }
+  if (largest == 0.0) return;
+  for (Vec3& d : result.mode_displacement) d /= largest;
+  for (Vec3& r : result.mode_rotation) r /= largest;
+}
+
+// (a) The linearized eigenproblem (header). Returns the multipliers; sets the reference data.
+void SolveEigenproblem(const model::SystemModel& model, const BucklingSettings& settings, BucklingResult& result) {
+  const VecX reference = model.ReferencePositions();
+  const SparseMat unloaded = Linearize(model, reference, 0.0).stiffness;
+  // The reference state: λ_ref = 1, halved while the equilibrium cannot be found.
+  double reference_factor = 1.0;
+  Equilibrium loaded = SolveAt(model, reference_factor);
+  while (!loaded.converged && reference_factor > 1.0 / 64.0) {
+    reference_factor *= 0.5;
+    loaded = SolveAt(model, reference_factor);
+  }
+  if (!loaded.converged) throw SolverError("buckling: no static equilibrium found even at 1/64 of the loads");
+  result.reference_load_factor = reference_factor;
+  result.reference_compression = MaxCompression(model, loaded.q, reference_factor) / reference_factor;
+  // K_G per unit load factor: (K_T(q_ref, λ_ref) − K_0) / λ_ref.
+  const SparseMat geometric =
+      (SparseMat(Linearize(model, loaded.q, reference_factor).stiffness - unloaded) / reference_factor).pruned();
+  const solvers::BucklingResult buckling = solvers::SolveBuckling(unloaded, geometric, std::max(settings.modes, 1));
+  if (buckling.multipliers.size() == 0) {
+    throw SolverError("buckling: the case's loads do not buckle the string (no positive load multiplier)");
+  }
+  result.load_factors.assign(buckling.multipliers.data(), buckling.multipliers.data() + buckling.multipliers.size());
+  result.load_factor = result.load_factors.front();
+  result.critical_load = result.load_factor * result.reference_compression;
+  FillBuckledMode(model, reference, buckling.modes.col(0), result);
+}
+
+// ω² (signed) of the lowest mode above the `rigid` rigid-body modes at λ, or NaN if no equilibrium.
+FrequencyLoadPoint FrequencyAt(const model::SystemModel& model, double load_factor, int rigid, double& eigenvalue) {
+  FrequencyLoadPoint point;
+  point.load_factor = load_factor;
+  const Equilibrium equilibrium = SolveAt(model, load_factor);
+  eigenvalue = std::nan("");
+  if (!equilibrium.converged) return point;
+  const LinearizedSystem system = Linearize(model, equilibrium.q, load_factor);
+  const solvers::ModalResult modal = solvers::SolveModes(system.stiffness, system.mass, rigid + 1);
+  eigenvalue = modal.eigenvalues[rigid];
+  point.frequency_hz = std::sqrt(std::max(eigenvalue, 0.0)) / (2.0 * kPi);
+  point.compression = MaxCompression(model, equilibrium.q, load_factor);
+  return point;
+}
+
+// The root of ω²(λ) = 0 from the points nearest the current estimate: a quadratic through three
+// (the root nearest the secant root of the last two), a line through two.
+double ExtrapolateRoot(std::vector<std::pair<double, double>> points, double estimate) {
+  std::sort(points.begin(), points.end(), [estimate](const auto& a, const auto& b) {
+    return std::abs(a.first - estimate) < std::abs(b.first - estimate);
+  });
+  const auto& [x0, y0] = points[0];
+  const auto& [x1, y1] = points[1];
+  const double secant = x0 - y0 * (x1 - x0) / (y1 - y0);
+  if (points.size() < 3) return secant;
+  const auto& [x2, y2] = points[2];
+  // Newton's divided differences: y = y0 + d1 (x − x0) + d2 (x − x0)(x − x1).
+  const double d01 = (y1 - y0) / (x1 - x0), d12 = (y2 - y1) / (x2 - x1);
+  const double d2 = (d12 - d01) / (x2 - x0);
+  if (std::abs(d2) < 1e-14 * std::abs(d01) / std::max(std::abs(x0), 1e-300)) return secant;
+  // In powers of u = x − x0: d2 u² + (d01 + d2 (x0 − x1)) u + y0 = 0.
+  const double b = d01 + d2 * (x0 - x1);
+  const double discriminant = b * b - 4.0 * d2 * y0;
+  if (discriminant < 0.0) return secant;
+  const double root_a = x0 + (-b + std::sqrt(discriminant)) / (2.0 * d2);
+  const double root_b = x0 + (-b - std::sqrt(discriminant)) / (2.0 * d2);
+  return std::abs(root_a - secant) < std::abs(root_b - secant) ? root_a : root_b;
+}
+
+// (b) f² → 0 (header).
+void SolveByFrequencies(const model::SystemModel& model, const BucklingSettings& settings, BucklingResult& result) {
+  const VecX reference = model.ReferencePositions();
+  const int rigid = CountRigidBodyModes(model, reference, Linearize(model, reference, 0.0));
+  std::vector<std::pair<double, double>> samples;  // (λ, ω²)
+  auto sample = [&](double load_factor) {
+    double eigenvalue = 0.0;
+    const FrequencyLoadPoint point = FrequencyAt(model, load_factor, rigid, eigenvalue);
+    if (std::isnan(eigenvalue)) return false;
+    result.frequency_table.push_back(point);
+    samples.emplace_back(load_factor, eigenvalue);
+    return true;
+  };
+  const double range = result.load_factor > 0.0 ? result.load_factor : 1.0;
+  const int count = std::max(settings.frequency_points, 2);
+  for (int i = 0; i < count; ++i) sample(range * i / count);
+  if (samples.size() < 2) return;
+  result.unloaded_frequency_hz = result.frequency_table.front().frequency_hz;
+  double estimate = ExtrapolateRoot(samples, samples.back().first);
+  constexpr int kRefinements = 8;
+  for (int i = 0; i < kRefinements && std::isfinite(estimate) && estimate > 0.0; ++i) {
+    if (!sample(estimate) && !sample(0.999 * estimate)) break;
+    const double next = ExtrapolateRoot(samples, estimate);
+    const bool settled = std::abs(next - estimate) <= 1e-6 * std::abs(estimate);
+    estimate = next;
+    if (settled) {
+      result.frequency_method_converged = true;
+      break;
+    }
+  }
+  if (std::isfinite(estimate) && estimate > 0.0) {
+    result.frequency_load_factor = estimate;
+    result.frequency_critical_load = estimate * result.reference_compression;
+  }
+  std::sort(result.frequency_table.begin(), result.frequency_table.end(),
+            [](const auto& a, const auto& b) { return a.load_factor < b.load_factor; });
+}
+
+}  // namespace
+
+BucklingResult RunBuckling(const model::BuiltModel& built, const BucklingSettings& settings) {
+  BucklingResult result;
+  SolveEigenproblem(built.system, settings, result);
+  if (settings.frequency_method) SolveByFrequencies(built.system, settings, result);
+  return result;
+}
+
+}  // namespace drillflex::analyses

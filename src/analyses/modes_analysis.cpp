@@ -1,0 +1,195 @@
+#include "analyses/modes_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/error.hpp"
+#include "solvers/eigen.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+struct EnergySplit {
+  double axial = 0.0, torsional = 0.0, lateral = 0.0;
+};
+
+// Kinetic energy ½ vᵀ M v of a mode split by kind with the lumped nodal masses (method.md §4):
+// body-frame node velocity t_k = Aᵀṙ + ω × u_k + Φ_k η̇ and rotation w_k = ω + Ψ_k η̇; axial
+// ½ m_k t_x², torsional ½ J_x w_x², lateral the rest (t_y, t_z with the fluid mass, and the
+// bending rotations w_y, w_z). "Axial" is along the local body axis.
+EnergySplit SplitKineticEnergy(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
+                               const VecX& v) {
+  EnergySplit split;
+  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+    const model::Body& body = model.bodies()[b];
+    const cms::ReducedBody& reduced = *body.reduced;
+    const model::BodyPose& pose = poses[b];
+    const Vec3 velocity = pose.A.transpose() * v.segment<3>(body.v_offset);
+    const Vec3 omega = v.segment<3>(body.v_offset + 3);
+    const auto eta_dot = v.segment(body.v_offset + 6, body.flexible_count);
+    for (int k = 0; k < body.node_count(); ++k) {
+      const Vec3 t = velocity + omega.cross(pose.NodeOffset(body, k)) + reduced.node_translation_modes[k] * eta_dot;
+      const Vec3 w = omega + reduced.node_rotation_modes[k] * eta_dot;
+      const Mat3 mass = reduced.NodeTranslationalMass(k);
+      const Mat3& inertia = reduced.node_rotary_inertia[k];
+      split.axial += 0.5 * mass(0, 0) * t.x() * t.x();
+      split.lateral += 0.5 * (mass(1, 1) * t.y() * t.y() + mass(2, 2) * t.z() * t.z());
+      split.torsional += 0.5 * inertia(0, 0) * w.x() * w.x();
+      const Eigen::Vector2d bending = w.tail<2>();
+      split.lateral += 0.5 * bending.dot(inertia.bottomRightCorner<2, 2>() * bending);
+    }
+  }
+  return split;
+}
+
+// Mode shape per station in the string frame, scaled to max |displacement| = 1 (a torsional
+// mode: max |rotation| = 1), with the largest component of the largest entry positive.
+void FillShape(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
+               const std::vector<Station>& stations, ModeResult& mode) {
+  mode.displacement.clear();
+  mode.rotation.clear();
+  for (const Station& station : stations) {
+    const NodeVelocity node = MapToNode(model.bodies()[station.body], poses[station.body], mode.vector, station.node);
+    mode.displacement.push_back(node.translation);
+    mode.rotation.push_back(node.rotation);
+  }
+  const std::vector<Vec3>& measure = mode.kind == ModeKind::Torsional ? mode.rotation : mode.displacement;
+  std::size_t largest = 0;
+  for (std::size_t i = 0; i < measure.size(); ++i) {
+    if (measure[i].norm() > measure[largest].norm()) largest = i;
+  }
+  if (measure.empty() || measure[largest].norm() == 0.0) return;
+  Eigen::Index component = 0;
+  measure[largest].cwiseAbs().maxCoeff(&component);
+  const double scale = (measure[largest][component] < 0.0 ? -1.0 : 1.0) / measure[largest].norm();
+  for (Vec3& d : mode.displacement) d *= scale;
+  for (Vec3& r : mode.rotation) r *= scale;
+}
+
+ModeResult DescribeMode(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
+                        const std::vector<Station>& stations, double eigenvalue, const VecX& vector) {
+  ModeResult mode;
+  mode.eigenvalue = eigenvalue;
+  mode.frequency_hz = eigenvalue > 0.0 ? std::sqrt(eigenvalue) / (2.0 * kPi) : 0.0;
+  mode.vector = vector;
+  const EnergySplit split = SplitKineticEnergy(model, poses, vector);
+  const double total = split.axial + split.torsional + split.lateral;
+  if (total > 0.0) {
+    mode.axial_fraction = split.axial / total;
+    mode.torsional_fraction = split.torsional / total;
+    mode.lateral_fraction = split.lateral / total;
+  }
+  mode.kind = ModeKind::Lateral;
+  if (mode.axial_fraction > std::max(mode.lateral_fraction, mode.torsional_fraction)) mode.kind = ModeKind::Axial;
+  if (mode.torsional_fraction > std::max(mode.lateral_fraction, mode.axial_fraction)) mode.kind = ModeKind::Torsional;
+  FillShape(model, poses, stations, mode);
+  return mode;
+}
+
+// The `rigid` eigenvalues of smallest |ω²| are the rigid-body modes.
+std::vector<bool> RigidFlags(const VecX& eigenvalues, int rigid) {
+  std::vector<Eigen::Index> order(eigenvalues.size());
+  for (Eigen::Index i = 0; i < eigenvalues.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](Eigen::Index a, Eigen::Index b) { return std::abs(eigenvalues[a]) < std::abs(eigenvalues[b]); });
+  std::vector<bool> flags(eigenvalues.size(), false);
+  for (int i = 0; i < rigid && i < static_cast<int>(order.size()); ++i) flags[order[i]] = true;
+  return flags;
+}
+
+}  // namespace
+
+int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system) {
+  const auto poses = model.Poses(q);
+  Vec3 centroid = Vec3::Zero();
+  for (const model::BodyPose& pose : poses) centroid += pose.r;
+  if (!poses.empty()) centroid /= static_cast<double>(poses.size());
+  MatX fields = MatX::Zero(model.num_velocities(), 6);  // columns: t_x, t_y, t_z, θ_x, θ_y, θ_z
+  for (std::size_t b = 0; b < poses.size(); ++b) {
+    const int offset = model.bodies()[b].v_offset;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Vec3 unit = Vec3::Unit(axis);
+      fields.block<3, 1>(offset, axis) = unit;
+      fields.block<3, 1>(offset, 3 + axis) = unit.cross(poses[b].r - centroid);
+      fields.block<3, 1>(offset + 3, 3 + axis) = poses[b].A.transpose() * unit;
+    }
+  }
+  const MatX stiffness = fields.transpose() * (system.stiffness * fields);
+  const MatX mass = fields.transpose() * (system.mass * fields);
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(0.5 * (stiffness + stiffness.transpose()),
+                                                        0.5 * (mass + mass.transpose()));
+  double scale = 0.0;
+  for (Eigen::Index i = 0; i < system.stiffness.rows(); ++i) {
+    const double m = system.mass.coeff(i, i);
+    if (m > 0.0) scale = std::max(scale, std::abs(system.stiffness.coeff(i, i)) / m);
+  }
+  int rigid = 0;
+  for (Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i) {
+    if (std::abs(solver.eigenvalues()[i]) < 1e-9 * scale) ++rigid;
+  }
+  return rigid;
+}
+
+const char* ModeKindName(ModeKind kind) {
+  switch (kind) {
+    case ModeKind::All: return "all";
+    case ModeKind::Lateral: return "lateral";
+    case ModeKind::Axial: return "axial";
+    case ModeKind::Torsional: return "torsional";
+  }
+  return "unknown";
+}
+
+LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, double load_factor) {
+  const VecX zero = VecX::Zero(model.num_velocities());
+  const SparseMat tangent = model.IterationMatrix(0.0, q, zero, zero, load_factor, 1.0, 0.0, 0.0);
+  const SparseMat mass = model.MassMatrix(q);
+  LinearizedSystem system;
+  system.stiffness = (0.5 * (tangent + SparseMat(tangent.transpose()))).pruned();
+  system.mass = (0.5 * (mass + SparseMat(mass.transpose()))).pruned();
+  return system;
+}
+
+ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings,
+                         double load_factor) {
+  if (settings.count < 1) throw LogicError("ComputeModes: count must be at least 1");
+  const LinearizedSystem system = Linearize(model, q, load_factor);
+  const int n = model.num_velocities();
+  const auto poses = model.Poses(q);
+  const std::vector<Station> stations = StringStations(model);
+  const bool all = settings.kind == ModeKind::All;
+  const int bound = std::min(n, std::max(kMaxModesSearched, settings.count));
+  int solve_count = all ? std::min(n, settings.count) : std::min(bound, std::max(3 * settings.count, 12));
+  ModesResult result;
+  for (const Station& station : stations) result.s.push_back(station.s);
+  const int rigid = CountRigidBodyModes(model, q, system);
+  if (all) solve_count = std::min(n, settings.count + rigid);
+  while (true) {
+    const solvers::ModalResult modal = solvers::SolveModes(system.stiffness, system.mass, solve_count);
+    const std::vector<bool> rigid_flags = RigidFlags(modal.eigenvalues, rigid);
+    result.modes.clear();
+    result.rigid_body_modes = 0;
+    for (Eigen::Index j = 0; j < modal.eigenvalues.size(); ++j) {
+      ModeResult mode = DescribeMode(model, poses, stations, modal.eigenvalues[j], modal.vectors.col(j));
+      mode.rigid_body = rigid_flags[j];
+      if (mode.rigid_body) mode.frequency_hz = 0.0;
+      if (!all && (mode.rigid_body || mode.kind != settings.kind)) continue;
+      if (mode.rigid_body) ++result.rigid_body_modes;
+      result.modes.push_back(std::move(mode));
+      if (static_cast<int>(result.modes.size()) == settings.count) break;
+    }
+    if (static_cast<int>(result.modes.size()) >= settings.count || solve_count >= bound) break;
+    solve_count = std::min(bound, 2 * solve_count);
+  }
+  std::stable_sort(result.modes.begin(), result.modes.end(),
+                   [](const ModeResult& a, const ModeResult& b) { return a.eigenvalue < b.eigenvalue; });
+  return result;
+}
+
+ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesSettings& settings) {
+  return ComputeModes(built.system, q, settings, 1.0);
+}
+
+}  // namespace drillflex::analyses

@@ -1,0 +1,157 @@
+#include "analyses/static_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "analyses/dynamic_relaxation.hpp"
+#include "core/error.hpp"
+#include "model/internal_forces.hpp"
+#include "model/spring_elements.hpp"
+#include "model/static_problem.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+// Newton iterations per load step: the case's max_iterations, capped (a Newton step that has not
+// converged in this many iterations is better cut than continued).
+constexpr int kMaxIterationsPerLoadStep = 50;
+
+// Stresses at the outer fibre of a hollow round section (c = OD/2), the usual combined-stress
+// check of drill-string design (e.g. API RP 7G §A.8; Timoshenko & Gere, Mechanics of Materials):
+//   bending σ_b = M c / I, normal σ = |N|/A + σ_b (the worst fibre), torsional τ = T c / J,
+//   von Mises σ_vm = sqrt(σ² + 3 τ²). Transverse shear stress is zero at the outer fibre.
+void AddStresses(const model::Body& body, StaticNodeResult& node) {
+  const fe::HollowSection& section = body.reduced->spec.section;
+  const double c = 0.5 * section.outer_diameter;
+  node.bending_stress = node.bending_moment * c / section.second_moment();
+  const double normal = std::abs(node.axial_force) / section.area() + node.bending_stress;
+  const double shear = std::abs(node.torque) * c / section.polar_moment();
+  node.von_mises_stress = std::sqrt(normal * normal + 3.0 * shear * shear);
+}
+
+// The node of the support's body at which the support acts: the node whose mode rows map the
+// support's reaction (R_t, R_r) to the modal part of its generalized force,
+// g_η = −(Φ_kᵀ Aᵀ A_g R_t + Ψ_kᵀ R_r) (model/coupling_kinematics.hpp with the ground as side 1,
+// A_g the body's reference frame). Evaluated at a state with a small modal perturbation so that
+// the reaction is not zero.
+int SupportNode(const model::SystemModel& model, const model::SupportElement& support, const VecX& q) {
+  const model::Body& body = *support.bodies()[0];
+  VecX dv = VecX::Zero(model.num_velocities());
+  for (int j = 0; j < body.flexible_count; ++j) dv[body.v_offset + 6 + j] = 1e-4 * (1.0 + 0.37 * j);
+  const VecX perturbed = model.Increment(q, dv);
+  const auto poses = model.Poses(perturbed);
+  const VecX v = VecX::Zero(model.num_velocities());
+  const model::ElementState state = model.StateOf(support, poses, v, 0.0, 1.0);
+  model::ElementContribution contribution;
+  contribution.force = VecX::Zero(support.local_size());
+  support.Evaluate(state, false, contribution);
+  const Vec6 reaction = support.Reaction(state);
+  const model::BodyPose& pose = *state.poses[0];
+  const Mat3 ground = body.reference_orientation.toRotationMatrix();
+  const VecX modal_force = contribution.force.tail(body.flexible_count);
+  int best = 0;
+  double best_error = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < body.node_count(); ++k) {
+    const VecX predicted = -(body.reduced->node_translation_modes[k].transpose() * (pose.A.transpose() * ground *
+                                                                                    reaction.head<3>()) +
+                             body.reduced->node_rotation_modes[k].transpose() * reaction.tail<3>());
+    const double error = (predicted - modal_force).norm();
+    if (error < best_error) {
+      best_error = error;
+      best = k;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+solvers::NewtonOptions DefaultNewtonOptions() {
+  solvers::NewtonOptions options;
+  options.increment_tolerance = 1e-10;
+  options.line_search.enabled = false;
+  return options;
+}
+
+std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q, double load_factor) {
+  const auto poses = model.Poses(q);
+  const auto forces = model::ComputeInternalForces(model, q, load_factor);
+  const auto joints = model::JointInternalForces(model, q, VecX::Zero(model.num_velocities()));
+  std::vector<StaticNodeResult> nodes;
+  for (const Station& station : StringStations(model)) {
+    const model::Body& body = model.bodies()[station.body];
+    const NodeMotion motion = ComputeNodeMotion(body, poses[station.body], station.node);
+    StaticNodeResult node;
+    node.s = station.s;
+    node.position = motion.position;
+    node.displacement = motion.displacement;
+    node.rotation = motion.rotation;
+    node.lateral_offset = motion.displacement.tail<2>().norm();
+    // Internal forces rotated from the body frame (at a joint: the lower body's) to the string frame.
+    const Mat3 frame = body.reference_orientation.toRotationMatrix();
+    const bool joint = station.lower_body >= 0;
+    const model::SectionForces& section = joint ? joints[station.lower_body] : forces[station.body][station.node];
+    const Mat3 to_string = frame.transpose() * poses[joint ? station.lower_body : station.body].A;
+    node.force = to_string * section.force;
+    node.moment = to_string * section.moment;
+    node.axial_force = node.force.x();
+    node.torque = node.moment.x();
+    node.shear_force = node.force.tail<2>().norm();
+    node.bending_moment = node.moment.tail<2>().norm();
+    AddStresses(body, node);
+    nodes.push_back(node);
+  }
+  return nodes;
+}
+
+std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q) {
+  const model::SystemModel& model = built.system;
+  const auto poses = model.Poses(q);
+  const VecX v = VecX::Zero(model.num_velocities());
+  std::vector<SupportReaction> reactions;
+  for (int index : built.support_elements) {
+    const auto* support = dynamic_cast<const model::SupportElement*>(model.elements().at(index).get());
+    if (support == nullptr) throw LogicError(fmt::format("SupportReactions: element {} is not a support", index));
+    const Vec6 reaction = support->Reaction(model.StateOf(*support, poses, v, 0.0, 1.0));
+    const model::Body& body = *support->bodies()[0];
+    SupportReaction result;
+    result.s = body.s_start + body.reduced->node_positions[SupportNode(model, *support, q)].x();
+    result.force = reaction.head<3>();
+    result.moment = reaction.tail<3>();
+    reactions.push_back(result);
+  }
+  return reactions;
+}
+
+StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings) {
+  StaticResult result;
+  if (settings.method == StaticMethod::DynamicRelaxation) {
+    RelaxationOptions relaxation;
+    relaxation.max_steps = 10 * std::max(settings.max_iterations, 1);
+    const RelaxationResult relaxed = SolveByDynamicRelaxation(built.system, relaxation);
+    result.converged = relaxed.converged;
+    result.q = relaxed.q;
+    result.iterations = relaxed.steps;
+    result.load_steps = 1;
+    result.residual_norm = relaxed.residual_norm;
+  } else {
+    model::StaticModelProblem problem(built.system);
+    solvers::NewtonOptions options = DefaultNewtonOptions();
+    options.max_iterations = std::clamp(settings.max_iterations, 1, kMaxIterationsPerLoadStep);
+    if (built.force_scale > 0.0) options.force_scale = built.force_scale;
+    const solvers::StaticResult solved = solvers::SolveStatic(problem, built.system.ReferencePositions(), options);
+    result.converged = solved.converged;
+    result.q = solved.q;
+    result.iterations = solved.iterations;
+    result.load_steps = solved.load_steps;
+    result.residual_norm = solved.residual_norm;
+  }
+  result.nodes = StaticNodeResults(built.system, result.q, 1.0);
+  result.reactions = SupportReactions(built, result.q);
+  return result;
+}
+
+}  // namespace drillflex::analyses
