@@ -64,8 +64,17 @@ VecX BodyVelocityForces(const Body& body, const BodyPose& pose, const VecX& velo
   return forces;
 }
 
+namespace {
+// EA/L of a body, N/m.
+double AxialStiffness(const Body& body) { return body.axial_rigidity / body.length(); }
+}  // namespace
+
 double BodyAxialForce(const Body& body, const BodyPose& pose) {
-  return body.axial_force_row.dot(pose.eta);
+  // N = EA ε with the mean axial strain including the foreshortening of the bending:
+  // ε L = Δu + ½ ∫(v′² + w′²) dx = Δu + ½ ηᵀ K_G,ff η (K_G per unit axial force).
+  const VecX& eta = pose.eta;
+  return body.axial_force_row.dot(eta) +
+         0.5 * AxialStiffness(body) * eta.dot(body.reduced->modal_geometric_stiffness * eta);
 }
 
 void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& velocity, VecX& residual) {
@@ -74,7 +83,8 @@ void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& veloci
   const VecX& eta = pose.eta;
   const double axial_force = BodyAxialForce(body, pose);
   const VecX geometric = reduced.modal_geometric_stiffness * eta;
-  // ∂V/∂η = K_ff η + N K_G η + ½ (ηᵀ K_G η) ∂N/∂η.
+  // V = ½ηᵀK_ffη + ½(EA/L)[(Δu + ½ηᵀGη)² − Δu²] (the axial part of K_ff is ½(EA/L)Δu²), so
+  // ∂V/∂η = K_ff η + N G η + ½ (ηᵀ G η) ∂Δu-row, with N the corrected axial force above.
   residual.tail(nf).noalias() += reduced.modal_stiffness * eta + axial_force * geometric +
                                  0.5 * eta.dot(geometric) * body.axial_force_row +
                                  reduced.modal_damping * velocity.tail(nf);
@@ -87,8 +97,10 @@ void AddElasticMatrices(const Body& body, const BodyPose& pose, double cK, doubl
   if (cK != 0.0) {
     const double axial_force = BodyAxialForce(body, pose);
     const VecX geometric = reduced.modal_geometric_stiffness * pose.eta;
+    // ∂/∂η of the force above, with ∂N/∂η = row + (EA/L) G η.
     block.noalias() += cK * (reduced.modal_stiffness + axial_force * reduced.modal_geometric_stiffness +
                              geometric * body.axial_force_row.transpose() +
+                             AxialStiffness(body) * geometric * geometric.transpose() +
                              body.axial_force_row * geometric.transpose());
   }
   if (cD != 0.0) block.noalias() += cD * reduced.modal_damping;
@@ -97,8 +109,9 @@ void AddElasticMatrices(const Body& body, const BodyPose& pose, double cK, doubl
 double BodyElasticEnergy(const Body& body, const BodyPose& pose) {
   const cms::ReducedBody& reduced = *body.reduced;
   const VecX& eta = pose.eta;
-  return 0.5 * eta.dot(reduced.modal_stiffness * eta) +
-         0.5 * BodyAxialForce(body, pose) * eta.dot(reduced.modal_geometric_stiffness * eta);
+  const double bending = eta.dot(reduced.modal_geometric_stiffness * eta);  // ηᵀGη = ∫(v′² + w′²)
+  return 0.5 * eta.dot(reduced.modal_stiffness * eta) + 0.5 * body.axial_force_row.dot(eta) * bending +
+         AxialStiffness(body) * bending * bending / 8.0;
 }
 
 double BodyKineticEnergy(const Body& body, const BodyPose& pose, const VecX& velocity) {

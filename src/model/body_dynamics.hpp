@@ -18,11 +18,14 @@ MatX BodyMassMatrix(const Body& body, const BodyPose& pose);
 // Σ_k L_kᵀ M_k (ω×(ω×u_k) + 2 ω×Φ_k η̇) + Ψ_kᵀ-mapped (ω_k × J_k ω_k).
 VecX BodyVelocityForces(const Body& body, const BodyPose& pose, const VecX& velocity);
 
-// The body's mean axial force N = axial_force_rowᵀ η, N (tension positive).
+// The body's mean axial force N = axial_force_rowᵀ η + ½ (EA/L) ηᵀ K_G,ff η, N (tension positive):
+// the elongation of the end nodes plus the foreshortening of the bending.
 double BodyAxialForce(const Body& body, const BodyPose& pose);
 
 // Elastic and modal damping forces on the modal rows, from the potential
-//   V = ½ ηᵀ K_ff η + ½ N(η) ηᵀ K_G,ff η  (geometric stiffness of the body's own axial force)
+//   V = ½ ηᵀ K_ff η + ½ N_lin ηᵀ G η + (EA/8L) (ηᵀ G η)²,  G = K_G,ff, N_lin = rowᵀη,
+// the energy of the mean axial strain (Δu + ½ηᵀGη)/L (geometric stiffness of the body's own
+// axial force, with the foreshortening that keeps a free bent body free of axial force)
 // plus D_ff η̇. Added into `residual` (size 6 + n_f).
 void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& velocity, VecX& residual);
 

@@ -77,7 +77,7 @@ struct ModelSettings {
   double body_length = 3.0;      // m, longest flexible body
   int elements_per_body = 10;
   int modes_per_body = 6;        // H: fixed-interface normal modes per body
-  double coupling_factor = 1000.0;  // measured: docs/validation.md (coupling study)
+  double coupling_factor = 1000.0;  // measured: docs/model-study.md
   double structural_damping = 0.01;  // modal damping ratio
   ContactSettings contact;
   MassKind mass = MassKind::Consistent;

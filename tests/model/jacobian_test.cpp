@@ -2,6 +2,7 @@
 // of the model's own residual (solvers::FiniteDifferenceIterationMatrix).
 #include <gtest/gtest.h>
 
+#include "model/body_dynamics.hpp"
 #include "model/static_problem.hpp"
 #include "model_test_support.hpp"
 #include "solvers/problem.hpp"
@@ -94,6 +95,79 @@ INSTANTIATE_TEST_SUITE_P(Model, JacobianTest,
                            for (char& c : name) if (c == ' ') c = '_';
                            return name;
                          });
+
+}  // namespace
+}  // namespace drillflex::model
+
+namespace drillflex::model {
+namespace {
+
+// The elastic forces of one body at large modal amplitudes (where the foreshortening term of the
+// axial strain matters) against central differences, and the force as the gradient of the energy.
+TEST(ElasticForces, HessianAndGradientAtLargeDeflection) {
+  cms::ReductionCache cache;
+  const BuiltModel built = BuildSystemModel(testing::RodInput(1, 10, 6), cache);
+  const Body& body = built.system.bodies().front();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  BodyPose pose = PoseOf(body, built.system.ReferencePositions());
+  for (int i = 0; i < pose.eta.size(); ++i) pose.eta[i] = 0.5 * u(rng);  // ~cm-scale deflections
+  const int n = body.velocity_count();
+  const VecX zero = VecX::Zero(n);
+  auto force = [&](const VecX& eta) {
+    BodyPose p = pose;
+    p.eta = eta;
+    VecX r = VecX::Zero(n);
+    AddElasticForces(body, p, zero, r);
+    return VecX(r.tail(body.flexible_count));
+  };
+  MatX analytic = MatX::Zero(n, n);
+  AddElasticMatrices(body, pose, 1.0, 0.0, analytic);
+  const int nf = body.flexible_count;
+  MatX numeric(nf, nf);
+  VecX gradient(nf);
+  const double h = 1e-6;
+  for (int j = 0; j < nf; ++j) {
+    VecX plus = pose.eta, minus = pose.eta;
+    plus[j] += h;
+    minus[j] -= h;
+    numeric.col(j) = (force(plus) - force(minus)) / (2 * h);
+    BodyPose pp = pose, pm = pose;
+    pp.eta = plus;
+    pm.eta = minus;
+    gradient[j] = (BodyElasticEnergy(body, pp) - BodyElasticEnergy(body, pm)) / (2 * h);
+  }
+  EXPECT_LT((analytic.bottomRightCorner(nf, nf) - numeric).norm() / numeric.norm(), 1e-7);
+  EXPECT_LT((gradient - force(pose.eta)).norm() / gradient.norm(), 1e-7);
+}
+
+// A body bent by a lateral modal deflection whose axial coordinates relax freely must carry no
+// axial force: the foreshortening ½∫v′² is taken up by the end nodes coming together.
+TEST(ElasticForces, BentBodyWithFreeAxialEndCarriesNoAxialForce) {
+  cms::ReductionCache cache;
+  const BuiltModel built = BuildSystemModel(testing::RodInput(1, 10, 6), cache);
+  const Body& body = built.system.bodies().front();
+  BodyPose pose = PoseOf(body, built.system.ReferencePositions());
+  const int nf = body.flexible_count;
+  // Bend the body with every mode that has no axial end motion, then solve the axial force = 0
+  // condition along the axial-force row (the elongation direction) by Newton on the scalar N.
+  const VecX& row = body.axial_force_row;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < nf; ++i) pose.eta[i] = 0.3 * u(rng);
+  pose.eta -= row * (row.dot(pose.eta) / row.squaredNorm());  // no elongation yet
+  const double bent_only = BodyAxialForce(body, pose);
+  EXPECT_GT(bent_only, 0.0);  // bending alone would stretch the axis: the foreshortening is counted
+  for (int it = 0; it < 20; ++it) {
+    const double n = BodyAxialForce(body, pose);
+    // ∂N/∂α along the row direction at α: row·row + (EA/L) (Gη)·row.
+    const VecX direction = row / row.norm();
+    const double slope = row.dot(direction) + body.axial_rigidity / body.length() *
+                                                 (body.reduced->modal_geometric_stiffness * pose.eta).dot(direction);
+    pose.eta -= direction * (n / slope);
+  }
+  EXPECT_LT(std::abs(BodyAxialForce(body, pose)), 1e-9 * bent_only);
+}
 
 }  // namespace
 }  // namespace drillflex::model
