@@ -80,31 +80,77 @@ void FillBuckledMode(const model::SystemModel& model, const VecX& q, const VecX&
   for (Vec3& r : result.mode_rotation) r /= largest;
 }
 
-// (a) The linearized eigenproblem (header). Returns the multipliers; sets the reference data.
+// The eigenproblem with K_G from the equilibrium at λ_ref: (K_0 + μ K_G) x = 0,
+// K_G = (K_T(q_ref, λ_ref) − K_0) / λ_ref.
+struct LinearizedBuckling {
+  bool converged = false;  // the static equilibrium at λ_ref was found
+  double reference_factor = 0.0;
+  VecX q;
+  solvers::BucklingResult buckling;
+  double multiplier() const { return buckling.multipliers.size() > 0 ? buckling.multipliers[0] : std::nan(""); }
+};
+
+LinearizedBuckling BucklingAt(const model::SystemModel& model, const SparseMat& unloaded, double reference_factor,
+                              int count) {
+  LinearizedBuckling result;
+  result.reference_factor = reference_factor;
+  const Equilibrium loaded = SolveAt(model, reference_factor);
+  if (!loaded.converged) return result;
+  result.converged = true;
+  result.q = loaded.q;
+  const SparseMat geometric =
+      (SparseMat(Linearize(model, loaded.q, reference_factor).stiffness - unloaded) / reference_factor).pruned();
+  result.buckling = solvers::SolveBuckling(unloaded, geometric, count);
+  return result;
+}
+
+// (a) The linearized eigenproblem (header), with λ_ref iterated to μ by the secant method on
+// g(λ_ref) = μ(λ_ref) − λ_ref.
 void SolveEigenproblem(const model::SystemModel& model, const BucklingSettings& settings, BucklingResult& result) {
   const VecX reference = model.ReferencePositions();
   const SparseMat unloaded = Linearize(model, reference, 0.0).stiffness;
-  // The reference state: λ_ref = 1, halved while the equilibrium cannot be found.
-  double reference_factor = 1.0;
-  Equilibrium loaded = SolveAt(model, reference_factor);
-  while (!loaded.converged && reference_factor > 1.0 / 64.0) {
-    reference_factor *= 0.5;
-    loaded = SolveAt(model, reference_factor);
+  const int count = std::max(settings.modes, 1);
+  // The first reference state: λ_ref = 1, halved while the equilibrium cannot be found.
+  LinearizedBuckling current = BucklingAt(model, unloaded, 1.0, count);
+  while (!current.converged && current.reference_factor > 1.0 / 64.0) {
+    current = BucklingAt(model, unloaded, 0.5 * current.reference_factor, count);
   }
-  if (!loaded.converged) throw SolverError("buckling: no static equilibrium found even at 1/64 of the loads");
-  result.reference_load_factor = reference_factor;
-  result.reference_compression = MaxCompression(model, loaded.q, reference_factor) / reference_factor;
-  // K_G per unit load factor: (K_T(q_ref, λ_ref) − K_0) / λ_ref.
-  const SparseMat geometric =
-      (SparseMat(Linearize(model, loaded.q, reference_factor).stiffness - unloaded) / reference_factor).pruned();
-  const solvers::BucklingResult buckling = solvers::SolveBuckling(unloaded, geometric, std::max(settings.modes, 1));
-  if (buckling.multipliers.size() == 0) {
+  if (!current.converged) throw SolverError("buckling: no static equilibrium found even at 1/64 of the loads");
+  result.reference_compression =
+      MaxCompression(model, current.q, current.reference_factor) / current.reference_factor;
+  if (std::isnan(current.multiplier())) {
     throw SolverError("buckling: the case's loads do not buckle the string (no positive load multiplier)");
   }
+  LinearizedBuckling previous;
+  constexpr int kSecantSteps = 12;
+  constexpr double kTolerance = 1e-7;
+  for (int step = 0; step < kSecantSteps; ++step) {
+    const double g = current.multiplier() - current.reference_factor;
+    if (std::abs(g) <= kTolerance * current.multiplier()) break;
+    double next = current.multiplier();  // fixed-point step first, then secant
+    if (previous.converged && !std::isnan(previous.multiplier())) {
+      const double g_previous = previous.multiplier() - previous.reference_factor;
+      if (g != g_previous) {
+        next = current.reference_factor - g * (current.reference_factor - previous.reference_factor) / (g - g_previous);
+      }
+    }
+    if (!(next > 0.0) || !std::isfinite(next)) break;
+    LinearizedBuckling trial = BucklingAt(model, unloaded, next, count);
+    // Beyond a limit point of a nonlinear prebuckling path: step back halfway.
+    for (int cut = 0; cut < 4 && (!trial.converged || std::isnan(trial.multiplier())); ++cut) {
+      next = 0.5 * (next + current.reference_factor);
+      trial = BucklingAt(model, unloaded, next, count);
+    }
+    if (!trial.converged || std::isnan(trial.multiplier())) break;
+    previous = std::move(current);
+    current = std::move(trial);
+  }
+  const solvers::BucklingResult& buckling = current.buckling;
+  result.reference_load_factor = current.reference_factor;
   result.load_factors.assign(buckling.multipliers.data(), buckling.multipliers.data() + buckling.multipliers.size());
   result.load_factor = result.load_factors.front();
   result.critical_load = result.load_factor * result.reference_compression;
-  FillBuckledMode(model, reference, buckling.modes.col(0), result);
+  FillBuckledMode(model, current.q, buckling.modes.col(0), result);
 }
 
 // ω² (signed) of the lowest mode above the `rigid` rigid-body modes at λ, or NaN if no equilibrium.
@@ -146,6 +192,9 @@ double ExtrapolateRoot(std::vector<std::pair<double, double>> points, double est
   return std::abs(root_a - secant) < std::abs(root_b - secant) ? root_a : root_b;
 }
 
+// Successive f² → 0 estimates that agree to this (relative) count as converged.
+constexpr double kFrequencyTolerance = 1e-4;
+
 // (b) f² → 0 (header).
 void SolveByFrequencies(const model::SystemModel& model, const BucklingSettings& settings, BucklingResult& result) {
   const VecX reference = model.ReferencePositions();
@@ -165,16 +214,14 @@ void SolveByFrequencies(const model::SystemModel& model, const BucklingSettings&
   if (samples.size() < 2) return;
   result.unloaded_frequency_hz = result.frequency_table.front().frequency_hz;
   double estimate = ExtrapolateRoot(samples, samples.back().first);
-  constexpr int kRefinements = 8;
-  for (int i = 0; i < kRefinements && std::isfinite(estimate) && estimate > 0.0; ++i) {
-    if (!sample(estimate) && !sample(0.999 * estimate)) break;
+  // Refinement just below the estimate, where ω² is still far above its round-off (the stiff
+  // couplings put ~1e-4 ω₀² of noise on ω² near zero for long soft strings): at 0.9, 0.97 and
+  // 0.99 of it, re-extrapolating through the three samples nearest each time.
+  for (double fraction : {0.9, 0.97, 0.99}) {
+    if (!std::isfinite(estimate) || estimate <= 0.0 || !sample(fraction * estimate)) break;
     const double next = ExtrapolateRoot(samples, estimate);
-    const bool settled = std::abs(next - estimate) <= 1e-6 * std::abs(estimate);
+    result.frequency_method_converged = std::abs(next - estimate) <= kFrequencyTolerance * std::abs(estimate);
     estimate = next;
-    if (settled) {
-      result.frequency_method_converged = true;
-      break;
-    }
   }
   if (std::isfinite(estimate) && estimate > 0.0) {
     result.frequency_load_factor = estimate;

@@ -1,10 +1,21 @@
 // Buckling (method.md §9.3), two ways:
 //  (a) the linearized buckling eigenproblem (K_0 + μ K_G) x = 0 with K_0 the tangent at the
 //      reference placement under no load and K_G = (K_T(q_ref, λ_ref) − K_0)/λ_ref, q_ref the
-//      static equilibrium at load factor λ_ref (1, or smaller if the string buckles before 1);
-//      μ is the multiplier of the case's loads at buckling (solvers::SolveBuckling);
+//      static equilibrium at load factor λ_ref; μ is the multiplier of the case's loads at
+//      buckling (solvers::SolveBuckling). λ_ref starts at 1 (halved while no equilibrium is
+//      found) and is then iterated to μ by the secant method on μ(λ_ref) − λ_ref: the tangent is
+//      NOT linear in the load here, because the stiff coupling and support springs change their
+//      lever arms with the bodies' axial shortening (terms ~k·u·δu, tiny relative to k but large
+//      against the geometric stiffness once condensed onto the soft buckling directions).
+//      Extrapolating K_G from λ_ref = 1 was 20–67 % low on the V2 columns; at λ_ref = μ the
+//      problem is exact, K_0 + μ (K_T(μ) − K_0)/μ = K_T(μ), i.e. μ is where the tangent of the
+//      prebuckling path becomes singular. Higher multipliers (`modes` > 1) are those of the last
+//      K_G, approximate;
 //  (b) the paper's Figure 5: the lowest non-zero natural frequency f against the load factor,
-//      f² extrapolated to zero.
+//      f² extrapolated to zero: ω² (signed) at frequency_points load factors evenly from 0 to
+//      below the estimate of (a) (or to 1), the root of a quadratic through the last three, then
+//      samples at 0.9, 0.97 and 0.99 of the current root estimate, re-extrapolated each time;
+//      converged when the last two estimates agree to 1e-4.
 // The critical load is reported as the largest axial compression in the string at λ = 1 times
 // the multiplier (prebuckling is linear).
 #pragma once
@@ -29,7 +40,7 @@ struct BucklingResult {
   double load_factor = 0.0;       // μ_cr: the case's loads × μ_cr buckle the string
   double critical_load = 0.0;     // compression at λ = 1 × μ_cr, N
   std::vector<double> load_factors;  // the lowest `modes` multipliers, ascending
-  double reference_load_factor = 1.0;  // λ_ref used for K_G
+  double reference_load_factor = 1.0;  // the final λ_ref of K_G (≈ μ_cr when iterated)
   double reference_compression = 0.0;  // largest axial compression at λ = 1, N
   // (b) frequency against load
   bool frequency_method_converged = false;

@@ -92,10 +92,11 @@ void RebuildAxialForces(double mean_axial_force, const std::vector<double>& axia
   }
 }
 
-// The body's mean membrane force N̄ = N(η) + (EA/L) ½ ηᵀ K_G,ff η (header).
+// The body's mean membrane force N̄ (header): the model's own BodyAxialForce.
 double MembraneForce(const Body& body, const VecX& eta) {
-  const double shortening = 0.5 * eta.dot(body.reduced->modal_geometric_stiffness * eta);  // ½ ∫ v'² + w'² dx, m
-  return body.axial_force_row.dot(eta) + body.axial_rigidity / body.length() * shortening;
+  BodyPose pose;
+  pose.eta = eta;
+  return BodyAxialForce(body, pose);
 }
 
 std::vector<SectionForces> ForcesOfBody(const Body& body, const ElementMatrices& matrices, const VecX& eta,

@@ -5,12 +5,10 @@
 // stiffness of the body's mean membrane force N̄ (below): the P-delta part of the shear and end
 // moments (in the body frame the shear includes N̄ times the element's slope).
 //
-// Why N̄ and not the model's N(η) = axial_force_rowᵀ η: the body's rigid-body equations balance
-// the external forces exactly on the deformed geometry, i.e. with the axial force the couplings
-// really transmit, N̄. With N(η) the body-end shear misses (N̄ − N(η)) × chord slope (4 N of
-// 250 N in tests/analyses/internal_forces_test.cpp at half the Euler load); with N̄ the body ends
-// agree with the coupling forces. (The model's bending terms use N(η): its potential lacks the
-// quartic von Kármán term (EA/8L)(ηᵀ K_G,ff η)², a model-layer matter.)
+// N̄ is the model's BodyAxialForce (model/body_dynamics.hpp), the force the body transmits
+// along its axis. The body's rigid-body equations balance the external forces on the deformed
+// geometry with it, so the body-end shear includes N̄ × chord slope and agrees with the coupling
+// forces (tests/analyses/internal_forces_test.cpp).
 //
 // Sign convention: the internal force at a section is the force (and moment about the section's
 // centre) that the part of the string ABOVE the section (larger s, toward the top) exerts on the
@@ -47,16 +45,12 @@ struct SectionForces {
 // Internal forces at every node of every body: result[b][k] for node k of body b. `load_factor`
 // scales the dead nodal loads (NodalLoadElement) used for the axial force inside a body (below).
 //
-// Axial force inside a body. (1) The mean: the model's elastic potential (model/body_dynamics.hpp)
-//   V = ½ ηᵀ K_ff η + ½ N(η) ηᵀ K_G,ff η,  N(η) = axial_force_rowᵀ η = EA/L (u_x(L) − u_x(0)),
-// is the von Kármán energy ½ EA/L (Δu + ½ ∫ v'² + w'² dx)² + bending to third order, so the force
-// the body transmits along its axis (the one the couplings carry) is the membrane force
-//   N̄ = N(η) + (EA/L) ½ ηᵀ K_G,ff η        (ηᵀ K_G,ff η = ∫ v'² + w'² dx),
-// not N(η) alone: a bent body without axial load has N(η) < 0 (its linear modes keep the chord
-// length, the ½ v'² term is carried by N(η)). (2) The distribution: the body's modes rarely hold
-// an axial interior mode (the lowest fixed-interface modes of a slender body are bending modes),
-// so the FE axial force of U η is the same everywhere. The element axial forces are therefore
-// rebuilt from N̄ and the equilibrium of the dead axial nodal loads a_j (body frame):
+// Axial force inside a body. (1) The mean: N̄ = BodyAxialForce, the membrane force
+// rowᵀη + (EA/L) ½ ηᵀ K_G,ff η (elongation of the end nodes plus the foreshortening of bending;
+// a bent body without axial load carries none). (2) The distribution: the body's modes rarely
+// hold an axial interior mode (the lowest fixed-interface modes of a slender body are bending
+// modes), so the FE axial force of U η is the same everywhere. The element axial forces are
+// therefore // rebuilt from N̄ and the equilibrium of the dead axial nodal loads a_j (body frame):
 // node j joins element j−1 (below) and j (above), so N_j = N_{j−1} − a_j, i.e.
 // N_e = N̄ + c_e − mean(c), c_e = −Σ_{j=1..e} a_j: the static FE solution when N̄ is exact (it is
 // for a uniform bar: linear elements are nodally exact). Axial loads of other elements (contact
@@ -70,8 +64,8 @@ std::vector<SectionForces> BodyInternalForces(const Body& body, const VecX& eta,
                                               const std::vector<double>& axial_loads = {});
 
 // The raw FE end forces of element e (nodes e, e+1) of a body: f_e = (K_e + N̄ K_G,e) d_e,
-// without the axial rebuild above; 12 values in
-// the FE order (forces and moments on the element at node e, then at node e+1), body frame.
+// without the axial rebuild above; 12 values in the FE order (forces and moments on the element
+// at node e, then at node e+1), body frame.
 Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta, int element);
 
 // The internal force at each joint (size bodies − 1; joint j between body j and body j + 1):
