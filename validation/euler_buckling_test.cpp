@@ -35,8 +35,9 @@ TEST_P(V2EulerLoad, WithinOnePercentByBothMethods) {
   ASSERT_TRUE(buckling["frequency_method"]["converged"].get<bool>());
   EXPECT_LT(std::abs(RelativeError(buckling["frequency_method"]["critical_load"].get<double>(), reference)), 0.01)
       << "frequency against load: " << buckling["frequency_method"]["critical_load"] << " N against " << reference;
-  // The case's load is 1 kN: the multiplier is the critical load in kN.
-  EXPECT_NEAR(buckling["load_factor"].get<double>() * 1000.0, buckling["critical_load"].get<double>(), 1e-6 * reference);
+  // The case's load is 1 kN: the multiplier is the critical load in kN (the compression read back
+  // from the internal forces is 1 kN to about 1e-6).
+  EXPECT_NEAR(buckling["load_factor"].get<double>() * 1000.0, buckling["critical_load"].get<double>(), 1e-5 * reference);
 }
 
 INSTANTIATE_TEST_SUITE_P(Validation, V2EulerLoad,
