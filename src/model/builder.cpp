@@ -50,7 +50,7 @@ Vec6 SpringDamping(const Vec6& stiffness, const Vec6& inertia) {
 }
 
 Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::BodySpec& spec, int component,
-              double s_start, double contact_diameter) {
+              double s_start, double contact_diameter, const MatX& mass_correction) {
   Body body;
   body.reduced = reduced;
   body.component = component;
@@ -68,7 +68,7 @@ Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::
   const int last = reduced->node_count() - 1;
   body.axial_force_row = (body.axial_rigidity / spec.length) *
                          (reduced->node_translation_modes[last].row(0) - reduced->node_translation_modes[0].row(0)).transpose();
-  body.mass_correction = cms::ReferenceMassMatrix(*reduced) - cms::NodalReferenceMassMatrix(*reduced);
+  body.mass_correction = mass_correction;
   return body;
 }
 
@@ -90,8 +90,11 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
     spec.element_count = settings.elements_per_body;
     spec.options = FeOptions(settings);
     const auto reduced = cache.Get(spec, reduction);
+    // Once per section (it was 2/3 of the build time of a 1000-body string when made per body).
+    const MatX mass_correction = cms::ReferenceMassMatrix(*reduced) - cms::NodalReferenceMassMatrix(*reduced);
     for (int i = 0; i < count; ++i) {
-      bodies.push_back(MakeBody(reduced, spec, static_cast<int>(c), s, ContactDiameter(component)));
+      bodies.push_back(
+          MakeBody(reduced, spec, static_cast<int>(c), s, ContactDiameter(component), mass_correction));
       s += spec.length;
     }
   }

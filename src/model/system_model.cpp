@@ -17,11 +17,17 @@ SystemModel::SystemModel(std::vector<Body> bodies, std::vector<std::unique_ptr<F
     num_positions_ = std::max(num_positions_, body.q_offset + body.position_count());
     num_velocities_ = std::max(num_velocities_, body.v_offset + body.velocity_count());
   }
+  std::vector<std::pair<int, int>> coupled;
   for (const auto& element : elements_) {
+    std::vector<int>& indices = element_bodies_.emplace_back();
     for (const Body* body : element->bodies()) {
       if (IndexOf(body) < 0) throw LogicError(element->Describe() + " refers to a body outside the model");
+      for (int other : indices) coupled.emplace_back(other, IndexOf(body));
+      indices.push_back(IndexOf(body));
     }
   }
+  iteration_pattern_ = BlockPattern(bodies_, coupled, num_velocities_);
+  mass_pattern_ = BlockPattern(bodies_, {}, num_velocities_);
 }
 
 int SystemModel::IndexOf(const Body* body) const {
@@ -98,31 +104,10 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
   return residual;
 }
 
-namespace {
-
-void AddBlockTriplets(const MatX& block, const std::vector<const Body*>& bodies, std::vector<Triplet>& triplets) {
-  int row_offset = 0;
-  for (const Body* row_body : bodies) {
-    int col_offset = 0;
-    for (const Body* col_body : bodies) {
-      for (int i = 0; i < row_body->velocity_count(); ++i) {
-        for (int j = 0; j < col_body->velocity_count(); ++j) {
-          const double value = block(row_offset + i, col_offset + j);
-          if (value != 0.0) triplets.emplace_back(row_body->v_offset + i, col_body->v_offset + j, value);
-        }
-      }
-      col_offset += col_body->velocity_count();
-    }
-    row_offset += row_body->velocity_count();
-  }
-}
-
-}  // namespace
-
 SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor,
                                        double cK, double cD, double cM) const {
   const auto poses = Poses(q);
-  std::vector<Triplet> triplets;
+  SparseMat matrix = iteration_pattern_.Zero();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     const int n = body.velocity_count();
@@ -130,26 +115,26 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
     // cK K_in + cD D_in + cM M of the inertia (exact, model/body_inertia_jacobian.hpp).
     AddInertiaMatrices(body, poses[b], v.segment(body.v_offset, n), a.segment(body.v_offset, n), cK, cD, cM, local);
     AddElasticMatrices(body, poses[b], cK, cD, local);
-    AddBlockTriplets(local, {&body}, triplets);
+    iteration_pattern_.Add(local, {static_cast<int>(b)}, matrix);
   }
   ElementContribution contribution;
-  for (const auto& element : elements_) {
-    element->Evaluate(StateOf(*element, poses, v, t, load_factor), true, contribution);
-    AddBlockTriplets(cK * contribution.stiffness + cD * contribution.damping, element->bodies(), triplets);
+  MatX local;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const ForceElement& element = *elements_[e];
+    element.Evaluate(StateOf(element, poses, v, t, load_factor), true, contribution);
+    local.noalias() = cK * contribution.stiffness;
+    if (cD != 0.0) local.noalias() += cD * contribution.damping;
+    iteration_pattern_.Add(local, element_bodies_[e], matrix);
   }
-  SparseMat matrix(num_velocities_, num_velocities_);
-  matrix.setFromTriplets(triplets.begin(), triplets.end());
   return matrix;
 }
 
 SparseMat SystemModel::MassMatrix(const VecX& q) const {
   const auto poses = Poses(q);
-  std::vector<Triplet> triplets;
+  SparseMat matrix = mass_pattern_.Zero();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    AddBlockTriplets(BodyMassMatrix(bodies_[b], poses[b]), {&bodies_[b]}, triplets);
+    mass_pattern_.Add(BodyMassMatrix(bodies_[b], poses[b]), {static_cast<int>(b)}, matrix);
   }
-  SparseMat matrix(num_velocities_, num_velocities_);
-  matrix.setFromTriplets(triplets.begin(), triplets.end());
   return matrix;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "model/block_pattern.hpp"
 #include "model/body.hpp"
 #include "model/force_element.hpp"
 
@@ -37,6 +38,8 @@ class SystemModel {
   std::vector<BodyPose> Poses(const VecX& q) const;
 
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor) const;
+  // Both matrices have a fixed pattern (model/block_pattern.hpp): dense body blocks and the blocks of
+  // bodies sharing an element, structural zeros included, the same at every state.
   SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor, double cK,
                             double cD, double cM) const;
   SparseMat MassMatrix(const VecX& q) const;
@@ -60,6 +63,9 @@ class SystemModel {
   int num_velocities_ = 0;
   double length_ = 0.0;
   double force_scale_ = 1.0;
+  std::vector<std::vector<int>> element_bodies_;  // body indices of each element
+  BlockPattern iteration_pattern_;  // body blocks and the blocks of bodies sharing an element
+  BlockPattern mass_pattern_;       // body blocks only
 };
 
 // NodeAt over a list of bodies (used while building).

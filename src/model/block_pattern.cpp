@@ -1,0 +1,83 @@
+#include "model/block_pattern.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace drillflex::model {
+
+BlockPattern::BlockPattern(const std::vector<Body>& bodies, const std::vector<std::pair<int, int>>& coupled,
+                           int size) {
+  const int count = static_cast<int>(bodies.size());
+  offsets_.resize(count);
+  sizes_.resize(count);
+  std::vector<std::vector<int>> neighbours(count);
+  for (int b = 0; b < count; ++b) {
+    offsets_[b] = bodies[b].v_offset;
+    sizes_[b] = bodies[b].velocity_count();
+    neighbours[b].push_back(b);
+  }
+  for (const auto& [a, b] : coupled) {
+    neighbours[a].push_back(b);
+    neighbours[b].push_back(a);
+  }
+  column_bodies_.resize(count);
+  std::vector<int> column_size(size, 0);
+  for (int b = 0; b < count; ++b) {
+    auto& list = neighbours[b];
+    // Ascending rows within a column: sort by offset, drop repeats.
+    std::sort(list.begin(), list.end(), [&](int x, int y) { return offsets_[x] < offsets_[y]; });
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    int position = 0;
+    for (int a : list) {
+      column_bodies_[b].emplace_back(a, position);
+      position += sizes_[a];
+    }
+    for (int j = 0; j < sizes_[b]; ++j) column_size[offsets_[b] + j] = position;
+  }
+  // The compressed arrays, written directly (inserting ~1e6 entries one by one costs ~40 ms).
+  zero_ = SparseMat(size, size);
+  int nonzeros = 0;
+  for (int c : column_size) nonzeros += c;
+  zero_.resizeNonZeros(nonzeros);
+  int* outer = zero_.outerIndexPtr();
+  int* inner = zero_.innerIndexPtr();
+  outer[0] = 0;
+  for (int col = 0; col < size; ++col) outer[col + 1] = outer[col] + column_size[col];
+  for (int b = 0; b < count; ++b) {
+    for (int j = 0; j < sizes_[b]; ++j) {
+      int* rows = inner + outer[offsets_[b] + j];
+      for (const auto& [a, position] : column_bodies_[b]) {
+        for (int i = 0; i < sizes_[a]; ++i) rows[position + i] = offsets_[a] + i;
+      }
+    }
+  }
+  std::fill(zero_.valuePtr(), zero_.valuePtr() + nonzeros, 0.0);
+}
+
+int BlockPattern::PositionInColumn(int row_body, int col_body) const {
+  for (const auto& [a, position] : column_bodies_[col_body]) {
+    if (a == row_body) return position;
+  }
+  throw LogicError("BlockPattern: a block outside the model's sparsity pattern");
+}
+
+void BlockPattern::Add(const MatX& block, const std::vector<int>& body_indices, SparseMat& matrix) const {
+  const int* outer = matrix.outerIndexPtr();
+  double* values = matrix.valuePtr();
+  int col_local = 0;
+  for (int b : body_indices) {
+    int row_local = 0;
+    for (int a : body_indices) {
+      const int position = PositionInColumn(a, b);
+      for (int j = 0; j < sizes_[b]; ++j) {
+        Eigen::Map<VecX>(values + outer[offsets_[b] + j] + position, sizes_[a]) +=
+            block.col(col_local + j).segment(row_local, sizes_[a]);
+      }
+      row_local += sizes_[a];
+    }
+    col_local += sizes_[b];
+  }
+}
+
+}  // namespace drillflex::model
