@@ -161,7 +161,12 @@ FrequencyLoadPoint FrequencyAt(const model::SystemModel& model, double load_fact
   eigenvalue = std::nan("");
   if (!equilibrium.converged) return point;
   const LinearizedSystem system = Linearize(model, equilibrium.q, load_factor);
-  const solvers::ModalResult modal = solvers::SolveModes(system.stiffness, system.mass, rigid + 1);
+  solvers::ModalResult modal;
+  try {
+    modal = LowestModes(system, rigid + 1);
+  } catch (const SolverError&) {
+    return point;  // no modes beyond buckling on a large model: the sample is dropped
+  }
   eigenvalue = modal.eigenvalues[rigid];
   point.frequency_hz = std::sqrt(std::max(eigenvalue, 0.0)) / (2.0 * kPi);
   point.compression = MaxCompression(model, equilibrium.q, load_factor);

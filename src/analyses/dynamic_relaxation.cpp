@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/modes_analysis.hpp"
 #include "core/error.hpp"
 #include "solvers/eigen.hpp"
 #include "solvers/linear_solver.hpp"
@@ -20,10 +21,8 @@ SparseMat StaticTangent(const model::SystemModel& model, const VecX& q) {
 // ω₁² of the string at q: the lowest eigenvalue of the (symmetrized) tangent above the rigid-body
 // range; the lowest non-zero one if all are rigid-body-like.
 double LowestElasticEigenvalue(const model::SystemModel& model, const VecX& q) {
-  const SparseMat tangent = StaticTangent(model, q);
-  const SparseMat symmetric = 0.5 * (tangent + SparseMat(tangent.transpose()));
   const int count = std::min<int>(8, model.num_velocities());
-  const solvers::ModalResult modes = solvers::SolveModes(symmetric, model.MassMatrix(q), count);
+  const solvers::ModalResult modes = LowestModes(Linearize(model, q, 1.0), count);
   const double largest = std::abs(modes.eigenvalues.tail<1>()[0]);
   for (Eigen::Index i = 0; i < modes.eigenvalues.size(); ++i) {
     if (modes.eigenvalues[i] > 1e-10 * largest && modes.eigenvalues[i] > 1e-8) return modes.eigenvalues[i];

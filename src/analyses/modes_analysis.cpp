@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/error.hpp"
+#include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
 
 namespace drillflex::analyses {
@@ -132,6 +133,25 @@ int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const Li
   return rigid;
 }
 
+solvers::ModalResult LowestModes(const LinearizedSystem& system, int count) {
+  const Eigen::Index n = system.stiffness.rows();
+  if (n > solvers::kDenseModalLimit) {
+    try {
+      const solvers::BucklingResult lowest = solvers::SolveBuckling(system.stiffness, -system.mass, count);
+      if (lowest.multipliers.size() == std::min<Eigen::Index>(count, n)) {
+        solvers::ModalResult result{lowest.multipliers, lowest.modes};
+        for (Eigen::Index j = 0; j < result.vectors.cols(); ++j) {
+          result.vectors.col(j) /= std::sqrt(result.vectors.col(j).dot(system.mass * result.vectors.col(j)));
+        }
+        return result;
+      }
+    } catch (const SolverError&) {
+      // K is not positive definite (free string, or beyond buckling): the shift-invert path.
+    }
+  }
+  return solvers::SolveModes(system.stiffness, system.mass, count);
+}
+
 const char* ModeKindName(ModeKind kind) {
   switch (kind) {
     case ModeKind::All: return "all";
@@ -167,7 +187,7 @@ ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const M
   const int rigid = CountRigidBodyModes(model, q, system);
   if (all) solve_count = std::min(n, settings.count + rigid);
   while (true) {
-    const solvers::ModalResult modal = solvers::SolveModes(system.stiffness, system.mass, solve_count);
+    const solvers::ModalResult modal = LowestModes(system, solve_count);
     const std::vector<bool> rigid_flags = RigidFlags(modal.eigenvalues, rigid);
     result.modes.clear();
     result.rigid_body_modes = 0;

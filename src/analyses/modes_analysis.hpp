@@ -11,6 +11,7 @@
 #include "analyses/string_stations.hpp"
 #include "core/types.hpp"
 #include "model/builder.hpp"
+#include "solvers/eigen.hpp"
 
 namespace drillflex::analyses {
 
@@ -58,6 +59,16 @@ struct LinearizedSystem {
 LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, double load_factor);
 
 inline constexpr int kMaxModesSearched = 400;
+
+// The `count` lowest modes of K x = ω² M x (ascending, M-normalised). Above the dense limit and
+// for a positive definite K (a supported string below buckling) they are found as the smallest
+// positive multipliers μ = ω² of (K − μ M) x = 0 by solvers::SolveBuckling (Lanczos on the
+// Cholesky factor of K, whose largest 1/ω² converge fast); otherwise (K singular or indefinite)
+// by solvers::SolveModes. Why: SolveModes's shift-invert pole sits 1e-9 max(K_ii/M_ii) below the
+// shift (~1e4 rad²/s² with the stiff couplings), far from the ω² ~ 1e-3 of a long soft string,
+// where Lanczos then barely separates the modes (seconds per mode at 1800 DOF, no convergence at
+// 18,000).
+solvers::ModalResult LowestModes(const LinearizedSystem& system, int count);
 
 // The number of rigid-body modes of the linearized system at q: the rigid motions of the whole
 // string (translation t, rotation θ about its centroid c: ṙ_b = t + θ × (r_b − c), ω_b = A_bᵀ θ,
