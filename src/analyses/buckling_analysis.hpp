@@ -7,7 +7,8 @@
 //      NOT linear in the load here, because the stiff coupling and support springs change their
 //      lever arms with the bodies' axial shortening (terms ~k·u·δu, tiny relative to k but large
 //      against the geometric stiffness once condensed onto the soft buckling directions).
-//      Extrapolating K_G from λ_ref = 1 was 20–67 % low on the V2 columns; at λ_ref = μ the
+//      K_T − (K_0 + λ K_G(1)) grows as λ² (measured), and extrapolating K_G from λ_ref = 1 was
+//      20–67 % low on the V2 columns (pinned-pinned: μ = 57.9 against 131.0); at λ_ref = μ the
 //      problem is exact, K_0 + μ (K_T(μ) − K_0)/μ = K_T(μ), i.e. μ is where the tangent of the
 //      prebuckling path becomes singular. Higher multipliers (`modes` > 1) are those of the last
 //      K_G, approximate;
@@ -54,8 +55,10 @@ struct BucklingResult {
   std::vector<Vec3> mode_rotation;
 };
 
-// Throws SolverError if the string has no compression under the case's loads or the eigenproblem
-// fails (e.g. an unsupported string: K_0 singular).
+// Throws SolverError if the case's loads do not buckle the string (no positive multiplier), no
+// static equilibrium is found even at 1/64 of the loads, or the eigenproblem fails (e.g. an
+// unsupported string: K_0 singular). The frequency method never throws: see
+// frequency_method_converged.
 BucklingResult RunBuckling(const model::BuiltModel& built, const BucklingSettings& settings);
 
 }  // namespace drillflex::analyses

@@ -1,6 +1,6 @@
 // Linear vibration modes (method.md §9.2) about a state q: K = ∂R/∂q at q (v = a = 0, load
 // factor 1: the geometric stiffening of the loads in that state is included), M = M(q);
-// K x = ω² M x (solvers::SolveModes, sparse shift-invert Lanczos for large models). Each mode is
+// K x = ω² M x (LowestModes below: dense, or sparse Lanczos for large models). Each mode is
 // classified by the split of its kinetic energy ½ xᵀ M x over the nodes into axial, torsional and
 // lateral parts.
 #pragma once
