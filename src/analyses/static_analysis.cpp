@@ -11,6 +11,7 @@
 #include "model/internal_forces.hpp"
 #include "model/spring_elements.hpp"
 #include "model/static_problem.hpp"
+#include "model/wall_contact.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -126,7 +127,7 @@ std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, co
   return reactions;
 }
 
-StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings) {
+StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start) {
   StaticResult result;
   if (settings.method == StaticMethod::DynamicRelaxation) {
     RelaxationOptions relaxation;
@@ -142,7 +143,9 @@ StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& set
     solvers::NewtonOptions options = DefaultNewtonOptions();
     options.max_iterations = std::clamp(settings.max_iterations, 1, kMaxIterationsPerLoadStep);
     if (built.force_scale > 0.0) options.force_scale = built.force_scale;
-    const solvers::StaticResult solved = solvers::SolveStatic(problem, built.system.ReferencePositions(), options);
+    if (start) options.load_stepping.enabled = false;  // already near the equilibrium at full load
+    const solvers::StaticResult solved =
+        solvers::SolveStatic(problem, start ? *start : built.system.ReferencePositions(), options);
     result.converged = solved.converged;
     result.q = solved.q;
     result.iterations = solved.iterations;
@@ -151,7 +154,83 @@ StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& set
   }
   result.nodes = StaticNodeResults(built.system, result.q, 1.0);
   result.reactions = SupportReactions(built, result.q);
+  result.contacts = ContactReports(built, result.q);
+  result.bit = ComputeBitReport(built, result);
   return result;
+}
+
+std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q) {
+  std::vector<ContactReport> reports;
+  if (built.contact_elements.empty()) return reports;
+  const auto poses = built.system.Poses(q);
+  const VecX rest = VecX::Zero(built.system.num_velocities());
+  for (const int index : built.contact_elements) {
+    const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
+    const model::WallContactResult state = contact.Result(built.system.StateOf(contact, poses, rest, 0.0, 1.0));
+    if (!state.in_contact) continue;
+    const model::Body& body = *contact.bodies()[0];
+    reports.push_back({body.s_start + body.reduced->node_positions[contact.node()].x(), state.md, state.normal_force,
+                       state.friction_force.norm(), state.high_side_angle, body.component});
+  }
+  return reports;
+}
+
+std::optional<BitReport> ComputeBitReport(const model::BuiltModel& built, const StaticResult& result) {
+  if (built.contact_elements.empty() || result.nodes.empty()) return std::nullopt;
+  const SupportReaction* bit = nullptr;
+  for (const auto& reaction : result.reactions) {
+    if (std::abs(reaction.s) < 1e-9) bit = &reaction;
+  }
+  if (!bit) return std::nullopt;
+  BitReport report;
+  // The formation pushes the bit with the reaction; the bit pushes the formation the other way.
+  // String frame: y right, z high side.
+  report.walk_force = -bit->force.y();
+  report.build_force = -bit->force.z();
+  report.side_force = std::hypot(report.walk_force, report.build_force);
+  // The bit axis down-hole, −x of the bit node rotated by θ (string frame): (−1, −θz, θy) to first
+  // order, so its high-side component is θy; the exact angle from the rotated axis.
+  const Vec3 rotation = result.nodes.front().rotation;
+  const Vec3 axis = -(Eigen::AngleAxisd(rotation.norm(), rotation.norm() > 0 ? rotation.normalized() : Vec3::UnitX()) *
+                      Vec3::UnitX());
+  report.tilt = std::atan2(axis.z(), -axis.x());
+  return report;
+}
+
+StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
+                             cms::ReductionCache& cache, const StaticSettings& settings) {
+  if (!input.supports.empty() || !input.trajectory || settings.method == StaticMethod::DynamicRelaxation) {
+    return RunStatic(built, settings);
+  }
+  // Stage 1: the top also held laterally at the hole centre.
+  model::ModelInput held = input;
+  held.supports = model::DefaultWellSupports(built.system.length());
+  model::Support lateral;
+  lateral.at = built.system.length();
+  lateral.fixed[model::kY] = lateral.fixed[model::kZ] = true;
+  held.supports.push_back(lateral);
+  StaticResult stage = RunStatic(model::BuildSystemModel(held, cache), settings);
+  // Stage 2: the lateral hold softened by decades until it carries nothing, each equilibrium the
+  // start of the next (a homotopy: every step is a small change for Newton while contacts close
+  // as the top settles onto the wall); a step that fails is halved.
+  constexpr double kLastDecade = 16.0, kSmallestStep = 1.0 / 64.0;
+  double decade = 0.0, step = 1.0;
+  while (decade < kLastDecade) {
+    const double next = std::min(decade + step, kLastDecade);
+    held.supports.back().stiffness_scale = std::pow(10.0, -next);
+    try {
+      stage = RunStatic(model::BuildSystemModel(held, cache), settings, &stage.q);
+      decade = next;
+      step = std::min(2.0 * step, 1.0);
+    } catch (const SolverError& error) {
+      step *= 0.5;
+      if (step < kSmallestStep) {
+        throw SolverError(fmt::format("releasing the top of the string onto the wall stopped at a lateral "
+                                      "hold of 1e-{:.3g} of a support's stiffness: {}", decade, error.what()));
+      }
+    }
+  }
+  return RunStatic(built, settings, &stage.q);
 }
 
 }  // namespace drillflex::analyses

@@ -3,6 +3,7 @@
 // (solvers::SolveStatic) from the reference placement, and the results along the string.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
@@ -38,6 +39,25 @@ struct SupportReaction {
   Vec3 moment = Vec3::Zero();    // N·m
 };
 
+// A wall contact that carries force (model/wall_contact.hpp), for output.
+struct ContactReport {
+  double s = 0.0;                 // m from the bit
+  double md = 0.0;                // m
+  double normal_force = 0.0;      // N
+  double friction_force = 0.0;    // N (magnitude)
+  double high_side_angle = 0.0;   // rad: 0 high side, π/2 right, π low side
+  int component = 0;              // index in the string
+};
+
+// The bit's directional tendency (case-format.md "Frames and signs"), from the reaction of the
+// support at the bit: the force the bit exerts on the formation and the tilt of its axis.
+struct BitReport {
+  double side_force = 0.0;   // N, magnitude of the lateral force on the formation
+  double build_force = 0.0;  // N, toward the high side (> 0 builds)
+  double walk_force = 0.0;   // N, toward the right (> 0 walks right)
+  double tilt = 0.0;         // rad, bit axis (down-hole) against the hole axis, > 0 toward the high side
+};
+
 struct StaticResult {
   bool converged = false;
   VecX q;                      // the equilibrium positions
@@ -46,12 +66,28 @@ struct StaticResult {
   double residual_norm = 0.0;  // |R|₂ at q, N
   std::vector<StaticNodeResult> nodes;    // from the bit upward
   std::vector<SupportReaction> reactions; // one per case support, in case order
+  std::vector<ContactReport> contacts;     // wall contacts carrying force, from the bit upward
+  std::optional<BitReport> bit;            // in a well, with a support at the bit
 };
+
+// The contacts carrying force and the bit report at a state (filled in by RunStatic).
+std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q);
+std::optional<BitReport> ComputeBitReport(const model::BuiltModel& built, const StaticResult& result);
 
 // Solves the static equilibrium at load factor 1. Newton: at most min(max_iterations, 50)
 // iterations per load step. DynamicRelaxation: analyses/dynamic_relaxation.hpp, at most
-// max_iterations × 10 pseudo-time steps. Throws SolverError when it does not converge.
-StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings);
+// max_iterations × 10 pseudo-time steps. With `start`, a state near the equilibrium at full load,
+// Newton runs at λ = 1 from it without load stepping. Throws SolverError when it does not converge.
+StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings,
+                       const VecX* start = nullptr);
+
+// A string in a well on the default supports (model::DefaultWellSupports: the top free to lie on
+// the wall). From the centreline the top's lateral freedom is a mechanism until the string
+// touches the wall, so the equilibrium is found in two stages: first with the top also held at the
+// hole centre (the string settles onto the wall below it), then released. `input` is what `built`
+// was built from; the first stage's model reuses the reductions in `cache`. Other cases: RunStatic.
+StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
+                             cms::ReductionCache& cache, const StaticSettings& settings);
 
 // The results along the string at a given state q (used by RunStatic, buckling and tests).
 // `load_factor` scales the dead loads used for the axial force inside bodies

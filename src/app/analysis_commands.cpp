@@ -44,6 +44,21 @@ void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
                              Show(c, stressed->bending_stress, Quantity::Stress),
                              Show(c, stressed->axial_force, Quantity::Force));
   }
+  if (!result.contacts.empty()) {
+    const auto& first = result.contacts.front();
+    double largest = 0.0;
+    for (const auto& contact : result.contacts) largest = std::max(largest, contact.normal_force);
+    std::cout << fmt::format("  {} wall contacts carry force; the first at {} from the bit ({} MD); largest {}\n",
+                             result.contacts.size(), Show(c, first.s, Quantity::Length), Show(c, first.md, Quantity::Length),
+                             Show(c, largest, Quantity::Force));
+  }
+  if (result.bit) {
+    const auto& bit = *result.bit;
+    std::cout << fmt::format("  bit: side force {}, build {} ({}), walk {} ({}), tilt {:.4g} deg\n",
+                             Show(c, bit.side_force, Quantity::Force), Show(c, bit.build_force, Quantity::Force),
+                             bit.build_force >= 0.0 ? "build" : "drop", Show(c, bit.walk_force, Quantity::Force),
+                             bit.walk_force >= 0.0 ? "right" : "left", bit.tilt / kDegree);
+  }
   for (const auto& reaction : result.reactions) {
     std::cout << fmt::format("  support at {}: force [{}, {}, {}]\n", Show(c, reaction.s, Quantity::Length),
                              Show(c, reaction.force.x(), Quantity::Force), Show(c, reaction.force.y(), Quantity::Force),
@@ -81,7 +96,8 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
                      "the string has no well and no supports: nothing holds it (add 'supports')");
   }
   cms::ReductionCache cache;
-  const model::BuiltModel built = model::BuildSystemModel(io::MakeModelInput(c), cache);
+  const model::ModelInput input = io::MakeModelInput(c);
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
   std::cout << fmt::format("model: {} bodies, {} coordinates\n", built.system.bodies().size(),
                            built.system.num_velocities());
   io::ResultFiles files(options.output_directory.empty() ? io::DefaultOutputDirectory(c) : options.output_directory);
@@ -89,7 +105,8 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
 
   VecX equilibrium = built.system.ReferencePositions();
   if (requested.static_analysis || requested.modes) {
-    const auto result = analyses::RunStatic(built, c.analyses.static_analysis.value_or(analyses::StaticSettings{}));
+    const auto result =
+        analyses::RunStaticInWell(input, built, cache, c.analyses.static_analysis.value_or(analyses::StaticSettings{}));
     equilibrium = result.q;
     if (requested.static_analysis) {
       PrintStatic(c, result);

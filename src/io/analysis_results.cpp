@@ -30,7 +30,7 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
   std::size_t supports = c.supports.size();
   root["model"] = {{"bodies", built.system.bodies().size()},
                    {"coordinates", built.system.num_velocities()},
-                   {"contacts", 0},
+                   {"contacts", built.contact_elements.size()},
                    {"couplings", built.system.bodies().empty() ? 0 : built.system.bodies().size() - 1},
                    {"supports", supports},
                    {"elements_per_body", c.model.elements_per_body},
@@ -78,15 +78,35 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
                          {"force", out.Vector(reaction.force, Quantity::Force)},
                          {"moment", out.Vector(reaction.moment, Quantity::Moment)}});
   }
+  json contacts = json::array();
+  CsvTable contact_table({"s", "md", "normal_force", "friction_force", "high_side_angle"});
+  for (const auto& contact : result.contacts) {
+    const double angle = contact.high_side_angle / kDegree;
+    contact_table.AddRow({out(contact.s, Quantity::Length), out(contact.md, Quantity::Length),
+                          out(contact.normal_force, Quantity::Force), out(contact.friction_force, Quantity::Force), angle});
+    contacts.push_back({{"s", out(contact.s, Quantity::Length)},
+                        {"md", out(contact.md, Quantity::Length)},
+                        {"component", c.string.components[contact.component].name},
+                        {"normal_force", out(contact.normal_force, Quantity::Force)},
+                        {"friction_force", out(contact.friction_force, Quantity::Force)},
+                        {"high_side_angle", angle}});
+  }
+  if (!result.contacts.empty()) files.Add("contacts.csv", contact_table.ToString());
   files.Add("static.csv", table.ToString());
   files.json()["static"] = {{"converged", result.converged},
                             {"iterations", result.iterations},
                             {"load_steps", result.load_steps},
                             {"residual_norm", out(result.residual_norm, Quantity::Force)},
                             {"nodes", nodes},
-                            {"contacts", json::array()},
+                            {"contacts", contacts},
                             {"reactions", reactions},
                             {"table", "static.csv"}};
+  if (result.bit) {
+    files.json()["static"]["bit"] = {{"side_force", out(result.bit->side_force, Quantity::Force)},
+                                     {"build_force", out(result.bit->build_force, Quantity::Force)},
+                                     {"walk_force", out(result.bit->walk_force, Quantity::Force)},
+                                     {"tilt", result.bit->tilt / kDegree}};
+  }
 }
 
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files) {

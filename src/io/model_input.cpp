@@ -15,6 +15,7 @@ model::ModelInput MakeModelInput(const Case& c) {
   if (c.well) {
     input.trajectory.emplace(c.well->survey);
     input.bit_md = c.well->bit_md;
+    input.hole = c.well->hole;
   }
   return input;
 }

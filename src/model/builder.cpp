@@ -10,6 +10,7 @@
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
+#include "model/wall_contact.hpp"
 
 namespace drillflex::model {
 namespace {
@@ -121,6 +122,34 @@ double WeightPerLength(const Body& body, const ModelInput& input) {
 
 }  // namespace
 
+// The contact diameter at a distance s from the bit: the blade OD over a stabilizer's blades
+// (centred on the stabilizer when their length is given, else over all of it), the tool-joint OD
+// within half a joint length of a pipe connection, the body OD elsewhere.
+double ContactDiameterAt(const StringConfig& string, double s) {
+  double start = 0.0;
+  for (const Component& component : string.components) {
+    const double span = component.length * component.count;
+    if (s > start + span + 1e-9) {
+      start += span;
+      continue;
+    }
+    const double local = std::clamp(s - start, 0.0, span);
+    const double within_item = std::fmod(local, component.length);
+    if (component.blade_diameter) {
+      const double blades = component.blade_length.value_or(component.length);
+      if (std::abs(within_item - 0.5 * component.length) <= 0.5 * blades + 1e-9) return *component.blade_diameter;
+    }
+    if (component.joint_diameter) {
+      const double spacing = component.joint_spacing.value_or(std::min(kDefaultJointSpacing, component.length));
+      const double half_joint = 0.5 * component.joint_length.value_or(kDefaultJointLength);
+      const double to_connection = std::fmod(local, spacing);
+      if (std::min(to_connection, spacing - to_connection) <= half_joint + 1e-9) return *component.joint_diameter;
+    }
+    return component.outer_diameter;
+  }
+  return string.components.back().outer_diameter;
+}
+
 std::vector<Support> DefaultWellSupports(double string_length) {
   Support bit;
   bit.at = 0.0;
@@ -159,11 +188,37 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     const Body& body = placed[b];
     const Mat3 frame = body.reference_orientation.toRotationMatrix();
     const Vec3 position = body.reference_position + frame * body.reduced->node_positions[node];
-    Vec6 stiffness = kSupportStiffnessFactor * SectionCouplingStiffness(body, factor);
+    Vec6 stiffness = support.stiffness_scale * kSupportStiffnessFactor * SectionCouplingStiffness(body, factor);
     for (int d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
     support_elements.push_back(static_cast<int>(elements.size()));
     elements.push_back(std::make_unique<SupportElement>(&body, node, position, frame, stiffness,
                                                         SpringDamping(stiffness, ElementInertia(body))));
+  }
+
+  // Wall contact at every node (a joint once, on the upper body's start node), with the diameter
+  // of the component there.
+  std::vector<int> contact_elements;
+  if (input.trajectory && !input.hole.empty()) {
+    auto wellbore = std::make_shared<const Wellbore>(Wellbore{*input.trajectory, well::HoleProfile(input.hole)});
+    const ContactSettings& contact = input.settings.contact;
+    for (std::size_t b = 0; b < placed.size(); ++b) {
+      const Body& body = placed[b];
+      const bool top_body = b + 1 == placed.size();
+      const double node_mass = ElementInertia(body)[0];
+      for (int k = 0; k < body.node_count(); ++k) {
+        if (k == body.node_count() - 1 && !top_body) continue;  // the next body's node 0 carries it
+        const double s = body.s_start + body.reduced->node_positions[k].x();
+        WallContactParameters parameters;
+        parameters.contact_radius = 0.5 * ContactDiameterAt(input.string, s);
+        parameters.normal_stiffness = contact.stiffness;
+        parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(contact.stiffness * node_mass);
+        parameters.tangential_friction = contact.friction;
+        parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
+        parameters.regularization_velocity = kFrictionRegularizationVelocity;
+        contact_elements.push_back(static_cast<int>(elements.size()));
+        elements.push_back(std::make_unique<WallContactElement>(&body, k, wellbore, parameters, input.bit_md - s));
+      }
+    }
   }
 
   // Applied loads: gravity and the case's loads, gathered per body as nodal forces and moments.
@@ -227,7 +282,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
 
   SystemModel system(std::move(bodies), std::move(elements), length);
   system.set_force_scale(force_scale);
-  return BuiltModel{std::move(system), std::move(support_elements), force_scale};
+  return BuiltModel{std::move(system), std::move(support_elements), std::move(contact_elements), force_scale};
 }
 
 }  // namespace drillflex::model

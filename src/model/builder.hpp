@@ -27,6 +27,7 @@ struct ModelInput {
   std::optional<FluidConfig> fluid;
   // The well the string lies in (bit at bit_md); none: straight along +x from the origin.
   std::optional<well::Trajectory> trajectory;
+  std::vector<well::HoleSection> hole;  // with a trajectory: wall contact at every node
   double bit_md = 0.0;
   Operation operation;  // WOB and torque on bit act at the bit (s = 0)
 };
@@ -37,12 +38,20 @@ struct ModelInput {
 // rotary table, free to lie on the wall.
 std::vector<Support> DefaultWellSupports(double string_length);
 
+// The diameter that touches the wall at a distance s (m) from the bit: blade, tool joint or body.
+double ContactDiameterAt(const StringConfig& string, double s);
+
 // What the builder made, beside the model itself: where each support and load went.
 struct BuiltModel {
   SystemModel system;
   std::vector<int> support_elements;  // element index of each case support
+  std::vector<int> contact_elements;  // element index of each wall contact, from the bit upward
   double force_scale = 0.0;           // a typical applied force, N (Newton tolerance)
 };
+
+// Friction regularization velocity v_ε of the wall contacts, m/s (method.md §6): below it the
+// friction is viscous.
+inline constexpr double kFrictionRegularizationVelocity = 1e-3;
 
 // Damping ratio of the coupling and support springs, with the element masses of the joined bodies.
 inline constexpr double kCouplingDampingRatio = 0.05;

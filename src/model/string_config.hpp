@@ -91,6 +91,7 @@ enum Dof { kX = 0, kY = 1, kZ = 2, kRx = 3, kRy = 4, kRz = 5 };
 struct Support {
   double at = 0.0;                   // m from the bit end
   std::array<bool, 6> fixed{};       // indexed by Dof
+  double stiffness_scale = 1.0;      // multiplies the support's stiffness (continuation of releases)
   int source_line = 0;
 };
 
