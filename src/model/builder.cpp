@@ -7,6 +7,7 @@
 
 #include "cms/reduced_body.hpp"
 #include "core/error.hpp"
+#include "core/so3.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
@@ -176,8 +177,10 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     const Body& upper = placed[b + 1];
     const Vec6 stiffness = SectionCouplingStiffness(lower, factor).cwiseMax(SectionCouplingStiffness(upper, factor));
     const Vec6 inertia = ElementInertia(lower).cwiseMin(ElementInertia(upper));
+    const Vec3 kink = so3::LogMap(lower.reference_orientation.toRotationMatrix().transpose() *
+                                  upper.reference_orientation.toRotationMatrix());
     elements.push_back(std::make_unique<CouplingElement>(&lower, lower.node_count() - 1, &upper, 0, stiffness,
-                                                         SpringDamping(stiffness, inertia)));
+                                                         SpringDamping(stiffness, inertia), Mat3::Identity(), kink));
   }
 
   std::vector<int> support_elements;
@@ -207,6 +210,8 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       const double node_mass = ElementInertia(body)[0];
       for (int k = 0; k < body.node_count(); ++k) {
         if (k == body.node_count() - 1 && !top_body) continue;  // the next body's node 0 carries it
+        // The bit cuts the hole it sits in (its support holds it at the hole centre): no contact.
+        if (input.string.components[body.component].type == ComponentType::Bit) continue;
         const double s = body.s_start + body.reduced->node_positions[k].x();
         WallContactParameters parameters;
         parameters.contact_radius = 0.5 * ContactDiameterAt(input.string, s);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/so3.hpp"
+
 namespace drillflex::model {
 
 namespace {
@@ -24,9 +26,10 @@ void SpringContribution(const CouplingKinematics& k, const Vec6& stiffness, cons
 }  // namespace
 
 CouplingElement::CouplingElement(const Body* lower, int lower_node, const Body* upper, int upper_node,
-                                 const Vec6& stiffness, const Vec6& damping, const Mat3& built_in_rotation)
+                                 const Vec6& stiffness, const Vec6& damping, const Mat3& built_in_rotation,
+                                 const Vec3& placement_kink)
     : ForceElement({lower, upper}), lower_node_(lower_node), upper_node_(upper_node), stiffness_(stiffness),
-      damping_(damping), built_in_rotation_(built_in_rotation) {}
+      damping_(damping), built_in_rotation_(built_in_rotation), placement_kink_(placement_kink) {}
 
 std::string CouplingElement::Describe() const {
   return fmt::format("coupling at {:.4g} m from the bit", bodies()[1]->s_start);
@@ -35,7 +38,10 @@ std::string CouplingElement::Describe() const {
 CouplingKinematics CouplingElement::Kinematics(const ElementState& state) const {
   const CouplingEnd lower{bodies()[0], lower_node_, *state.poses[0]};
   const CouplingEnd upper{bodies()[1], upper_node_, *state.poses[1]};
-  return ComputeCouplingKinematics(lower, upper, built_in_rotation_);
+  const Mat3 rest = placement_kink_.isZero(0.0)
+                        ? built_in_rotation_
+                        : Mat3(built_in_rotation_ * so3::ExpMap((1.0 - state.load_factor) * placement_kink_));
+  return ComputeCouplingKinematics(lower, upper, rest);
 }
 
 void CouplingElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {

@@ -13,8 +13,13 @@ namespace drillflex::model {
 
 class CouplingElement : public ForceElement {
  public:
+  // `placement_kink`: the relative rotation (rotation vector, lower body frame) of the two bodies in
+  // their reference placement along a curved well. It is taken as stress-free at load factor 0 and
+  // fades linearly with the load factor, so that the placement is an equilibrium where the static
+  // continuation starts and the straight pipe's bending is fully felt at load factor 1.
   CouplingElement(const Body* lower, int lower_node, const Body* upper, int upper_node, const Vec6& stiffness,
-                  const Vec6& damping, const Mat3& built_in_rotation = Mat3::Identity());
+                  const Vec6& damping, const Mat3& built_in_rotation = Mat3::Identity(),
+                  const Vec3& placement_kink = Vec3::Zero());
   std::string Describe() const override;
   const Vec6& stiffness() const { return stiffness_; }
   // The force f = K e + C ė (side-1 frame) at a state.
@@ -29,6 +34,7 @@ class CouplingElement : public ForceElement {
   int lower_node_, upper_node_;
   Vec6 stiffness_, damping_;
   Mat3 built_in_rotation_;
+  Vec3 placement_kink_;
 };
 
 class SupportElement : public ForceElement {
