@@ -127,6 +127,11 @@ std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, co
   return reactions;
 }
 
+namespace {
+constexpr double kWallStepLimit = 0.01;      // m (or rad, or modal units): Newton trust radius in a hole
+constexpr int kMaxIterationsInHole = 100;
+}  // namespace
+
 StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start) {
   StaticResult result;
   if (settings.method == StaticMethod::DynamicRelaxation) {
@@ -144,6 +149,11 @@ StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& set
     options.max_iterations = std::clamp(settings.max_iterations, 1, kMaxIterationsPerLoadStep);
     if (built.force_scale > 0.0) options.force_scale = built.force_scale;
     if (start) options.load_stepping.enabled = false;  // already near the equilibrium at full load
+    // In a hole, let contacts close gradually: no node moves more than kWallStepLimit a step.
+    if (!built.contact_elements.empty()) {
+      options.max_increment = kWallStepLimit;
+      options.max_iterations = std::max(options.max_iterations, kMaxIterationsInHole);
+    }
     const solvers::StaticResult solved =
         solvers::SolveStatic(problem, start ? *start : built.system.ReferencePositions(), options);
     result.converged = solved.converged;

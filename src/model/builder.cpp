@@ -89,7 +89,14 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
     spec.section = {component.outer_diameter, component.inner_diameter};
     spec.material = input.materials.at(component.material);
     spec.length = span / count;
-    spec.element_count = settings.elements_per_body;
+    // A body shorter than body_length gets proportionally fewer elements (at least 2), so that the
+    // element length ℓ stays near body_length / elements_per_body: the coupling stiffness grows as
+    // 1/ℓ³ and a 1 ft bit cut into 10 elements would make the couplings 1000 times stiffer than
+    // the rest of the model for no accuracy (ill-conditioned tangents).
+    spec.element_count = std::clamp(
+        static_cast<int>(std::lround(settings.elements_per_body * spec.length / settings.body_length)), 2,
+        settings.elements_per_body);
+    reduction.modes_per_body = std::min(settings.modes_per_body, 6 * (spec.element_count - 1));
     spec.options = FeOptions(settings);
     const auto reduced = cache.Get(spec, reduction);
     // Once per section (it was 2/3 of the build time of a 1000-body string when made per body).

@@ -100,6 +100,10 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
       out.reason = fmt::format("the Newton correction cannot be computed ({})", error.what());
       return out;
     }
+    if (options_.max_increment > 0.0) {
+      const double longest = dv.lpNorm<Eigen::Infinity>();
+      if (longest > options_.max_increment) dv *= options_.max_increment / longest;
+    }
     ++out.iterations;
     LineSearchResult search = BacktrackingLineSearch(problem_, options_.time, out.q, residual, dv,
                                                      options_.line_search);
