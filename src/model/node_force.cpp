@@ -6,7 +6,8 @@
 //   Bᵀ ∂(F, M)/∂v = N_bᵀ (C'_v N_b,top + C'_w N_b,bot).
 // Every block is a product of an n × 3 factor N_bᵀ C' with a 3 × m right factor, so the modal
 // columns cost 3 n n_f (stiffness) and 6 n n_f (damping) multiply-adds, computed column by column
-// of the result (contiguous, vectorized).
+// of the result (contiguous, vectorized). AddPointForce needs one left factor less for the damping
+// (L_ℓᵀ only: 3 n² multiply-adds).
 #include "model/node_force.hpp"
 
 #include "core/so3.hpp"
@@ -22,15 +23,14 @@ using Factor = Eigen::Matrix<double, Eigen::Dynamic, 3>;  // n × 3
 struct Scratch {
   Eigen::Matrix<double, Eigen::Dynamic, 6> jacobian_t;  // N_bᵀ
   Factor position, velocity, angular_velocity, work;
-  Factor top, bottom, lever;                            // AddPointForce's left factors
+  Factor bottom, lever;                                 // AddPointForce's Ψᵀ and L_ℓᵀ
   cms::Matrix3X right_full;                             // 3 × n
 };
 
 Scratch& ThreadScratch(int size) {
   thread_local Scratch scratch;
   scratch.jacobian_t.resize(size, 6);
-  for (Factor* f : {&scratch.position, &scratch.velocity, &scratch.angular_velocity, &scratch.work, &scratch.top,
-                    &scratch.bottom, &scratch.lever}) {
+  for (Factor* f : {&scratch.position, &scratch.velocity, &scratch.angular_velocity, &scratch.work, &scratch.lever}) {
     f->resize(size, 3);
   }
   scratch.right_full.resize(3, size);
@@ -89,6 +89,14 @@ void MultiplyFactor(const Factor& a, const Mat3& b, Factor& out) {
       const double product = a0[i] * b0 + a1[i] * b1 + a2[i] * b2;
       d[i] = Accumulate ? d[i] + product : product;
     }
+  }
+}
+
+// The modal rows of out (its last modes.rows() rows) += scale · modes · b (modes n_f × 3).
+void AddModalRows(const Factor& modes, const Mat3& b, double scale, Factor& out) {
+  const Eigen::Index nf = modes.rows();
+  for (int j = 0; j < 3; ++j) {
+    out.col(j).tail(nf) += scale * (modes.col(0) * b(0, j) + modes.col(1) * b(1, j) + modes.col(2) * b(2, j));
   }
 }
 
@@ -167,61 +175,58 @@ void AddNodeForce(const Body& body, const BodyPose& pose, int node, const NodeMo
   SubtractProduct(out.damping, offset, offset + 6, s.angular_velocity, psi);
 }
 
-void AddPointForce(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion, const Vec3& force,
-                   const Vec3& lever, const PointForceJacobian* jacobian, bool with_matrices,
-                   ElementContribution& out, int offset) {
-  if (jacobian == nullptr) {
-    AddNodeForce(body, pose, node, motion, force, lever.cross(force), nullptr, with_matrices, out, offset);
-    return;
-  }
-  const int nf = body.flexible_count, n = body.velocity_count();
+namespace {
+
+// The matrices of AddPointForce (formulas in node_force.hpp; body-frame factors as above).
+void SubtractPointForceMatrices(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion,
+                                const Vec3& f, const Vec3& l, const PointForceJacobian& J, ElementContribution& out,
+                                int o) {
+  const int nf = body.flexible_count;
   const auto& phi = body.reduced->node_translation_modes[node];
   const auto& psi = body.reduced->node_rotation_modes[node];
   const Mat3& A = pose.A;
-  const Vec3 f = A.transpose() * force, l = A.transpose() * lever;
-  const Vec3 m = l.cross(f);
-  // −Q = −L_ℓᵀ F = −[F; (u_k + ℓ) × AᵀF; Φᵀ AᵀF + Ψᵀ (ℓ × AᵀF)] (ℓ in the body frame).
-  out.force.segment<3>(offset) -= force;
-  out.force.segment<3>(offset + 3) -= (motion.offset + l).cross(f);
-  out.force.segment(offset + 6, nf).noalias() -= phi.transpose() * f;
-  out.force.segment(offset + 6, nf).noalias() -= psi.transpose() * m;
-  if (!with_matrices) return;
-  const PointForceJacobian& J = *jacobian;
-  Scratch& s = ThreadScratch(n);
   const Mat3 At = A.transpose();
-  const Mat3 su = Skew(motion.offset), sl = Skew(l), sf = Skew(f), sm = Skew(m);
-  // Left factors (n × 3): N_b,topᵀ = [A; ũ; Φᵀ], N_b,botᵀ = [0; I; Ψᵀ] and the lever point's
-  // L_ℓᵀ = N_b,topᵀ − N_b,botᵀ ℓ̃ = [A; ũ + ℓ̃; Φᵀ + Ψᵀ ℓ̃] (ℓ in the body frame).
-  Factor &top = s.top, &bottom = s.bottom, &lt = s.lever;
-  top.topRows<3>() = A;
-  top.middleRows<3>(3) = su;
-  top.bottomRows(nf) = phi.transpose();
-  bottom.topRows<3>().setZero();
-  bottom.middleRows<3>(3).setIdentity();
-  bottom.bottomRows(nf) = psi.transpose();
-  lt = top;
-  MultiplyFactor<true>(bottom, sl, lt);  // the δr rows of N_b,botᵀ are zero, its δθ rows I
+  const Mat3 su = Skew(motion.offset), sl = Skew(l), sf = Skew(f), sm = Skew(l.cross(f));
+  Scratch& s = ThreadScratch(body.velocity_count());
+  // Left factors (n × 3): the lever point's L_ℓᵀ = N_b,topᵀ + N_b,botᵀ ℓ̃ = [A; ũ + ℓ̃; Φᵀ + Ψᵀ ℓ̃]
+  // (ℓ in the body frame), with N_b,topᵀ = [A; ũ; Φᵀ] and N_b,botᵀ = [0; I; Ψᵀ] (Ψᵀ kept n_f × 3).
+  Factor &lt = s.lever, &psi_t = s.bottom;
+  psi_t.resize(nf, 3);
+  psi_t = psi.transpose();
+  lt.topRows<3>() = A;
+  lt.middleRows<3>(3) = su + sl;
+  lt.bottomRows(nf) = phi.transpose();
+  AddModalRows(psi_t, sl, 1.0, lt);
   const Mat3 fx = At * J.force_position * A, fv = At * J.force_velocity * A;
   const Mat3 fw = At * J.force_angular_velocity * A;
-  const Mat3 w = sf * (At * J.lever_position * A);  // skew(AᵀF) ∂ℓ'/∂x'
-  // Stiffness −P N_b,top − L_ℓᵀ E − H with P = L_ℓᵀ F'_r − N_b,botᵀ W (the lever's motion),
+  const Mat3 w = sf * (At * J.lever_position * A);  // skew(AᵀF) ∂ℓ'/∂x' (body frame)
+  // Stiffness −P N_b,top − L_ℓᵀ E − H, with P = L_ℓᵀ F'_r − N_b,botᵀ W (W: the lever's motion),
   // E = [0 | −F'_v skew(ω × u_k + Φη̇) − F'_w skew(ω + Ψη̇) | F'_v ω̃ Φ] and the geometric part
-  // H[:, δθ] = N_b,topᵀ skew(f) + N_b,botᵀ skew(m) − [A skew(f); 0; 0], H[δθ, δη] = −skew(f) Φ.
+  // H[:, δθ] = N_b,topᵀ skew(f) + N_b,botᵀ skew(m) − [A skew(f); 0; 0]
+  //          = L_ℓᵀ skew(f) + N_b,botᵀ (skew(m) − ℓ̃ skew(f)) − [A skew(f); 0; 0],
+  // H[δθ, δη] = −skew(f) Φ.
   Factor& P = s.position;
   MultiplyFactor<false>(lt, fx, P);
-  MultiplyFactor<true>(bottom, -w, P);
-  const int o = offset;
+  P.middleRows<3>(3) -= w;
+  AddModalRows(psi_t, w, -1.0, P);
   SubtractProduct(out.stiffness, o, o, P, At);
-  const Mat3 minus_su = -su;
-  const Mat3 minus_rates = -(fv * Skew(motion.relative_velocity) + fw * Skew(motion.node_rate));
-  SubtractProduct(out.stiffness, o, o + 3, P, minus_su);
-  SubtractProduct(out.stiffness, o, o + 3, lt, minus_rates);
-  SubtractProduct(out.stiffness, o, o + 3, top, sf);
-  SubtractProduct(out.stiffness, o, o + 3, bottom, sm);
+  Mat3 lever_theta = sf;
+  if (!motion.relative_velocity.isZero(0.0) || !motion.node_rate.isZero(0.0)) {
+    lever_theta -= fv * Skew(motion.relative_velocity) + fw * Skew(motion.node_rate);
+  }
+  SubtractProduct(out.stiffness, o, o + 3, P, Mat3(-su));
+  SubtractProduct(out.stiffness, o, o + 3, lt, lever_theta);
+  const Mat3 rotation_theta = sm - sl * sf;
+  out.stiffness.block<3, 3>(o + 3, o + 3) -= rotation_theta;
+  out.stiffness.block(o + 6, o + 3, nf, 3).noalias() -= psi_t * rotation_theta;
   out.stiffness.block<3, 3>(o, o + 3).noalias() += A * sf;
-  s.work = P;
-  MultiplyFactor<true>(lt, fv * Skew(motion.body_rate), s.work);
-  SubtractProduct(out.stiffness, o, o + 6, s.work, phi);
+  const Factor* modal_left = &P;
+  if (!motion.body_rate.isZero(0.0)) {
+    s.work = P;
+    MultiplyFactor<true>(lt, fv * Skew(motion.body_rate), s.work);
+    modal_left = &s.work;
+  }
+  SubtractProduct(out.stiffness, o, o + 6, *modal_left, phi);
   out.stiffness.block(o + 3, o + 6, 3, nf).noalias() += sf * phi;
   // Damping −L_ℓᵀ (F'_v N_b,top + F'_w N_b,bot) = −L_ℓᵀ [F'_v Aᵀ, F'_w − F'_v ũ, F'_v Φ + F'_w Ψ].
   s.right_full.leftCols<3>().noalias() = fv * At;
@@ -229,6 +234,27 @@ void AddPointForce(const Body& body, const BodyPose& pose, int node, const NodeM
   s.right_full.rightCols(nf).noalias() = fv * phi;
   s.right_full.rightCols(nf).noalias() += fw * psi;
   SubtractProduct(out.damping, o, o, lt, s.right_full);
+}
+
+}  // namespace
+
+void AddPointForce(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion, const Vec3& force,
+                   const Vec3& lever, const PointForceJacobian* jacobian, bool with_matrices,
+                   ElementContribution& out, int offset) {
+  if (jacobian == nullptr) {
+    AddNodeForce(body, pose, node, motion, force, lever.cross(force), nullptr, with_matrices, out, offset);
+    return;
+  }
+  const int nf = body.flexible_count;
+  const auto& phi = body.reduced->node_translation_modes[node];
+  const auto& psi = body.reduced->node_rotation_modes[node];
+  const Vec3 f = pose.A.transpose() * force, l = pose.A.transpose() * lever;
+  // −Q = −L_ℓᵀ F = −[F; (u_k + ℓ) × AᵀF; Φᵀ AᵀF + Ψᵀ (ℓ × AᵀF)] (ℓ in the body frame).
+  out.force.segment<3>(offset) -= force;
+  out.force.segment<3>(offset + 3) -= (motion.offset + l).cross(f);
+  out.force.segment(offset + 6, nf).noalias() -= phi.transpose() * f;
+  out.force.segment(offset + 6, nf).noalias() -= psi.transpose() * l.cross(f);
+  if (with_matrices) SubtractPointForceMatrices(body, pose, node, motion, f, l, *jacobian, out, offset);
 }
 
 }  // namespace drillflex::model

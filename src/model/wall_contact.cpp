@@ -38,8 +38,7 @@ HoleRadius HoleRadiusAt(const well::HoleProfile& hole, double md) {
   return result;
 }
 
-// Where the node sits in the hole (wall_contact.hpp: s*, e, n, δ) and the derivatives of the
-// geometry with respect to the node position x.
+// Where the node sits in the hole (wall_contact.hpp: s*, e, n, δ).
 struct HoleGeometry {
   double md = 0.0;               // s*
   double path_md = 0.0;          // s* clamped to the path (the warm start of the next search)

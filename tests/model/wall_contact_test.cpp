@@ -17,6 +17,7 @@
 #include <memory>
 #include <random>
 
+#include "core/error.hpp"
 #include "core/so3.hpp"
 #include "model/builder.hpp"
 #include "model/spring_elements.hpp"
@@ -145,6 +146,8 @@ ContactModel WithContacts(const ModelInput& input, const std::shared_ptr<const W
   ContactModel m;
   cms::ReductionCache cache;
   m.built = std::make_unique<BuiltModel>(BuildSystemModel(input, cache));
+  // The input has no hole profile, so the builder adds no wall contacts of its own.
+  if (!m.built->contact_elements.empty()) throw LogicError("WithContacts: the built model has wall contacts");
   const SystemModel& source = m.built->system;
   std::vector<Body> bodies = source.bodies();
   std::vector<std::unique_ptr<ForceElement>> elements;
@@ -520,6 +523,26 @@ TEST(WallContactTest, HighSideAngleConvention) {
     EXPECT_NEAR(r.md, 48.5, 1e-9);
     EXPECT_FALSE(r.in_contact);  // clearance 0.15 − 0.0635 > 0.04
   }
+}
+
+// Below the last survey station the hole continues straight along the last tangent: a node moved
+// 2 m past the end of the path (500 m MD) is measured in its own normal plane there.
+TEST(WallContactTest, BeyondTheEndOfThePath) {
+  const auto wellbore = StraightWell(60.0, 45.0, 0.3);
+  const well::PathFrame frame = wellbore->trajectory.Frame(500.0);
+  WallContactParameters p = HorizontalParameters();
+  auto one = OneBody{WithContacts(PipeInput(3.0, 1, 10, 4, *wellbore, 499.0, 0.0), wellbore, p, false), VecX()};
+  VecX dv = VecX::Zero(one.m.system->num_velocities());
+  dv.head<3>() = 2.0 * frame.tangent - 0.12 * frame.high_side;
+  one.q = one.m.system->Increment(one.m.system->ReferencePositions(), dv);
+  const auto poses = one.m.system->Poses(one.q);
+  const VecX rest = VecX::Zero(one.m.system->num_velocities());
+  const WallContactResult bit = one.m.contacts[0]->Result(StateOf(one.m, *one.m.contacts[0], poses, rest));
+  EXPECT_NEAR(bit.md, 501.0, 1e-9);
+  EXPECT_NEAR(bit.offset, 0.12, 1e-10);
+  EXPECT_NEAR(bit.penetration, 0.12 + 0.0635 - 0.15, 1e-10);
+  EXPECT_NEAR(bit.normal_force, 1e6 * (0.12 + 0.0635 - 0.15), 1e-4);
+  EXPECT_NEAR(bit.high_side_angle, kPi, 1e-9);
 }
 
 // ---------------------------------------------------------------------------------------------
