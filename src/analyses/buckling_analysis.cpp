@@ -1,4 +1,5 @@
 #include "analyses/buckling_analysis.hpp"
+#include "model/static_problem.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,31 +16,6 @@
 namespace drillflex::analyses {
 namespace {
 
-// The model as a static problem whose loads are `scale` × the solver's load factor: Newton's load
-// stepping then ramps from 0 to λ = scale.
-class ScaledLoadProblem : public solvers::StaticProblem {
- public:
-  ScaledLoadProblem(const model::SystemModel& model, double scale) : model_(model), scale_(scale) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
-  VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
-  VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
-    return model_.Residual(t, q, v, a, load_factor_);
-  }
-  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double cK, double cD,
-                            double cM) const override {
-    return model_.IterationMatrix(t, q, v, a, load_factor_, cK, cD, cM);
-  }
-  void SetLoadFactor(double load_factor) override { load_factor_ = scale_ * load_factor; }
-  double ForceScale() const override { return std::abs(scale_) * model_.force_scale(); }
-  bool IsIterationMatrixSymmetric() const override { return false; }
-
- private:
-  const model::SystemModel& model_;
-  double scale_;
-  double load_factor_ = 0.0;
-};
-
 struct Equilibrium {
   VecX q;
   bool converged = false;
@@ -48,7 +24,7 @@ struct Equilibrium {
 // The static equilibrium under λ × the case's loads, from the reference placement.
 Equilibrium SolveAt(const model::SystemModel& model, double load_factor) {
   if (load_factor == 0.0) return {model.ReferencePositions(), true};
-  ScaledLoadProblem problem(model, load_factor);
+  model::StaticModelProblem problem(model, load_factor);
   solvers::NewtonOptions options = DefaultNewtonOptions();
   options.throw_on_failure = false;
   const solvers::StaticResult result = solvers::SolveStatic(problem, model.ReferencePositions(), options);

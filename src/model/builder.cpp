@@ -26,15 +26,6 @@ fe::BodyFeOptions FeOptions(const ModelSettings& settings) {
   return options;
 }
 
-// Coupling stiffness of a body's section (method.md §5): c·(EA/ℓ, 12EI/ℓ³, 12EI/ℓ³, GJ/ℓ, EI/ℓ, EI/ℓ).
-Vec6 SectionCouplingStiffness(const Body& body, double factor) {
-  const double l = body.element_length;
-  Vec6 k;
-  k << body.axial_rigidity / l, 12.0 * body.bending_rigidity / (l * l * l), 12.0 * body.bending_rigidity / (l * l * l),
-      body.torsional_rigidity / l, body.bending_rigidity / l, body.bending_rigidity / l;
-  return factor * k;
-}
-
 // Masses (kg) and inertias (kg·m²) of one FE element of a body, for spring damping.
 Vec6 ElementInertia(const Body& body) {
   const auto& spec = body.reduced->spec;
@@ -156,6 +147,14 @@ double ContactDiameterAt(const StringConfig& string, double s) {
     return component.outer_diameter;
   }
   return string.components.back().outer_diameter;
+}
+
+Vec6 SectionCouplingStiffness(const Body& body, double factor) {
+  const double l = body.element_length;
+  Vec6 k;
+  k << body.axial_rigidity / l, 12.0 * body.bending_rigidity / (l * l * l), 12.0 * body.bending_rigidity / (l * l * l),
+      body.torsional_rigidity / l, body.bending_rigidity / l, body.bending_rigidity / l;
+  return factor * k;
 }
 
 std::vector<Support> DefaultWellSupports(double string_length) {

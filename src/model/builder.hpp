@@ -11,6 +11,7 @@
 
 #include "cms/reduction_cache.hpp"
 #include "fe/material.hpp"
+#include "model/spring_elements.hpp"
 #include "model/string_config.hpp"
 #include "model/system_model.hpp"
 #include "well/trajectory.hpp"
@@ -37,6 +38,9 @@ struct ModelInput {
 // carries the WOB as an applied force), and the top held axially by the hook and in torsion by the
 // rotary table, free to lie on the wall.
 std::vector<Support> DefaultWellSupports(double string_length);
+
+// Coupling stiffness of a body's section (method.md §5): c·(EA/ℓ, 12EI/ℓ³, 12EI/ℓ³, GJ/ℓ, EI/ℓ, EI/ℓ).
+Vec6 SectionCouplingStiffness(const Body& body, double factor);
 
 // The diameter that touches the wall at a distance s (m) from the bit: blade, tool joint or body.
 double ContactDiameterAt(const StringConfig& string, double s);

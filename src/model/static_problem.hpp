@@ -1,6 +1,10 @@
 // The model as a problem for the static Newton solver (solvers/newton.hpp): v = a = 0, the load
-// factor scales every applied load (gravity, point and distributed loads, WOB).
+// factor scales every applied load (gravity, point and distributed loads, WOB). With a
+// `load_scale`, the model's loads are load_scale × the solver's load factor, so that the solver's
+// load stepping from 0 to 1 ramps the loads to load_scale times the case's (buckling analysis).
 #pragma once
+
+#include <cmath>
 
 #include "model/system_model.hpp"
 #include "solvers/problem.hpp"
@@ -9,7 +13,8 @@ namespace drillflex::model {
 
 class StaticModelProblem : public solvers::StaticProblem {
  public:
-  explicit StaticModelProblem(const SystemModel& model) : model_(model) {}
+  explicit StaticModelProblem(const SystemModel& model, double load_scale = 1.0)
+      : model_(model), load_scale_(load_scale), load_factor_(load_scale) {}
 
   int num_positions() const override { return model_.num_positions(); }
   int num_velocities() const override { return model_.num_velocities(); }
@@ -21,14 +26,15 @@ class StaticModelProblem : public solvers::StaticProblem {
                             double cM) const override {
     return model_.IterationMatrix(t, q, v, a, load_factor_, cK, cD, cM);
   }
-  void SetLoadFactor(double load_factor) override { load_factor_ = load_factor; }
-  double ForceScale() const override { return model_.force_scale(); }
+  void SetLoadFactor(double load_factor) override { load_factor_ = load_scale_ * load_factor; }
+  double ForceScale() const override { return std::abs(load_scale_) * model_.force_scale(); }
   bool IsIterationMatrixSymmetric() const override { return false; }
   double load_factor() const { return load_factor_; }
 
  private:
   const SystemModel& model_;
-  double load_factor_ = 1.0;
+  double load_scale_ = 1.0;
+  double load_factor_ = 1.0;  // the model's load factor: load_scale × the solver's
 };
 
 }  // namespace drillflex::model

@@ -88,15 +88,6 @@ TEST(Rotation, FreeStringFrequenciesInvariantUnderRigidRotation) {
   }
 }
 
-// Section coupling stiffness, as model/builder.cpp sets it (method.md §5).
-Vec6 SectionStiffness(const Body& body, double factor) {
-  const double l = body.element_length;
-  Vec6 k;
-  k << body.axial_rigidity / l, 12.0 * body.bending_rigidity / (l * l * l), 12.0 * body.bending_rigidity / (l * l * l),
-      body.torsional_rigidity / l, body.bending_rigidity / l, body.bending_rigidity / l;
-  return factor * k;
-}
-
 // The model of `input` laid along R x instead of x: built by the builder, then every body's reference
 // placement, every support frame and every point load turned by R about the origin; the couplings
 // keep the builder's stiffness. Damping is left out (zero): these tests use K, M and statics only.
@@ -123,7 +114,7 @@ SystemModel BuildTurnedModel(const ModelInput& input, const Mat3& R, cms::Reduct
     const Body& body = bodies[b];
     const Mat3 frame = body.reference_orientation.toRotationMatrix();
     const Vec3 position = body.reference_position + frame * body.reduced->node_positions[node];
-    Vec6 stiffness = kSupportStiffnessFactor * SectionStiffness(body, input.settings.coupling_factor);
+    Vec6 stiffness = kSupportStiffnessFactor * SectionCouplingStiffness(body, input.settings.coupling_factor);
     for (int d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
     elements.push_back(std::make_unique<SupportElement>(&body, node, position, frame, stiffness, Vec6::Zero()));
   }
