@@ -1,4 +1,5 @@
 #include "cms/craig_bampton.hpp"
+#include "../fe/v1_rod.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,19 +19,7 @@ using fe::testing::LowestEigenvalues;
 using fe::testing::Restrict;
 using fe::testing::SelectDofs;
 
-// The V1 rod (validation.md): L = 5.08 m, D = 0.0762 m, E = 2.1e11 Pa, ρ = 7800 kg/m³, with
-// Euler–Bernoulli inertia (no bending rotary inertia) unless asked.
-fe::BodySpec V1Rod(int elements, fe::MassKind mass = fe::MassKind::kConsistent,
-                   bool rotary = false) {
-  fe::BodySpec spec;
-  spec.section = {0.0762, 0.0};
-  spec.material = {"steel", 2.1e11, 0.3, 7800.0};
-  spec.length = 5.08;
-  spec.element_count = elements;
-  spec.options.mass = mass;
-  spec.options.bending_rotary_inertia = rotary;
-  return spec;
-}
+using fe::testing::V1Rod;
 
 // λ = ω sqrt(m L⁴ / EI) of the V1 rod, m = ρA.
 double Dimensionless(double omega, const fe::BodySpec& spec) {

@@ -1,4 +1,5 @@
 #include "fe/body_fe_model.hpp"
+#include "v1_rod.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,17 +17,7 @@ using testing::LowestEigenvalues;
 using testing::Restrict;
 using testing::SelectDofs;
 
-// The V1 rod (validation.md): solid steel, L = 5.08 m, D = 0.0762 m, E = 2.1e11 Pa, ρ = 7800.
-BodySpec V1Rod(int elements, MassKind mass, bool rotary = false) {
-  BodySpec spec;
-  spec.section = {0.0762, 0.0};
-  spec.material = {"steel", 2.1e11, 0.3, 7800.0};
-  spec.length = 5.08;
-  spec.element_count = elements;
-  spec.options.mass = mass;
-  spec.options.bending_rotary_inertia = rotary;
-  return spec;
-}
+using fe::testing::V1Rod;
 
 double Rel(double value, double reference) {
   return std::abs(value - reference) / std::abs(reference);
