@@ -134,21 +134,6 @@ int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const Li
 }
 
 solvers::ModalResult LowestModes(const LinearizedSystem& system, int count) {
-  const Eigen::Index n = system.stiffness.rows();
-  if (n > solvers::kDenseModalLimit) {
-    try {
-      const solvers::BucklingResult lowest = solvers::SolveBuckling(system.stiffness, -system.mass, count);
-      if (lowest.multipliers.size() == std::min<Eigen::Index>(count, n)) {
-        solvers::ModalResult result{lowest.multipliers, lowest.modes};
-        for (Eigen::Index j = 0; j < result.vectors.cols(); ++j) {
-          result.vectors.col(j) /= std::sqrt(result.vectors.col(j).dot(system.mass * result.vectors.col(j)));
-        }
-        return result;
-      }
-    } catch (const SolverError&) {
-      // K is not positive definite (free string, or beyond buckling): the shift-invert path.
-    }
-  }
   return solvers::SolveModes(system.stiffness, system.mass, count);
 }
 

@@ -1,6 +1,6 @@
 // Linear vibration modes (method.md §9.2) about a state q: K = ∂R/∂q at q (v = a = 0, load
 // factor 1: the geometric stiffening of the loads in that state is included), M = M(q);
-// K x = ω² M x (LowestModes below: dense, or sparse Lanczos for large models). Each mode is
+// K x = ω² M x (solvers::SolveModes: dense, or sparse Lanczos for large models). Each mode is
 // classified by the split of its kinetic energy ½ xᵀ M x over the nodes into axial, torsional and
 // lateral parts.
 #pragma once
@@ -60,15 +60,7 @@ LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, doubl
 
 inline constexpr int kMaxModesSearched = 400;
 
-// The `count` lowest modes of K x = ω² M x (ascending, M-normalised). Above the dense limit and
-// for a positive definite K (a supported string below buckling) they are found as the smallest
-// positive multipliers μ = ω² of (K − μ M) x = 0 by solvers::SolveBuckling (Lanczos on the
-// Cholesky factor of K, whose largest 1/ω² converge fast); otherwise (K singular or indefinite)
-// by solvers::SolveModes. Measured on a 1000-body (18,000 DOF) string: 10 modes in 0.35 s
-// against 0.72 s by SolveModes (with its pole at the shift, solvers commit cdb7887; before that
-// fix SolveModes's pole sat 1e-9 max(K_ii/M_ii) ≈ 1e4 rad²/s² below the shift and did not
-// converge at all for ω² ~ 1e-3). The two agree to 1.4e-4 on ω² = 4e-3 of a 3 km span, the
-// round-off level of the stiff couplings.
+// The `count` lowest modes of K x = ω² M x (ascending, M-normalised): solvers::SolveModes.
 solvers::ModalResult LowestModes(const LinearizedSystem& system, int count);
 
 // The number of rigid-body modes of the linearized system at q: the rigid motions of the whole
