@@ -82,10 +82,12 @@ StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& set
                        const VecX* start = nullptr);
 
 // A string in a well on the default supports (model::DefaultWellSupports: the top free to lie on
-// the wall). From the centreline the top's lateral freedom is a mechanism until the string
-// touches the wall, so the equilibrium is found in two stages: first with the top also held at the
-// hole centre (the string settles onto the wall below it), then released. `input` is what `built`
-// was built from; the first stage's model reuses the reductions in `cache`. Other cases: RunStatic.
+// the wall). Newton starts from the string resting on the wall (analyses/resting_start.hpp):
+// first with soft couplings and no torque on bit, then twisted by the torque on bit and solved at
+// the case's settings. Should that fail, the slower fallback starts from the centreline with the
+// top also held at the hole centre and releases it by a homotopy in the hold's stiffness. `input`
+// is what `built` was built from; the intermediate models reuse the reductions in `cache`.
+// Other cases: RunStatic.
 StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
                              cms::ReductionCache& cache, const StaticSettings& settings);
 

@@ -31,4 +31,25 @@ void SetReferencePose(const Body& body, VecX& q) {
   q.segment(body.q_offset + 7, body.flexible_count).setZero();
 }
 
+void TwistKeepingShape(const Body& body, double angle, VecX& q) {
+  Quat rotation(q[body.q_offset + 3], q[body.q_offset + 4], q[body.q_offset + 5], q[body.q_offset + 6]);
+  rotation = rotation * Quat(Eigen::AngleAxisd(angle, Vec3::UnitX()));
+  rotation.normalize();
+  q.segment<4>(body.q_offset + 3) << rotation.w(), rotation.x(), rotation.y(), rotation.z();
+  const int modes = body.flexible_count;
+  if (modes == 0) return;
+  const int nodes = body.node_count();
+  const Mat3 back = Eigen::AngleAxisd(-angle, Vec3::UnitX()).toRotationMatrix();
+  const VecX eta = q.segment(body.q_offset + 7, modes);
+  MatX basis(6 * nodes, modes);
+  VecX target(6 * nodes);
+  for (int k = 0; k < nodes; ++k) {
+    basis.middleRows(6 * k, 3) = body.reduced->node_translation_modes[k];
+    basis.middleRows(6 * k + 3, 3) = body.reduced->node_rotation_modes[k];
+    target.segment<3>(6 * k) = back * (body.reduced->node_translation_modes[k] * eta);
+    target.segment<3>(6 * k + 3) = back * (body.reduced->node_rotation_modes[k] * eta);
+  }
+  q.segment(body.q_offset + 7, modes) = basis.colPivHouseholderQr().solve(target);
+}
+
 }  // namespace drillflex::model

@@ -65,4 +65,11 @@ BodyPose PoseOf(const Body& body, const VecX& q);
 // Writes the undeformed placement of the body into q (η = 0).
 void SetReferencePose(const Body& body, VecX& q);
 
+// Turns the body's frame about its own x axis (the string axis) by `angle` (rad) and re-expresses
+// its elastic coordinates so that the deformed shape stays where it is in space: A ← A Rx(angle),
+// η ← the least-squares fit of [Φ_k; Ψ_k] η' = Rx(−angle) [Φ_k; Ψ_k] η over all nodes (exact when the
+// modes span bending in both planes alike, as for a round section). Nodes on the x axis do not
+// move, so the rest of the string is unaffected except through the twist itself.
+void TwistKeepingShape(const Body& body, double angle, VecX& q);
+
 }  // namespace drillflex::model

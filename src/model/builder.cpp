@@ -108,8 +108,10 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
   return bodies;
 }
 
+}  // namespace
+
 // Buoyed weight per length, N/m (method.md §7): g (ρ_s A − ρ_f A_o + ρ_f,i A_i).
-double WeightPerLength(const Body& body, const ModelInput& input) {
+double BuoyedWeightPerLength(const Body& body, const ModelInput& input) {
   const auto& spec = body.reduced->spec;
   double mass_per_length = spec.material.density * spec.section.area();
   if (input.fluid) {
@@ -118,8 +120,6 @@ double WeightPerLength(const Body& body, const ModelInput& input) {
   }
   return input.gravity * mass_per_length;
 }
-
-}  // namespace
 
 // The contact diameter at a distance s from the bit: the blade OD over a stabilizer's blades
 // (centred on the stabilizer when their length is given, else over all of it), the tool-joint OD
@@ -240,7 +240,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     const Mat3 frame = body.reference_orientation.toRotationMatrix();
     auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
     auto node_s = [&](int k) { return body.s_start + body.reduced->node_positions[k].x(); };
-    const double weight = WeightPerLength(body, input);
+    const double weight = BuoyedWeightPerLength(body, input);
     const Vec3 gravity_load = weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]);
     for (int k = 0; k + 1 < nodes; ++k) {
       if (weight != 0.0) {

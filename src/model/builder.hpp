@@ -42,6 +42,9 @@ std::vector<Support> DefaultWellSupports(double string_length);
 // Coupling stiffness of a body's section (method.md §5): c·(EA/ℓ, 12EI/ℓ³, 12EI/ℓ³, GJ/ℓ, EI/ℓ, EI/ℓ).
 Vec6 SectionCouplingStiffness(const Body& body, double factor);
 
+// Buoyed weight per length of a body's section, N/m (method.md §7): g (ρ_s A − ρ_f A_o + ρ_f,i A_i).
+double BuoyedWeightPerLength(const Body& body, const ModelInput& input);
+
 // The diameter that touches the wall at a distance s (m) from the bit: blade, tool joint or body.
 double ContactDiameterAt(const StringConfig& string, double s);
 

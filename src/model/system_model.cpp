@@ -1,5 +1,6 @@
 #include "model/system_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -52,6 +53,21 @@ VecX SystemModel::Increment(const VecX& q, const VecX& dv) const {
     result.segment(qo + 7, body.flexible_count) += dv.segment(vo + 6, body.flexible_count);
   }
   return result;
+}
+
+double SystemModel::LargestNodeTranslation(const VecX& q, const VecX& dv) const {
+  double largest = 0.0;
+  for (const Body& body : bodies_) {
+    const BodyPose pose = PoseOf(body, q);
+    const Vec3 dr = dv.segment<3>(body.v_offset);
+    const Vec3 dtheta = dv.segment<3>(body.v_offset + 3);
+    const auto deta = dv.segment(body.v_offset + 6, body.flexible_count);
+    for (int k = 0; k < body.node_count(); ++k) {
+      const Vec3 local = dtheta.cross(pose.NodeOffset(body, k)) + body.reduced->node_translation_modes[k] * deta;
+      largest = std::max(largest, (dr + pose.A * local).norm());
+    }
+  }
+  return largest;
 }
 
 std::vector<BodyPose> SystemModel::Poses(const VecX& q) const {

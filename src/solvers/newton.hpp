@@ -33,7 +33,8 @@ struct NewtonOptions {
   // |R| of the start state at full load (λ = 1); 1 N if that is zero as well.
   double force_scale = 0.0;
   double increment_tolerance = 0.0;  // on |dv|∞ (units of v); 0 = not used
-  // Largest |dv|∞ of one Newton step (units of v); a longer step is scaled down to it (a trust
+  // Largest StaticProblem::StepLength of one Newton step (by default |dv|∞ in units of v; for the
+  // string model the largest node translation in m); a longer step is scaled down to it (a trust
   // radius: e.g. a fraction of the hole clearance, so that contacts close gradually). 0 = none.
   double max_increment = 0.0;
   int max_iterations = 25;           // per load step

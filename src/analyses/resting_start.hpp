@@ -1,0 +1,39 @@
+// A start for the static Newton solve of a string in a well: the string moved from the hole axis
+// onto the wall it will rest on.
+//
+// From the centreline, Newton has to find which of hundreds of contacts close while the whole
+// string falls through its clearance; capped steps and load stepping then take thousands of
+// iterations. A soft-string estimate (the classic torque-and-drag model: Johancsik et al., SPE
+// 11380, 1984, friction left out) says where each part of the string rests: its lateral load per
+// length is
+//   f⊥ = w_b (ĝ − (ĝ·t) t) + T κ,
+// with w_b the buoyed weight per length, t the hole tangent, κ = dt/ds the curvature vector (toward
+// the centre of the bend; tension pulls the string to the inside of a bend, compression pushes it
+// out) and T the axial force (tension positive) from T(0) = −WOB and dT/ds = w_b cos I up the hole.
+// Each node is moved along f⊥ by the radial clearance left at the largest contact diameter near it
+// (the tool joints, blades or body within half a standard joint spacing), ramped from zero at the
+// bit, which its support holds at the hole centre. The bodies are laid as a chain of rigid chords
+// through the moved nodes (η = 0), so the couplings stay closed; Newton then adds the bending, the
+// sag between joints and the exact contact set.
+//
+// The torque on bit twists the string by radians over a few hundred metres of drill pipe. A Newton
+// step that turns a bent body about its axis also turns its bending (held in body coordinates),
+// an error of second order that the stiff couplings amplify; so the twist is put in before the
+// solve, with the shape kept (model::TwistKeepingShape): with the top held in torsion and the
+// torque on bit a moment about the string axis, θ(s) = TOB ∫_s^top ds'/GJ.
+#pragma once
+
+#include "core/types.hpp"
+#include "model/builder.hpp"
+
+namespace drillflex::analyses {
+
+// The positions q of the string resting on the wall, for `built` made from `input` (which must
+// have a trajectory and a hole). Throws LogicError without them.
+VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built);
+
+// Turns each body of `system` about its axis by the twist θ of the torque on bit at its middle,
+// keeping the string's shape.
+void TwistUnderTorqueOnBit(const model::ModelInput& input, const model::SystemModel& system, VecX& q);
+
+}  // namespace drillflex::analyses
