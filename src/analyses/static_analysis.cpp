@@ -8,6 +8,7 @@
 
 #include "analyses/dynamic_relaxation.hpp"
 #include "analyses/resting_start.hpp"
+#include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
 #include "model/internal_forces.hpp"
 #include "model/spring_elements.hpp"
@@ -172,6 +173,7 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
 // Fills in the results along the string, the reactions, the contacts and the bit.
 StaticResult WithResults(const model::BuiltModel& built, StaticResult result) {
   result.nodes = StaticNodeResults(built.system, result.q, 1.0);
+  AddWallOffsets(built, result.q, result.nodes);
   result.reactions = SupportReactions(built, result.q);
   result.contacts = ContactReports(built, result.q);
   result.bit = ComputeBitReport(built, result);

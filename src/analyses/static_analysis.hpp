@@ -30,6 +30,15 @@ struct StaticNodeResult {
   Vec3 moment = Vec3::Zero();          // (T, M_y, M_z) string frame
   double bending_stress = 0.0;         // M (OD/2) / I, Pa
   double von_mises_stress = 0.0;       // sqrt(σ² + 3τ²), σ = |N|/A + M c/I, τ = T c/J, Pa
+  // The node's place in the hole (analyses/wall_offsets.hpp); set only with a well (has_wall).
+  // hole_offset is measured from the hole axis, lateral_offset from the undeformed placement.
+  bool has_wall = false;                // the fields below are set
+  bool wall_contact = false;            // a wall contact acts at the node (all but the bit's nodes)
+  double md = 0.0;                      // MD of the hole cross-section through the node, m
+  double hole_offset = 0.0;             // ρ: distance of the node from the hole axis, m
+  double offset_high_side_angle = 0.0;  // direction of the offset, rad: 0 high side, π/2 right, π low side
+  double clearance = 0.0;               // R_h − R_c − ρ, m (< 0: pressed into the wall by N/k_n)
+  double hole_diameter = 0.0;           // D at md, m
 };
 
 // The reaction a case support exerts on the string, string frame at the support.

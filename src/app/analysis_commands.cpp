@@ -1,10 +1,12 @@
 // `drillflex static|modes|buckling|run CASE [-o DIR]`: build the model of a case, run the
 // analyses, print a summary in the case's units and write the results atomically.
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include "analyses/bit_tendency.hpp"
 #include "analyses/buckling_analysis.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
@@ -30,34 +32,58 @@ std::string Show(const io::Case& c, double si, Quantity quantity, int digits = 5
 void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
   std::cout << fmt::format("static: converged in {} Newton iterations, {} load steps (|R| = {:.3g} N)\n",
                            result.iterations, result.load_steps, result.residual_norm);
+  // Where along the string: s from the bit, and the MD with a well.
+  auto where = [&](double s, double md) {
+    return c.well ? fmt::format("{} from the bit (MD {})", Show(c, s, Quantity::Length), Show(c, md, Quantity::Length))
+                  : fmt::format("{} from the bit", Show(c, s, Quantity::Length));
+  };
   const analyses::StaticNodeResult* widest = nullptr;
   const analyses::StaticNodeResult* stressed = nullptr;
+  const analyses::StaticNodeResult* tightest = nullptr;  // smallest clearance of a node with a wall contact
   for (const auto& node : result.nodes) {
     if (!widest || node.lateral_offset > widest->lateral_offset) widest = &node;
     if (!stressed || node.von_mises_stress > stressed->von_mises_stress) stressed = &node;
+    if (node.wall_contact && (!tightest || node.clearance < tightest->clearance)) tightest = &node;
   }
+  auto md_of = [&](const analyses::StaticNodeResult& node) {
+    return node.has_wall ? node.md : io::StationMd(c, node.s);
+  };
   if (widest) {
-    std::cout << fmt::format("  largest lateral displacement {} at {} from the bit\n",
-                             Show(c, widest->lateral_offset, Quantity::Diameter), Show(c, widest->s, Quantity::Length));
-    std::cout << fmt::format("  peak von Mises stress {} at {} from the bit (bending {}, axial force {})\n",
-                             Show(c, stressed->von_mises_stress, Quantity::Stress), Show(c, stressed->s, Quantity::Length),
+    std::cout << fmt::format("  largest lateral displacement {} at {}\n",
+                             Show(c, widest->lateral_offset, Quantity::Diameter), where(widest->s, md_of(*widest)));
+    std::cout << fmt::format("  peak von Mises stress {} at {} (bending {}, axial force {})\n",
+                             Show(c, stressed->von_mises_stress, Quantity::Stress),
+                             where(stressed->s, md_of(*stressed)),
                              Show(c, stressed->bending_stress, Quantity::Stress),
                              Show(c, stressed->axial_force, Quantity::Force));
   }
-  if (!result.contacts.empty()) {
-    const auto& first = result.contacts.front();
-    double largest = 0.0;
-    for (const auto& contact : result.contacts) largest = std::max(largest, contact.normal_force);
-    std::cout << fmt::format("  {} wall contacts carry force; the first at {} from the bit ({} MD); largest {}\n",
-                             result.contacts.size(), Show(c, first.s, Quantity::Length), Show(c, first.md, Quantity::Length),
-                             Show(c, largest, Quantity::Force));
+  if (c.well) {
+    if (result.contacts.empty()) {
+      std::cout << "  no wall contact carries force\n";
+    } else {
+      const auto largest =
+          std::max_element(result.contacts.begin(), result.contacts.end(),
+                           [](const auto& a, const auto& b) { return a.normal_force < b.normal_force; });
+      std::cout << fmt::format("  {} wall contacts carry force; the largest {} at {} ({})\n", result.contacts.size(),
+                               Show(c, largest->normal_force, Quantity::Force), where(largest->s, largest->md),
+                               c.string.components.at(largest->component).name);
+    }
+  }
+  if (tightest) {
+    std::cout << fmt::format("  smallest clearance to the wall {} at {}{}\n",
+                             Show(c, tightest->clearance, Quantity::Diameter), where(tightest->s, tightest->md),
+                             tightest->clearance < 0.0 ? " (negative: into the wall, normal force / contact stiffness)"
+                                                       : "");
   }
   if (result.bit) {
     const auto& bit = *result.bit;
-    std::cout << fmt::format("  bit: side force {}, build {} ({}), walk {} ({}), tilt {:.4g} deg\n",
-                             Show(c, bit.side_force, Quantity::Force), Show(c, bit.build_force, Quantity::Force),
-                             bit.build_force >= 0.0 ? "build" : "drop", Show(c, bit.walk_force, Quantity::Force),
-                             bit.walk_force >= 0.0 ? "right" : "left", bit.tilt / kDegree);
+    const analyses::BitTendency tendency = analyses::ClassifyBitTendency(bit);
+    std::cout << fmt::format("  bit: side force {}: {} (build force {}), walk {} (walk force {}); tilt {:.4g} deg; "
+                             "a tendency needs more than {}\n",
+                             Show(c, bit.side_force, Quantity::Force), analyses::TendencyName(tendency.inclination),
+                             Show(c, bit.build_force, Quantity::Force), analyses::TendencyName(tendency.azimuth),
+                             Show(c, bit.walk_force, Quantity::Force), bit.tilt / kDegree,
+                             Show(c, tendency.threshold, Quantity::Force, 3));
   }
   for (const auto& reaction : result.reactions) {
     std::cout << fmt::format("  support at {}: force [{}, {}, {}]\n", Show(c, reaction.s, Quantity::Length),

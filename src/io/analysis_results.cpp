@@ -1,6 +1,10 @@
 #include "io/analysis_results.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
+
+#include "analyses/bit_tendency.hpp"
 
 namespace drillflex::io {
 namespace {
@@ -40,73 +44,131 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
                           {"position", out.Unit(Quantity::Length)}, {"displacement", out.Unit(Quantity::Diameter)},
                           {"rotation", "deg"},                      {"lateral_offset", out.Unit(Quantity::Diameter)},
                           {"force", out.Unit(Quantity::Force)},     {"moment", out.Unit(Quantity::Moment)},
-                          {"stress", out.Unit(Quantity::Stress)},   {"frequency", "Hz"}};
+                          {"stress", out.Unit(Quantity::Stress)},   {"frequency", "Hz"},
+                          {"hole_offset", out.Unit(Quantity::Diameter)},
+                          {"offset_high_side_angle", "deg"},
+                          {"clearance", out.Unit(Quantity::Diameter)},
+                          {"hole_diameter", out.Unit(Quantity::Diameter)}};
 }
+
+namespace {
+
+// Station results: static.csv rows and the "nodes" of results.json. With a well (a node has_wall),
+// the MD is the contact's (of the hole cross-section through the node) and the place in the hole
+// is added: hole_offset, offset_high_side_angle, clearance, hole_diameter.
+json AddStaticNodes(const Case& c, const std::vector<analyses::StaticNodeResult>& nodes, ResultFiles& files) {
+  const OutputUnits out{c.output_units};
+  const bool in_hole = std::any_of(nodes.begin(), nodes.end(), [](const auto& node) { return node.has_wall; });
+  std::vector<std::string> columns{"s",  "md", "x",  "y",  "z", "ux", "uy", "uz", "rx", "ry", "rz", "lateral_offset",
+                                   "axial_force", "torque", "shear_force", "bending_moment", "bending_stress",
+                                   "von_mises_stress"};
+  if (in_hole) columns.insert(columns.end(), {"hole_offset", "offset_high_side_angle", "clearance", "hole_diameter"});
+  CsvTable table(std::move(columns));
+  json rows = json::array();
+  for (const auto& node : nodes) {
+    const double md = node.has_wall ? node.md : StationMd(c, node.s);
+    const Vec3 rotation_deg = node.rotation / kDegree;
+    std::vector<double> row{out(node.s, Quantity::Length),
+                            out(md, Quantity::Length),
+                            out(node.position.x(), Quantity::Length),
+                            out(node.position.y(), Quantity::Length),
+                            out(node.position.z(), Quantity::Length),
+                            out(node.displacement.x(), Quantity::Diameter),
+                            out(node.displacement.y(), Quantity::Diameter),
+                            out(node.displacement.z(), Quantity::Diameter),
+                            rotation_deg.x(),
+                            rotation_deg.y(),
+                            rotation_deg.z(),
+                            out(node.lateral_offset, Quantity::Diameter),
+                            out(node.axial_force, Quantity::Force),
+                            out(node.torque, Quantity::Moment),
+                            out(node.shear_force, Quantity::Force),
+                            out(node.bending_moment, Quantity::Moment),
+                            out(node.bending_stress, Quantity::Stress),
+                            out(node.von_mises_stress, Quantity::Stress)};
+    json entry = {{"s", out(node.s, Quantity::Length)},
+                  {"md", out(md, Quantity::Length)},
+                  {"position", out.Vector(node.position, Quantity::Length)},
+                  {"displacement", out.Vector(node.displacement, Quantity::Diameter)},
+                  {"rotation", json::array({rotation_deg.x(), rotation_deg.y(), rotation_deg.z()})},
+                  {"lateral_offset", out(node.lateral_offset, Quantity::Diameter)},
+                  {"axial_force", out(node.axial_force, Quantity::Force)},
+                  {"torque", out(node.torque, Quantity::Moment)},
+                  {"bending_moment", out(node.bending_moment, Quantity::Moment)},
+                  {"shear_force", out(node.shear_force, Quantity::Force)},
+                  {"bending_stress", out(node.bending_stress, Quantity::Stress)},
+                  {"von_mises_stress", out(node.von_mises_stress, Quantity::Stress)}};
+    if (in_hole) {
+      const std::vector<double> hole{out(node.hole_offset, Quantity::Diameter),
+                                     node.offset_high_side_angle / kDegree,
+                                     out(node.clearance, Quantity::Diameter),
+                                     out(node.hole_diameter, Quantity::Diameter)};
+      row.insert(row.end(), hole.begin(), hole.end());
+      entry["hole_offset"] = hole[0];
+      entry["offset_high_side_angle"] = hole[1];
+      entry["clearance"] = hole[2];
+      entry["hole_diameter"] = hole[3];
+    }
+    table.AddRow(row);
+    rows.push_back(std::move(entry));
+  }
+  files.Add("static.csv", table.ToString());
+  return rows;
+}
+
+// The wall contacts carrying force: contacts.csv (when there are any) and results.json.
+json AddStaticContacts(const Case& c, const std::vector<analyses::ContactReport>& reports, ResultFiles& files) {
+  const OutputUnits out{c.output_units};
+  json contacts = json::array();
+  CsvTable contact_table({"s", "md", "normal_force", "friction_force", "high_side_angle"});
+  for (const auto& contact : reports) {
+    const double angle = contact.high_side_angle / kDegree;
+    contact_table.AddRow({out(contact.s, Quantity::Length), out(contact.md, Quantity::Length),
+                          out(contact.normal_force, Quantity::Force), out(contact.friction_force, Quantity::Force),
+                          angle});
+    contacts.push_back({{"s", out(contact.s, Quantity::Length)},
+                        {"md", out(contact.md, Quantity::Length)},
+                        {"component", c.string.components.at(contact.component).name},
+                        {"normal_force", out(contact.normal_force, Quantity::Force)},
+                        {"friction_force", out(contact.friction_force, Quantity::Force)},
+                        {"high_side_angle", angle}});
+  }
+  if (!reports.empty()) files.Add("contacts.csv", contact_table.ToString());
+  return contacts;
+}
+
+json BitJson(const Case& c, const analyses::BitReport& bit) {
+  const OutputUnits out{c.output_units};
+  const analyses::BitTendency tendency = analyses::ClassifyBitTendency(bit);
+  return {{"side_force", out(bit.side_force, Quantity::Force)},
+          {"build_force", out(bit.build_force, Quantity::Force)},
+          {"walk_force", out(bit.walk_force, Quantity::Force)},
+          {"tilt", bit.tilt / kDegree},
+          {"tendency",
+           {{"inclination", analyses::TendencyName(tendency.inclination)},
+            {"azimuth", analyses::TendencyName(tendency.azimuth)},
+            {"threshold", out(tendency.threshold, Quantity::Force)}}}};
+}
+
+}  // namespace
 
 void AddStaticResults(const Case& c, const analyses::StaticResult& result, ResultFiles& files) {
   const OutputUnits out{c.output_units};
-  CsvTable table({"s", "md", "x", "y", "z", "ux", "uy", "uz", "rx", "ry", "rz", "lateral_offset", "axial_force",
-                  "torque", "shear_force", "bending_moment", "bending_stress", "von_mises_stress"});
-  json nodes = json::array();
-  for (const auto& node : result.nodes) {
-    const double md = StationMd(c, node.s);
-    const Vec3 rotation_deg = node.rotation / kDegree;
-    table.AddRow({out(node.s, Quantity::Length), out(md, Quantity::Length), out(node.position.x(), Quantity::Length),
-                  out(node.position.y(), Quantity::Length), out(node.position.z(), Quantity::Length),
-                  out(node.displacement.x(), Quantity::Diameter), out(node.displacement.y(), Quantity::Diameter),
-                  out(node.displacement.z(), Quantity::Diameter), rotation_deg.x(), rotation_deg.y(), rotation_deg.z(),
-                  out(node.lateral_offset, Quantity::Diameter), out(node.axial_force, Quantity::Force),
-                  out(node.torque, Quantity::Moment), out(node.shear_force, Quantity::Force),
-                  out(node.bending_moment, Quantity::Moment), out(node.bending_stress, Quantity::Stress),
-                  out(node.von_mises_stress, Quantity::Stress)});
-    nodes.push_back({{"s", out(node.s, Quantity::Length)},
-                     {"md", out(md, Quantity::Length)},
-                     {"position", out.Vector(node.position, Quantity::Length)},
-                     {"displacement", out.Vector(node.displacement, Quantity::Diameter)},
-                     {"rotation", json::array({rotation_deg.x(), rotation_deg.y(), rotation_deg.z()})},
-                     {"lateral_offset", out(node.lateral_offset, Quantity::Diameter)},
-                     {"axial_force", out(node.axial_force, Quantity::Force)},
-                     {"torque", out(node.torque, Quantity::Moment)},
-                     {"bending_moment", out(node.bending_moment, Quantity::Moment)},
-                     {"shear_force", out(node.shear_force, Quantity::Force)},
-                     {"bending_stress", out(node.bending_stress, Quantity::Stress)},
-                     {"von_mises_stress", out(node.von_mises_stress, Quantity::Stress)}});
-  }
   json reactions = json::array();
   for (const auto& reaction : result.reactions) {
     reactions.push_back({{"s", out(reaction.s, Quantity::Length)},
                          {"force", out.Vector(reaction.force, Quantity::Force)},
                          {"moment", out.Vector(reaction.moment, Quantity::Moment)}});
   }
-  json contacts = json::array();
-  CsvTable contact_table({"s", "md", "normal_force", "friction_force", "high_side_angle"});
-  for (const auto& contact : result.contacts) {
-    const double angle = contact.high_side_angle / kDegree;
-    contact_table.AddRow({out(contact.s, Quantity::Length), out(contact.md, Quantity::Length),
-                          out(contact.normal_force, Quantity::Force), out(contact.friction_force, Quantity::Force), angle});
-    contacts.push_back({{"s", out(contact.s, Quantity::Length)},
-                        {"md", out(contact.md, Quantity::Length)},
-                        {"component", c.string.components[contact.component].name},
-                        {"normal_force", out(contact.normal_force, Quantity::Force)},
-                        {"friction_force", out(contact.friction_force, Quantity::Force)},
-                        {"high_side_angle", angle}});
-  }
-  if (!result.contacts.empty()) files.Add("contacts.csv", contact_table.ToString());
-  files.Add("static.csv", table.ToString());
   files.json()["static"] = {{"converged", result.converged},
                             {"iterations", result.iterations},
                             {"load_steps", result.load_steps},
                             {"residual_norm", out(result.residual_norm, Quantity::Force)},
-                            {"nodes", nodes},
-                            {"contacts", contacts},
+                            {"nodes", AddStaticNodes(c, result.nodes, files)},
+                            {"contacts", AddStaticContacts(c, result.contacts, files)},
                             {"reactions", reactions},
                             {"table", "static.csv"}};
-  if (result.bit) {
-    files.json()["static"]["bit"] = {{"side_force", out(result.bit->side_force, Quantity::Force)},
-                                     {"build_force", out(result.bit->build_force, Quantity::Force)},
-                                     {"walk_force", out(result.bit->walk_force, Quantity::Force)},
-                                     {"tilt", result.bit->tilt / kDegree}};
-  }
+  if (result.bit) files.json()["static"]["bit"] = BitJson(c, *result.bit);
 }
 
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files) {

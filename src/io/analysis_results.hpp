@@ -14,7 +14,9 @@ namespace drillflex::io {
 
 // "case", "units", "model": {bodies, coordinates, contacts, ...} and "column_units".
 void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& files);
-// "static" and static.csv (one row per station), static_reactions in the JSON.
+// "static" and static.csv (one row per station), static_reactions in the JSON. With a well each
+// station adds its place in the hole (analyses/wall_offsets.hpp; its md is then the contact's) and
+// the bit its tendency in words (analyses/bit_tendency.hpp); contacts.csv lists the wall contacts.
 void AddStaticResults(const Case& c, const analyses::StaticResult& result, ResultFiles& files);
 // "modes" and modes.csv (frequencies), mode_shapes.csv (per mode and station).
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files);

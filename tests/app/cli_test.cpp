@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -80,6 +81,52 @@ TEST(Cli, WellWritesTheTrajectoryInFieldUnits) {
     }
   }
   EXPECT_TRUE(seen_build);
+}
+
+// The static analysis of the bundled example: every station's place in the hole, in field units
+// (the hole is 8.835 in cased above 4500 ft, 8.5 in below; the smallest contact diameter is the 5 in
+// pipe body), and the bit's tendency in words.
+TEST(Cli, StaticWritesThePlaceInTheHoleAndTheBitTendency) {
+  const fs::path out = FreshDirectory("static");
+  const RunResult result = RunDrillflex("static " + kExample + " -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("wall contacts carry force"));
+  EXPECT_THAT(result.output, HasSubstr("smallest clearance to the wall"));
+  EXPECT_THAT(result.output, HasSubstr("bit: side force"));
+  std::ifstream json_file(out / "results.json");
+  const auto json = nlohmann::json::parse(json_file);
+  for (const char* key : {"hole_offset", "offset_high_side_angle", "clearance", "hole_diameter"}) {
+    EXPECT_TRUE(json["column_units"].contains(key)) << key;
+  }
+  EXPECT_EQ(json["column_units"]["clearance"], "in");
+  const auto& nodes = json["static"]["nodes"];
+  ASSERT_GT(nodes.size(), 100u);
+  for (const auto& node : nodes) {
+    for (const char* key : {"md", "hole_offset", "offset_high_side_angle", "clearance", "hole_diameter"}) {
+      ASSERT_TRUE(node.contains(key)) << key;
+      EXPECT_TRUE(std::isfinite(node[key].get<double>())) << key;
+    }
+    const double hole = node["hole_diameter"].get<double>();
+    EXPECT_TRUE(hole == 8.5 || hole == 8.835) << hole;
+    // clearance + offset = (hole − contact diameter)/2: at least 0 (nothing is wider than the hole),
+    // at most (8.835 − 5)/2 in.
+    const double gap = node["clearance"].get<double>() + node["hole_offset"].get<double>();
+    EXPECT_GE(gap, -1e-9);
+    EXPECT_LE(gap, 0.5 * (8.835 - 5.0) + 1e-9);
+    EXPECT_GE(node["offset_high_side_angle"].get<double>(), 0.0);
+    EXPECT_LT(node["offset_high_side_angle"].get<double>(), 360.0);
+    // The MD of the node's cross-section: bit MD − s moved by the axial displacement (about an inch).
+    EXPECT_NEAR(node["md"].get<double>(), 7400.0 - node["s"].get<double>(), 0.5);
+  }
+  const auto& tendency = json["static"]["bit"]["tendency"];
+  const std::string inclination = tendency["inclination"], azimuth = tendency["azimuth"];
+  EXPECT_TRUE(inclination == "build" || inclination == "drop" || inclination == "hold") << inclination;
+  EXPECT_TRUE(azimuth == "right" || azimuth == "left" || azimuth == "none") << azimuth;
+  for (const auto& contact : json["static"]["contacts"]) EXPECT_TRUE(contact["component"].is_string());
+  std::ifstream csv(out / "static.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_THAT(header, HasSubstr(",hole_offset,offset_high_side_angle,clearance,hole_diameter"));
 }
 
 TEST(Cli, BadInputExitsWithTwoNamesTheLineAndWritesNothing) {

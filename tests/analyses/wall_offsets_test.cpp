@@ -1,0 +1,233 @@
+// Where the string sits in the hole (analyses/wall_offsets.hpp) and the bit's tendency at the
+// equilibrium of a bit and pipe in a straight horizontal hole: the offsets against the geometry of a
+// straight hole (the undeformed string lies on its axis, so the offset from the axis is the lateral
+// displacement and the MD of a node's cross-section is bit MD − s − u_x), the clearance against the
+// contact law, the bit's build force against beam theory of a fulcrum.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include <Eigen/LU>
+
+#include "analyses/bit_tendency.hpp"
+#include "analyses/static_analysis.hpp"
+#include "analyses/string_stations.hpp"
+#include "analyses/wall_offsets.hpp"
+#include "analyses_test_support.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+constexpr double kHoleDiameter = 0.2;           // m
+constexpr double kPipeOd = 0.127, kPipeId = 0.1086;  // m
+constexpr double kBitOd = kHoleDiameter, kBitId = 0.18;  // m: the bit fills the hole (thin-walled: moderate EI)
+constexpr double kBitLength = 1.0, kPipeLength = 30.0;  // m
+constexpr double kBitMd = 200.0;                // m
+constexpr double kContactStiffness = 1e8;       // N/m
+constexpr double kInclination = 90.0 * kDegree, kAzimuth = 30.0 * kDegree;
+
+// A 1 m bit under 30 m of pipe (11 bodies × 10 elements) at MD 200 m of a straight horizontal hole
+// (azimuth 30°: no axial weight), pinned at the hole centre at the bit (x, y, z and torsion) and held
+// laterally at the top: the pipe sags onto the low side between them (tests/model/wall_contact_test.cpp).
+model::ModelInput HorizontalHoleInput() {
+  model::ModelInput input;
+  model::Component bit;
+  bit.type = model::ComponentType::Bit;
+  bit.name = "bit";
+  bit.outer_diameter = kBitOd;
+  bit.inner_diameter = kBitId;
+  bit.length = kBitLength;
+  model::Component pipe;
+  pipe.type = model::ComponentType::Collar;
+  pipe.name = "pipe";
+  pipe.outer_diameter = kPipeOd;
+  pipe.inner_diameter = kPipeId;
+  pipe.length = kPipeLength;
+  input.string.components = {bit, pipe};
+  input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, 7850.0};
+  input.settings.body_length = 3.0 + 1e-9;
+  input.settings.elements_per_body = 10;
+  input.settings.modes_per_body = 6;
+  input.settings.contact.stiffness = kContactStiffness;
+  input.gravity = 9.81;
+  input.trajectory.emplace(
+      std::vector<well::SurveyStation>{{0.0, kInclination, kAzimuth}, {500.0, kInclination, kAzimuth}});
+  input.hole = {well::HoleSection{{}, kHoleDiameter, {}}};
+  input.bit_md = kBitMd;
+  model::Support bottom = testing::SupportAt(0.0, {model::kX, model::kY, model::kZ, model::kRx});
+  model::Support top = testing::SupportAt(kBitLength + kPipeLength, {model::kY, model::kZ});
+  input.supports = {bottom, top};
+  return input;
+}
+
+struct Solved {
+  cms::ReductionCache cache;
+  model::BuiltModel built;
+  StaticResult result;
+  Solved() : built(model::BuildSystemModel(HorizontalHoleInput(), cache)), result(RunStatic(built, StaticSettings{})) {
+    std::printf("[ measure  ] horizontal hole: %zu nodes, %zu contacts carry force, %d iterations, |R| = %.2e N\n",
+                result.nodes.size(), result.contacts.size(), result.iterations, result.residual_norm);
+  }
+};
+
+const Solved& HorizontalHole() {
+  static const Solved solved;
+  return solved;
+}
+
+// The bit's nodes below the joint carry no wall contact (the bit cuts its hole).
+bool InBit(const StaticNodeResult& node) { return node.s < kBitLength - 1e-9; }
+// The contact circle is the bit's up to and including the joint with the pipe (at a boundary
+// model::ContactDiameterAt takes the lower component).
+double ContactRadius(const StaticNodeResult& node) { return 0.5 * (node.s <= kBitLength + 1e-9 ? kBitOd : kPipeOd); }
+
+TEST(WallOffsets, ClearanceAndOffsetAddUpToTheRadialGap) {
+  const Solved& s = HorizontalHole();
+  ASSERT_TRUE(s.result.converged);
+  ASSERT_EQ(s.result.nodes.size(), StringStations(s.built.system).size());
+  double worst = 0.0;
+  for (const auto& node : s.result.nodes) {
+    ASSERT_TRUE(node.has_wall) << node.s;
+    // The bit carries no wall contact (it cuts its hole); every other node does.
+    EXPECT_EQ(node.wall_contact, !InBit(node)) << node.s;
+    EXPECT_EQ(node.hole_diameter, kHoleDiameter) << node.s;
+    const double gap = 0.5 * kHoleDiameter - ContactRadius(node);
+    worst = std::max(worst, std::abs(node.clearance + node.hole_offset - gap));
+    EXPECT_NEAR(node.clearance + node.hole_offset, gap, 1e-12) << node.s;
+  }
+  std::printf("[ measure  ] |clearance + offset − (R_h − R_c)| ≤ %.1e m\n", worst);
+}
+
+// In a straight hole the undeformed string lies on the axis: the offset from the axis is the
+// lateral displacement, its direction atan2(u_y, u_z) (y right, z high side), and the cross-section
+// through the node lies at MD = bit MD − s − u_x (x up-hole).
+TEST(WallOffsets, MatchTheDisplacementInAStraightHole) {
+  const Solved& s = HorizontalHole();
+  double offset_error = 0.0, md_error = 0.0, angle_error = 0.0;
+  int off_axis = 0;
+  for (const auto& node : s.result.nodes) {
+    const Vec3& u = node.displacement;
+    offset_error = std::max(offset_error, std::abs(node.hole_offset - node.lateral_offset));
+    md_error = std::max(md_error, std::abs(node.md - (kBitMd - node.s - u.x())));
+    if (node.hole_offset < 1e-3) continue;  // the direction of a tiny offset is round-off
+    ++off_axis;
+    double expected = std::atan2(u.y(), u.z());
+    if (expected < 0.0) expected += 2.0 * kPi;
+    angle_error = std::max(angle_error, std::abs(node.offset_high_side_angle - expected));
+    // Gravity acts in the vertical plane through the axis: the string sags toward the low side.
+    EXPECT_NEAR(node.offset_high_side_angle, kPi, 1e-6) << node.s;
+  }
+  std::printf("[ measure  ] straight hole: offset vs lateral displacement %.1e m, MD %.1e m, angle %.1e rad "
+              "(%d nodes off the axis by > 1 mm)\n",
+              offset_error, md_error, angle_error, off_axis);
+  EXPECT_GT(off_axis, 20);
+  EXPECT_LT(offset_error, 1e-9);
+  EXPECT_LT(md_error, 1e-9);
+  EXPECT_LT(angle_error, 1e-9);
+}
+
+// A node pressed into the wall carries N = k_n δ (no damping at rest), so its clearance is −N/k_n;
+// every node the contact reports leave out is off the wall (clearance ≥ 0).
+TEST(WallOffsets, ClearanceOfAPressedNodeIsMinusForceOverStiffness) {
+  const Solved& s = HorizontalHole();
+  ASSERT_FALSE(s.result.contacts.empty());
+  double worst = 0.0;
+  std::size_t pressed = 0;
+  for (const auto& node : s.result.nodes) {
+    const ContactReport* report = nullptr;
+    for (const auto& contact : s.result.contacts) {
+      if (std::abs(contact.s - node.s) < 1e-9) report = &contact;
+    }
+    if (!report) {
+      if (node.wall_contact) {
+        EXPECT_GE(node.clearance, 0.0) << node.s;
+      }
+      continue;
+    }
+    ++pressed;
+    const double expected = -report->normal_force / kContactStiffness;
+    EXPECT_LT(node.clearance, 0.0) << node.s;
+    EXPECT_NEAR(node.clearance / expected, 1.0, 1e-6) << node.s;
+    worst = std::max(worst, std::abs(node.clearance / expected - 1.0));
+  }
+  EXPECT_EQ(pressed, s.result.contacts.size());
+  // Beam theory: the free spans from the supports are ~8 m long (tests/model/wall_contact_test.cpp).
+  for (const auto& node : s.result.nodes) {
+    if (node.s >= 12.0 && node.s <= 20.0) {
+      EXPECT_LT(node.clearance, 0.0) << node.s;
+    }
+  }
+  std::printf("[ measure  ] %zu pressed nodes: clearance vs −N/k_n relative error ≤ %.1e\n", pressed, worst);
+}
+
+// Beam theory of the bit as a lever (the fulcrum BHA): the bit fills the hole, so its top (s = L_b)
+// touches the wall at the hole axis and acts as a fulcrum; the pipe above sags onto the low side at
+// the radial gap e = R_h − R_p and lies on the wall beyond its tangency point at x = L from the
+// fulcrum. Pipe (EI_p, weight q): w = q x⁴/(24 EI_p) + a x³ + b x² + c x toward the low side with
+// w(0) = 0 and, at the tangency, w(L) = e, w'(L) = 0, w''(L) = 0. The bit (EI_b, weight q_b), pinned at
+// s = 0 and resting on the fulcrum, carries the pipe's moment M = EI_p w''(0) = 2 b EI_p, which
+// tilts it at the fulcrum by w'(0) = M L_b/(3 EI_b) − q_b L_b³/(24 EI_b) (simply supported beam under
+// an end moment and its weight). The pin then holds the bit down with M/L_b − q_b L_b/2: the force
+// the bit exerts on the formation toward the high side, the build force. Solved for L by bisection
+// (w(L) grows with L).
+double FulcrumBuildForce(double pipe_rigidity, double pipe_weight, double bit_rigidity, double bit_weight,
+                         double bit_length, double gap) {
+  const double Q = pipe_weight / pipe_rigidity;
+  const double compliance = bit_length / (3.0 * bit_rigidity);
+  const double sag = bit_weight * std::pow(bit_length, 3) / (24.0 * bit_rigidity);
+  auto coefficients = [&](double L) {  // (a, b, c) for a tangency at L
+    Mat3 A;
+    A << 0.0, -2.0 * compliance * pipe_rigidity, 1.0, 3.0 * L * L, 2.0 * L, 1.0, 6.0 * L, 2.0, 0.0;
+    return Vec3(A.partialPivLu().solve(Vec3(-sag, -Q * L * L * L / 6.0, -Q * L * L / 2.0)));
+  };
+  auto deflection = [&](double L) {
+    const Vec3 abc = coefficients(L);
+    return Q * std::pow(L, 4) / 24.0 + abc[0] * L * L * L + abc[1] * L * L + abc[2] * L;
+  };
+  double low = 0.5, high = 50.0;
+  for (int i = 0; i < 200; ++i) (deflection(0.5 * (low + high)) < gap ? low : high) = 0.5 * (low + high);
+  const double moment = 2.0 * coefficients(low)[1] * pipe_rigidity;
+  return moment / bit_length - 0.5 * bit_weight * bit_length;
+}
+
+double BendingRigidity(double od, double id) { return 2.1e11 * kPi * (std::pow(od, 4) - std::pow(id, 4)) / 64.0; }
+double WeightPerLength(double od, double id) { return 7850.0 * 9.81 * kPi * (od * od - id * id) / 4.0; }
+
+// The fulcrum: the sagging pipe levers the bit toward the high side (builds); the load lies in the
+// vertical plane, so no walk.
+TEST(WallOffsets, BitUnderAFulcrumBuildsAsBeamTheorySays) {
+  const Solved& s = HorizontalHole();
+  ASSERT_TRUE(s.result.bit.has_value());
+  const BitReport& bit = *s.result.bit;
+  const BitTendency tendency = ClassifyBitTendency(bit);
+  const double expected = FulcrumBuildForce(BendingRigidity(kPipeOd, kPipeId), WeightPerLength(kPipeOd, kPipeId),
+                                            BendingRigidity(kBitOd, kBitId), WeightPerLength(kBitOd, kBitId),
+                                            kBitLength, 0.5 * (kHoleDiameter - kPipeOd));
+  std::printf("[ measure  ] bit: side %.3f N, build %.3f N vs beam theory %.3f N (%.2e), walk %.2e N, "
+              "threshold %.3f N\n",
+              bit.side_force, bit.build_force, expected, bit.build_force / expected - 1.0, bit.walk_force,
+              tendency.threshold);
+  EXPECT_NEAR(bit.build_force / expected, 1.0, 0.02);
+  EXPECT_EQ(tendency.inclination, InclinationTendency::Build);
+  EXPECT_EQ(tendency.azimuth, AzimuthTendency::None);
+}
+
+TEST(WallOffsets, WithoutAWellNothingIsSet) {
+  model::ModelInput input = testing::V1Rod();
+  input.supports = {testing::ClampAt(0.0)};
+  input.loads = {testing::PointLoad(testing::kRodLength, Vec3(0.0, 0.0, -1000.0))};
+  cms::ReductionCache cache;
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  const StaticResult result = RunStatic(built, StaticSettings{});
+  ASSERT_FALSE(result.nodes.empty());
+  for (const auto& node : result.nodes) {
+    EXPECT_FALSE(node.has_wall);
+    EXPECT_FALSE(node.wall_contact);
+    EXPECT_EQ(node.hole_offset, 0.0);
+    EXPECT_EQ(node.clearance, 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace drillflex::analyses
