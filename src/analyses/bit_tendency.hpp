@@ -7,7 +7,9 @@
 // (1 % of the side force, so that a component that is a mere fraction of a large side force is not
 // read as a tendency, plus 50 N: an equilibrium in a well is converged to a residual of tens of
 // newtons on a long string (stiff couplings and supports × position round-off; the bundled example
-// measured |R| = 26 N), and the bit support's reaction is uncertain by as much).
+// measured |R| = 54 N), and the bit support's reaction is uncertain by as much; the walk force of
+// a case symmetric about the vertical plane came out at 1e-27 N in tests/analyses/wall_offsets_test.cpp
+// and ~4 N in validation/invariance_test.cpp).
 #pragma once
 
 #include <string_view>
