@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "model/wall_contact.hpp"
 #include "well/hole.hpp"
 
 namespace drillflex::analyses {
@@ -117,15 +118,33 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   return q;
 }
 
-void TwistUnderTorqueOnBit(const model::ModelInput& input, const model::SystemModel& system, VecX& q) {
-  const double torque = input.operation.torque_on_bit;
-  if (torque == 0.0) return;
-  const auto& bodies = system.bodies();
-  double compliance_above = 0.0;  // ∫ ds/GJ over the bodies above, 1/(N·m)
+void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& built, VecX& q) {
+  const auto& bodies = built.system.bodies();
+  // The torque each body carries: the torque on bit plus, when the string rotates, the wall
+  // friction μ_t N R_c of the contacts below (N as they are at q).
+  std::vector<double> friction_torque(bodies.size(), 0.0);
+  if (input.static_sliding && input.static_sliding->rotary_speed != 0.0) {
+    const auto poses = built.system.Poses(q);
+    const VecX rest = VecX::Zero(built.system.num_velocities());
+    for (const int index : built.contact_elements) {
+      const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
+      const model::WallContactResult state = contact.Result(built.system.StateOf(contact, poses, rest, 0.0, 1.0));
+      const int body = built.system.IndexOf(contact.bodies()[0]);
+      friction_torque[body] +=
+          contact.parameters().tangential_friction * state.normal_force * contact.parameters().contact_radius;
+    }
+  }
+  std::vector<double> torque(bodies.size(), 0.0);
+  double below = input.operation.torque_on_bit;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    torque[b] = below + 0.5 * friction_torque[b];
+    below += friction_torque[b];
+  }
+  double twist_above = 0.0;  // ∫ T ds/GJ over the bodies above, rad
   for (std::size_t b = bodies.size(); b-- > 0;) {
     const double compliance = bodies[b].length() / bodies[b].torsional_rigidity;
-    model::TwistKeepingShape(bodies[b], torque * (compliance_above + 0.5 * compliance), q);
-    compliance_above += compliance;
+    if (torque[b] != 0.0) model::TwistKeepingShape(bodies[b], twist_above + 0.5 * torque[b] * compliance, q);
+    twist_above += torque[b] * compliance;
   }
 }
 

@@ -20,7 +20,8 @@
 // step that turns a bent body about its axis also turns its bending (held in body coordinates),
 // an error of second order that the stiff couplings amplify; so the twist is put in before the
 // solve, with the shape kept (model::TwistKeepingShape): with the top held in torsion and the
-// torque on bit a moment about the string axis, θ(s) = TOB ∫_s^top ds'/GJ.
+// torque on bit a moment about the string axis, θ(s) = TOB ∫_s^top ds'/GJ (plus the friction torque of
+// a rotating string).
 #pragma once
 
 #include "core/types.hpp"
@@ -32,8 +33,11 @@ namespace drillflex::analyses {
 // have a trajectory and a hole). Throws LogicError without them.
 VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built);
 
-// Turns each body of `system` about its axis by the twist θ of the torque on bit at its middle,
-// keeping the string's shape.
-void TwistUnderTorqueOnBit(const model::ModelInput& input, const model::SystemModel& system, VecX& q);
+// Turns each body about its axis by the twist θ at its middle, keeping the string's shape:
+// θ(s) = ∫_s^top T ds'/GJ, T the torque on bit plus, when the string rotates
+// (ModelInput::static_sliding), the wall friction torque μ_t N R_c of the contacts below s with
+// their normal forces N at q (e.g. of an equilibrium without friction; the friction changes them
+// little). `built` gives the contacts; its bodies are those of q.
+void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& built, VecX& q);
 
 }  // namespace drillflex::analyses

@@ -12,6 +12,9 @@ model::ModelInput MakeModelInput(const Case& c) {
   input.gravity = c.gravity;
   input.fluid = c.fluid;
   input.operation = c.operation;
+  // A static analysis of a rotating string (rpm > 0): the wall friction acts around the string
+  // (rotating off bottom or drilling; torque and drag).
+  if (c.operation.rpm > 0.0) input.static_sliding = model::PrescribedSliding{0.0, c.operation.rpm};
   if (c.well) {
     input.trajectory.emplace(c.well->survey);
     input.bit_md = c.well->bit_md;

@@ -123,12 +123,16 @@ double BuoyedWeightPerLength(const Body& body, const ModelInput& input) {
 
 // The contact diameter at a distance s from the bit: the blade OD over a stabilizer's blades
 // (centred on the stabilizer when their length is given, else over all of it), the tool-joint OD
-// within half a joint length of a pipe connection, the body OD elsewhere.
+// within half a joint length of a pipe connection, the body OD elsewhere. At a connection the
+// lower component's, except on top of the bit, where it is the upper one's.
 double ContactDiameterAt(const StringConfig& string, double s) {
   double start = 0.0;
   for (const Component& component : string.components) {
     const double span = component.length * component.count;
-    if (s > start + span + 1e-9) {
+    // At the top of the bit the component above touches: the bit's gauge is at its bottom, where
+    // its support holds it at the hole centre (a full-gauge contact there would be a false fulcrum).
+    const bool above_bit = component.type == ComponentType::Bit && s >= start + span - 1e-9;
+    if (s > start + span + 1e-9 || (above_bit && &component != &string.components.back())) {
       start += span;
       continue;
     }
@@ -226,6 +230,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
         parameters.tangential_friction = contact.friction;
         parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
         parameters.regularization_velocity = kFrictionRegularizationVelocity;
+        parameters.prescribed_sliding = input.static_sliding;
         contact_elements.push_back(static_cast<int>(elements.size()));
         elements.push_back(std::make_unique<WallContactElement>(&body, k, wellbore, parameters, input.bit_md - s));
       }

@@ -13,6 +13,7 @@
 #include "fe/material.hpp"
 #include "model/spring_elements.hpp"
 #include "model/string_config.hpp"
+#include "model/wall_contact.hpp"
 #include "model/system_model.hpp"
 #include "well/trajectory.hpp"
 
@@ -31,6 +32,10 @@ struct ModelInput {
   std::vector<well::HoleSection> hole;  // with a trajectory: wall contact at every node
   double bit_md = 0.0;
   Operation operation;  // WOB and torque on bit act at the bit (s = 0)
+  // The string's motion for the wall friction of a static analysis (torque and drag): with it, every
+  // wall contact's friction follows this prescribed sliding (model/wall_contact.hpp); without it,
+  // the friction follows the state's velocities (none at rest).
+  std::optional<PrescribedSliding> static_sliding;
 };
 
 // The supports a string in a well gets when the case gives none (method.md §8, the static BHA
