@@ -2,13 +2,11 @@
 // equilibrium of a bit and pipe in a straight horizontal hole: the offsets against the geometry of a
 // straight hole (the undeformed string lies on its axis, so the offset from the axis is the lateral
 // displacement and the MD of a node's cross-section is bit MD − s − u_x), the clearance against the
-// contact law, the bit's build force against beam theory of a fulcrum.
+// contact law, the bit's build force against beam theory of a pendulum (a uniform string).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-
-#include <Eigen/LU>
 
 #include "analyses/bit_tendency.hpp"
 #include "analyses/static_analysis.hpp"
@@ -27,16 +25,17 @@ constexpr double kBitMd = 200.0;                // m
 constexpr double kContactStiffness = 1e8;       // N/m
 constexpr double kInclination = 90.0 * kDegree, kAzimuth = 30.0 * kDegree;
 
-// A 1 m bit under 30 m of pipe (11 bodies × 10 elements) at MD 200 m of a straight horizontal hole
-// (azimuth 30°: no axial weight), pinned at the hole centre at the bit (x, y, z and torsion) and held
-// laterally at the top: the pipe sags onto the low side between them (tests/model/wall_contact_test.cpp).
-model::ModelInput HorizontalHoleInput() {
+// A 1 m bit (OD × ID) under 30 m of pipe (11 bodies × 10 elements) at MD 200 m of a straight
+// horizontal hole (azimuth 30°: no axial weight), pinned at the hole centre at the bit (x, y, z and
+// torsion; tilt free) and held laterally at the top: the pipe sags onto the low side between them
+// (tests/model/wall_contact_test.cpp).
+model::ModelInput HorizontalHoleInput(double bit_od = kBitOd, double bit_id = kBitId) {
   model::ModelInput input;
   model::Component bit;
   bit.type = model::ComponentType::Bit;
   bit.name = "bit";
-  bit.outer_diameter = kBitOd;
-  bit.inner_diameter = kBitId;
+  bit.outer_diameter = bit_od;
+  bit.inner_diameter = bit_id;
   bit.length = kBitLength;
   model::Component pipe;
   pipe.type = model::ComponentType::Collar;
@@ -65,22 +64,30 @@ struct Solved {
   cms::ReductionCache cache;
   model::BuiltModel built;
   StaticResult result;
-  Solved() : built(model::BuildSystemModel(HorizontalHoleInput(), cache)), result(RunStatic(built, StaticSettings{})) {
-    std::printf("[ measure  ] horizontal hole: %zu nodes, %zu contacts carry force, %d iterations, |R| = %.2e N\n",
+  Solved(const model::ModelInput& input, const char* label)
+      : built(model::BuildSystemModel(input, cache)), result(RunStatic(built, StaticSettings{})) {
+    std::printf("[ measure  ] %s: %zu nodes, %zu contacts carry force, %d iterations, |R| = %.2e N\n", label,
                 result.nodes.size(), result.contacts.size(), result.iterations, result.residual_norm);
   }
 };
 
 const Solved& HorizontalHole() {
-  static const Solved solved;
+  static const Solved solved(HorizontalHoleInput(), "horizontal hole");
+  return solved;
+}
+
+// The same hole with a "bit" of the pipe's section: a uniform string.
+const Solved& UniformStringInHorizontalHole() {
+  static const Solved solved(HorizontalHoleInput(kPipeOd, kPipeId), "uniform string in the horizontal hole");
   return solved;
 }
 
 // The bit's nodes below the joint carry no wall contact (the bit cuts its hole).
 bool InBit(const StaticNodeResult& node) { return node.s < kBitLength - 1e-9; }
-// The contact circle is the bit's up to and including the joint with the pipe (at a boundary
-// model::ContactDiameterAt takes the lower component).
-double ContactRadius(const StaticNodeResult& node) { return 0.5 * (node.s <= kBitLength + 1e-9 ? kBitOd : kPipeOd); }
+// The contact circle is the bit's below the joint with the pipe and the pipe's from the joint up
+// (model::ContactDiameterAt: on top of the bit the upper component touches; the bit's gauge is at
+// its bottom).
+double ContactRadius(const StaticNodeResult& node) { return 0.5 * (InBit(node) ? kBitOd : kPipeOd); }
 
 TEST(WallOffsets, ClearanceAndOffsetAddUpToTheRadialGap) {
   const Solved& s = HorizontalHole();
@@ -161,55 +168,43 @@ TEST(WallOffsets, ClearanceOfAPressedNodeIsMinusForceOverStiffness) {
   std::printf("[ measure  ] %zu pressed nodes: clearance vs −N/k_n relative error ≤ %.1e\n", pressed, worst);
 }
 
-// Beam theory of the bit as a lever (the fulcrum BHA): the bit fills the hole, so its top (s = L_b)
-// touches the wall at the hole axis and acts as a fulcrum; the pipe above sags onto the low side at
-// the radial gap e = R_h − R_p and lies on the wall beyond its tangency point at x = L from the
-// fulcrum. Pipe (EI_p, weight q): w = q x⁴/(24 EI_p) + a x³ + b x² + c x toward the low side with
-// w(0) = 0 and, at the tangency, w(L) = e, w'(L) = 0, w''(L) = 0. The bit (EI_b, weight q_b), pinned at
-// s = 0 and resting on the fulcrum, carries the pipe's moment M = EI_p w''(0) = 2 b EI_p, which
-// tilts it at the fulcrum by w'(0) = M L_b/(3 EI_b) − q_b L_b³/(24 EI_b) (simply supported beam under
-// an end moment and its weight). The pin then holds the bit down with M/L_b − q_b L_b/2: the force
-// the bit exerts on the formation toward the high side, the build force. Solved for L by bisection
-// (w(L) grows with L).
-double FulcrumBuildForce(double pipe_rigidity, double pipe_weight, double bit_rigidity, double bit_weight,
-                         double bit_length, double gap) {
-  const double Q = pipe_weight / pipe_rigidity;
-  const double compliance = bit_length / (3.0 * bit_rigidity);
-  const double sag = bit_weight * std::pow(bit_length, 3) / (24.0 * bit_rigidity);
-  auto coefficients = [&](double L) {  // (a, b, c) for a tangency at L
-    Mat3 A;
-    A << 0.0, -2.0 * compliance * pipe_rigidity, 1.0, 3.0 * L * L, 2.0 * L, 1.0, 6.0 * L, 2.0, 0.0;
-    return Vec3(A.partialPivLu().solve(Vec3(-sag, -Q * L * L * L / 6.0, -Q * L * L / 2.0)));
-  };
-  auto deflection = [&](double L) {
-    const Vec3 abc = coefficients(L);
-    return Q * std::pow(L, 4) / 24.0 + abc[0] * L * L * L + abc[1] * L * L + abc[2] * L;
-  };
-  double low = 0.5, high = 50.0;
-  for (int i = 0; i < 200; ++i) (deflection(0.5 * (low + high)) < gap ? low : high) = 0.5 * (low + high);
-  const double moment = 2.0 * coefficients(low)[1] * pipe_rigidity;
-  return moment / bit_length - 0.5 * bit_weight * bit_length;
-}
-
 double BendingRigidity(double od, double id) { return 2.1e11 * kPi * (std::pow(od, 4) - std::pow(id, 4)) / 64.0; }
 double WeightPerLength(double od, double id) { return 7850.0 * 9.81 * kPi * (od * od - id * id) / 4.0; }
 
-// The fulcrum: the sagging pipe levers the bit toward the high side (builds); the load lies in the
-// vertical plane, so no walk.
-TEST(WallOffsets, BitUnderAFulcrumBuildsAsBeamTheorySays) {
-  const Solved& s = HorizontalHole();
+// Beam theory of a slick (uniform) string, the pendulum: the bit end is pinned at the hole centre
+// (lateral held, tilt free) and the string lies on the low side at the radial gap r = R_h − R_p
+// beyond its tangency point at x = L from the bit. With y the lateral deflection toward the high side
+// and w the weight per length, EI y'''' = −w on 0 < x < L with y(0) = 0, y''(0) = 0 (pin: no moment),
+// y(L) = −r, y'(L) = 0, y''(L) = 0 (tangent to the straight wall, on which the string carries no
+// moment). y = −w x⁴/(24 EI) + a x³ + b x² + c x: y''(0) = 0 gives b = 0; y''(L) = 0 gives
+// a = w L/(12 EI); y'(L) = 0 gives c = −w L³/(12 EI); then y(L) = −w L⁴/(24 EI) = −r, so
+// L⁴ = 24 EI r / w. Moments about the tangency point of the span (no moment at either end): the pin
+// holds the string up with R = w L/2 (= EI y'''(0) = 6 a EI). The bit pushes the formation the
+// other way, toward the low side: build force −w L/2 (case-format.md: a pendulum drops).
+double PendulumTangency(double rigidity, double weight, double gap) {
+  return std::pow(24.0 * rigidity * gap / weight, 0.25);
+}
+double PendulumBuildForce(double rigidity, double weight, double gap) {
+  return -0.5 * weight * PendulumTangency(rigidity, weight, gap);
+}
+
+// The pendulum: the weight of the unsupported span pulls the bit toward the low side (drops); the
+// load lies in the vertical plane, so no walk.
+TEST(WallOffsets, SlickStringBitDropsAsBeamTheorySays) {
+  const Solved& s = UniformStringInHorizontalHole();
+  ASSERT_TRUE(s.result.converged);
   ASSERT_TRUE(s.result.bit.has_value());
   const BitReport& bit = *s.result.bit;
   const BitTendency tendency = ClassifyBitTendency(bit);
-  const double expected = FulcrumBuildForce(BendingRigidity(kPipeOd, kPipeId), WeightPerLength(kPipeOd, kPipeId),
-                                            BendingRigidity(kBitOd, kBitId), WeightPerLength(kBitOd, kBitId),
-                                            kBitLength, 0.5 * (kHoleDiameter - kPipeOd));
-  std::printf("[ measure  ] bit: side %.3f N, build %.3f N vs beam theory %.3f N (%.2e), walk %.2e N, "
-              "threshold %.3f N\n",
-              bit.side_force, bit.build_force, expected, bit.build_force / expected - 1.0, bit.walk_force,
-              tendency.threshold);
+  const double rigidity = BendingRigidity(kPipeOd, kPipeId), weight = WeightPerLength(kPipeOd, kPipeId);
+  const double gap = 0.5 * (kHoleDiameter - kPipeOd);
+  const double expected = PendulumBuildForce(rigidity, weight, gap);
+  std::printf("[ measure  ] uniform string: tangency at L = %.3f m; bit side %.3f N, build %.3f N vs beam theory "
+              "%.3f N (%.2e), walk %.2e N, threshold %.3f N\n",
+              PendulumTangency(rigidity, weight, gap), bit.side_force, bit.build_force, expected,
+              bit.build_force / expected - 1.0, bit.walk_force, tendency.threshold);
   EXPECT_NEAR(bit.build_force / expected, 1.0, 0.02);
-  EXPECT_EQ(tendency.inclination, InclinationTendency::Build);
+  EXPECT_EQ(tendency.inclination, InclinationTendency::Drop);
   EXPECT_EQ(tendency.azimuth, AzimuthTendency::None);
 }
 
