@@ -130,8 +130,10 @@ void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& b
       const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
       const model::WallContactResult state = contact.Result(built.system.StateOf(contact, poses, rest, 0.0, 1.0));
       const int body = built.system.IndexOf(contact.bodies()[0]);
-      friction_torque[body] +=
-          contact.parameters().tangential_friction * state.normal_force * contact.parameters().contact_radius;
+      // A rotating pipe climbs the wall until the friction balances the lateral load, which then
+      // splits into N and μN: N = F⊥/√(1 + μ²) of the frictionless N = F⊥.
+      const double mu = contact.parameters().tangential_friction;
+      friction_torque[body] += mu * state.normal_force / std::sqrt(1.0 + mu * mu) * contact.parameters().contact_radius;
     }
   }
   std::vector<double> torque(bodies.size(), 0.0);

@@ -79,6 +79,9 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
     fe::BodySpec spec;
     spec.section = {component.outer_diameter, component.inner_diameter};
     spec.material = input.materials.at(component.material);
+    // Tool joints: their steel smeared along the pipe (the adjusted weight of API RP 7G); the
+    // stiffness stays the pipe body's. Their displaced and held fluid: BuoyedWeightPerLength.
+    spec.material.density *= AverageAreas(component).material / spec.section.area();
     spec.length = span / count;
     // A body shorter than body_length gets proportionally fewer elements (at least 2), so that the
     // element length ℓ stays near body_length / elements_per_body: the coupling stiffness grows as
@@ -111,12 +114,15 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
 }  // namespace
 
 // Buoyed weight per length, N/m (method.md §7): g (ρ_s A − ρ_f A_o + ρ_f,i A_i).
+// Areas averaged over tool joints (model/string_config.hpp AverageAreas); the density of the body
+// already holds the joints' steel.
 double BuoyedWeightPerLength(const Body& body, const ModelInput& input) {
   const auto& spec = body.reduced->spec;
   double mass_per_length = spec.material.density * spec.section.area();
   if (input.fluid) {
+    const AveragedAreas areas = AverageAreas(input.string.components.at(body.component));
     const double inside = input.fluid->internal_density.value_or(input.fluid->density);
-    mass_per_length += inside * spec.section.bore_area() - input.fluid->density * spec.section.outer_area();
+    mass_per_length += inside * areas.bore - input.fluid->density * areas.outer;
   }
   return input.gravity * mass_per_length;
 }

@@ -29,9 +29,11 @@ class StaticModelProblem : public solvers::StaticProblem {
   void SetLoadFactor(double load_factor) override { load_factor_ = load_scale_ * load_factor; }
   double ForceScale() const override { return std::abs(load_scale_) * model_.force_scale(); }
   bool IsIterationMatrixSymmetric() const override { return false; }
-  // How far the increment moves the farthest node (m): the trust radius then limits how fast
-  // contacts close, and leaves twist and rotations that move no node free.
-  double StepLength(const VecX& q, const VecX& dv) const override { return model_.LargestNodeTranslation(q, dv); }
+  // How far the increment moves the farthest node across the string (m): the trust radius then
+  // limits how fast contacts close, and leaves the twist and the axial stretch free.
+  double StepLength(const VecX& q, const VecX& dv) const override {
+    return model_.LargestLateralNodeTranslation(q, dv);
+  }
   double load_factor() const { return load_factor_; }
 
  private:

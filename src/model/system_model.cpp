@@ -55,16 +55,18 @@ VecX SystemModel::Increment(const VecX& q, const VecX& dv) const {
   return result;
 }
 
-double SystemModel::LargestNodeTranslation(const VecX& q, const VecX& dv) const {
+double SystemModel::LargestLateralNodeTranslation(const VecX& q, const VecX& dv) const {
   double largest = 0.0;
   for (const Body& body : bodies_) {
     const BodyPose pose = PoseOf(body, q);
     const Vec3 dr = dv.segment<3>(body.v_offset);
     const Vec3 dtheta = dv.segment<3>(body.v_offset + 3);
     const auto deta = dv.segment(body.v_offset + 6, body.flexible_count);
+    const Vec3 axis = pose.A.col(0);
     for (int k = 0; k < body.node_count(); ++k) {
       const Vec3 local = dtheta.cross(pose.NodeOffset(body, k)) + body.reduced->node_translation_modes[k] * deta;
-      largest = std::max(largest, (dr + pose.A * local).norm());
+      const Vec3 move = dr + pose.A * local;
+      largest = std::max(largest, (move - move.dot(axis) * axis).norm());
     }
   }
   return largest;

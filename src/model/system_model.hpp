@@ -36,9 +36,10 @@ class SystemModel {
   VecX ReferencePositions() const;
   VecX Increment(const VecX& q, const VecX& dv) const;
   std::vector<BodyPose> Poses(const VecX& q) const;
-  // The largest translation of any node for the increment dv at q, to first order:
-  // |δr + A (δθ × u_k + Φ_k δη)| (m). A twist about the body axis moves no node on the axis.
-  double LargestNodeTranslation(const VecX& q, const VecX& dv) const;
+  // The largest lateral translation of any node for the increment dv at q, to first order: the
+  // part of δr + A (δθ × u_k + Φ_k δη) across the body axis A e_x (m). A twist about the axis
+  // moves no node on it; axial motion (the stretch of a long string) closes no wall contact.
+  double LargestLateralNodeTranslation(const VecX& q, const VecX& dv) const;
 
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor) const;
   // Both matrices have a fixed pattern (model/block_pattern.hpp): dense body blocks and the blocks of

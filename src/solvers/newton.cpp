@@ -101,7 +101,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
       return out;
     }
     if (options_.max_increment > 0.0) {
-      const double longest = dv.lpNorm<Eigen::Infinity>();
+      const double longest = problem_.StepLength(out.q, dv);
       if (longest > options_.max_increment) dv *= options_.max_increment / longest;
     }
     ++out.iterations;
