@@ -145,7 +145,8 @@ void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& b
   double twist_above = 0.0;  // ∫ T ds/GJ over the bodies above, rad
   for (std::size_t b = bodies.size(); b-- > 0;) {
     const double compliance = bodies[b].length() / bodies[b].torsional_rigidity;
-    if (torque[b] != 0.0) model::TwistKeepingShape(bodies[b], twist_above + 0.5 * torque[b] * compliance, q);
+    const double twist = twist_above + 0.5 * torque[b] * compliance;
+    if (twist != 0.0) model::TwistKeepingShape(bodies[b], twist, q);
     twist_above += torque[b] * compliance;
   }
 }

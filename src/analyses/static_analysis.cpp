@@ -251,15 +251,13 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
   VecX q = RestingStart(input, built);
   const model::BuiltModel soft_model = model::BuildSystemModel(stage, cache);
   const StaticResult soft = SolveEquilibrium(soft_model, settings, &q);
-  const int soft_iterations = soft.iterations;
   q = soft.q;
   TwistUnderTorque(input, soft_model, q);
   stage.operation = input.operation;
   stage.static_sliding = input.static_sliding;
-
+  int iterations = soft.iterations, load_steps = soft.load_steps;
   const bool rotating = input.static_sliding.has_value();
   const std::vector<double> steps = rotating ? std::vector<double>{kHalfDecade, 0.0} : std::vector<double>{0.0, kHalfDecade};
-  int iterations = soft_iterations, load_steps = soft.load_steps;
   for (std::size_t attempt = 0; attempt < steps.size(); ++attempt) {
     VecX trial = q;
     try {
