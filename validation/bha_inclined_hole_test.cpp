@@ -3,6 +3,7 @@
 // on forces and tilt, at default model settings; the first wall contact is found by the contact
 // model (in the last case between the bit and the stabilizer).
 #include <cmath>
+#include <cstdio>
 
 #include "validation_support.hpp"
 
@@ -32,19 +33,28 @@ TEST_P(V4BhaInclinedHole, BitSideForceTiltAndStabilizerForceWithinTwoPercent) {
   EXPECT_LT(std::abs(RelativeError(-bit["build_force"].get<double>(), c.side_force_lbf)), 0.02) << bit;
   EXPECT_LT(std::abs(bit["walk_force"].get<double>()), 1e-6 * c.side_force_lbf);
   EXPECT_LT(std::abs(RelativeError(bit["tilt"].get<double>() / kDegreesPerRadian, c.tilt_rad)), 0.02) << bit;
+  std::printf("V4 %s: bit side force %.2f lbf (reference %.1f, %+.2f %%), tilt %.6f rad (reference %.6f, %+.2f %%)\n",
+              c.file, bit["side_force"].get<double>(), c.side_force_lbf,
+              100.0 * RelativeError(bit["side_force"].get<double>(), c.side_force_lbf),
+              bit["tilt"].get<double>() / kDegreesPerRadian, c.tilt_rad,
+              100.0 * RelativeError(bit["tilt"].get<double>() / kDegreesPerRadian, c.tilt_rad));
   if (c.stabilizer_lbf > 0.0) {
     bool found = false;
     for (const auto& reaction : results["static"]["reactions"]) {
       if (std::abs(reaction["s"].get<double>() - c.stabilizer_at_ft) > 1.0) continue;
       found = true;
-      EXPECT_LT(std::abs(RelativeError(std::hypot(reaction["force"][1].get<double>(), reaction["force"][2].get<double>()),
-                                       c.stabilizer_lbf)), 0.02) << reaction;
+      const double stabilizer = std::hypot(reaction["force"][1].get<double>(), reaction["force"][2].get<double>());
+      EXPECT_LT(std::abs(RelativeError(stabilizer, c.stabilizer_lbf)), 0.02) << reaction;
+      std::printf("V4 %s: stabilizer force %.2f lbf (reference %.1f, %+.2f %%)\n", c.file, stabilizer, c.stabilizer_lbf,
+                  100.0 * RelativeError(stabilizer, c.stabilizer_lbf));
     }
     EXPECT_TRUE(found);
   }
   const auto& contacts = results["static"]["contacts"];
   ASSERT_FALSE(contacts.empty());
   EXPECT_NEAR(contacts[0]["s"].get<double>(), c.first_contact_ft, 200.0 / 21.0);  // within a body length
+  std::printf("V4 %s: first wall contact at %.1f ft (reference %.1f ft)\n", c.file, contacts[0]["s"].get<double>(),
+              c.first_contact_ft);
   for (const auto& contact : contacts) {
     EXPECT_NEAR(contact["high_side_angle"].get<double>(), 180.0, 1.0);  // all on the low side
   }
