@@ -65,41 +65,67 @@ Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::
   return body;
 }
 
+// Where bodies must meet: the bent housing of a motor (its bend sits in a coupling) and every
+// case support (it then acts on a node exactly where it is), m from the bit.
+std::vector<double> BodyCuts(const ModelInput& input) {
+  std::vector<double> cuts;
+  for (const Component& component : input.string.components) {
+    if (component.bend_angle && component.bend_to_bit) cuts.push_back(*component.bend_to_bit);
+  }
+  for (const Support& support : input.supports) cuts.push_back(support.at);
+  std::sort(cuts.begin(), cuts.end());
+  return cuts;
+}
+
 std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache) {
   std::vector<Body> bodies;
   const ModelSettings& settings = input.settings;
   cms::ReductionOptions reduction;
   reduction.modes_per_body = settings.modes_per_body;
   reduction.structural_damping = settings.structural_damping;
+  const std::vector<double> cuts = BodyCuts(input);
   double s = 0.0;
   for (std::size_t c = 0; c < input.string.components.size(); ++c) {
     const Component& component = input.string.components[c];
     const double span = component.length * component.count;
-    const int count = std::max(1, static_cast<int>(std::ceil(span / settings.body_length - 1e-9)));
-    fe::BodySpec spec;
-    spec.section = {component.outer_diameter, component.inner_diameter};
-    spec.material = input.materials.at(component.material);
-    // Tool joints: their steel smeared along the pipe (the adjusted weight of API RP 7G); the
-    // stiffness stays the pipe body's. Their displaced and held fluid: BuoyedWeightPerLength.
-    spec.material.density *= AverageAreas(component).material / spec.section.area();
-    spec.length = span / count;
-    // A body shorter than body_length gets proportionally fewer elements (at least 2), so that the
-    // element length ℓ stays near body_length / elements_per_body: the coupling stiffness grows as
-    // 1/ℓ³ and a 1 ft bit cut into 10 elements would make the couplings 1000 times stiffer than
-    // the rest of the model for no accuracy (ill-conditioned tangents).
-    spec.element_count = std::clamp(
-        static_cast<int>(std::lround(settings.elements_per_body * spec.length / settings.body_length)), 2,
-        settings.elements_per_body);
-    reduction.modes_per_body = std::min(settings.modes_per_body, 6 * (spec.element_count - 1));
-    spec.options = FeOptions(settings);
-    const auto reduced = cache.Get(spec, reduction);
-    // Once per section (it was 2/3 of the build time of a 1000-body string when made per body).
-    const MatX mass_correction = cms::ReferenceMassMatrix(*reduced) - cms::NodalReferenceMassMatrix(*reduced);
-    for (int i = 0; i < count; ++i) {
-      bodies.push_back(
-          MakeBody(reduced, spec, static_cast<int>(c), s, ContactDiameter(component), mass_correction));
-      s += spec.length;
+    // The component's stretches between the cuts inside it, each split evenly into bodies.
+    std::vector<double> ends;
+    for (const double cut : cuts) {
+      if (cut > s + 1e-6 && cut < s + span - 1e-6 && (ends.empty() || cut > ends.back() + 1e-6)) ends.push_back(cut);
     }
+    ends.push_back(s + span);
+    double stretch_start = s;
+    for (const double stretch_end : ends) {
+      const double stretch = stretch_end - stretch_start;
+      const int count = std::max(1, static_cast<int>(std::ceil(stretch / settings.body_length - 1e-9)));
+      fe::BodySpec spec;
+      spec.section = {component.outer_diameter, component.inner_diameter};
+      spec.material = input.materials.at(component.material);
+      // Tool joints: their steel smeared along the pipe (the adjusted weight of API RP 7G); the
+      // stiffness stays the pipe body's. Their displaced and held fluid: BuoyedWeightPerLength.
+      spec.material.density *= AverageAreas(component).material / spec.section.area();
+      spec.length = stretch / count;
+      // A body shorter than body_length gets proportionally fewer elements (at least 2), so that
+      // the element length ℓ stays near body_length / elements_per_body: the coupling stiffness
+      // grows as 1/ℓ³ and a 1 ft bit cut into 10 elements would make the couplings 1000 times
+      // stiffer than the rest of the model for no accuracy (ill-conditioned tangents).
+      spec.element_count = std::clamp(
+          static_cast<int>(std::lround(settings.elements_per_body * spec.length / settings.body_length)), 2,
+          settings.elements_per_body);
+      reduction.modes_per_body = std::min(settings.modes_per_body, 6 * (spec.element_count - 1));
+      spec.options = FeOptions(settings);
+      const auto reduced = cache.Get(spec, reduction);
+      // Once per section (it was 2/3 of the build time of a 1000-body string when made per body).
+      const MatX mass_correction = cms::ReferenceMassMatrix(*reduced) - cms::NodalReferenceMassMatrix(*reduced);
+      double body_start = stretch_start;
+      for (int i = 0; i < count; ++i) {
+        bodies.push_back(
+            MakeBody(reduced, spec, static_cast<int>(c), body_start, ContactDiameter(component), mass_correction));
+        body_start += spec.length;
+      }
+      stretch_start = stretch_end;
+    }
+    s += span;
   }
   int q_offset = 0, v_offset = 0;
   for (Body& body : bodies) {
@@ -177,6 +203,19 @@ std::vector<Support> DefaultWellSupports(double string_length) {
   return {bit, hook};
 }
 
+Mat3 BentHousingRotation(const StringConfig& string, double s) {
+  for (const Component& component : string.components) {
+    if (!component.bend_angle || !component.bend_to_bit || std::abs(*component.bend_to_bit - s) > 1e-6) continue;
+    // The bit side of the bend points toward the toolface d = cos(tf) z + sin(tf) y (z high side,
+    // y right: the string frame): the upper body's axis, seen from the lower body, is its own x
+    // turned by the bend angle about x × d.
+    const double toolface = component.toolface.value_or(0.0);
+    const Vec3 toward = std::cos(toolface) * Vec3::UnitZ() + std::sin(toolface) * Vec3::UnitY();
+    return Eigen::AngleAxisd(*component.bend_angle, Vec3::UnitX().cross(toward)).toRotationMatrix();
+  }
+  return Mat3::Identity();
+}
+
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache) {
   if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
   std::vector<Body> bodies = CutBodies(input, cache);
@@ -196,7 +235,8 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     const Vec3 kink = so3::LogMap(lower.reference_orientation.toRotationMatrix().transpose() *
                                   upper.reference_orientation.toRotationMatrix());
     elements.push_back(std::make_unique<CouplingElement>(&lower, lower.node_count() - 1, &upper, 0, stiffness,
-                                                         SpringDamping(stiffness, inertia), Mat3::Identity(), kink));
+                                                         SpringDamping(stiffness, inertia),
+                                                         BentHousingRotation(input.string, upper.s_start), kink));
   }
 
   std::vector<int> support_elements;

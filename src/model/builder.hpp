@@ -53,6 +53,11 @@ double BuoyedWeightPerLength(const Body& body, const ModelInput& input);
 // The diameter that touches the wall at a distance s (m) from the bit: blade, tool joint or body.
 double ContactDiameterAt(const StringConfig& string, double s);
 
+// The built-in relative rotation of the coupling at `s` (m from the bit): a motor's bent housing
+// when its bend sits there (bend angle about x × d, d the toolface direction in the string frame,
+// the bit side pointing toward d), else the identity. Bodies are cut at every bend.
+Mat3 BentHousingRotation(const StringConfig& string, double s);
+
 // What the builder made, beside the model itself: where each support and load went.
 struct BuiltModel {
   SystemModel system;
