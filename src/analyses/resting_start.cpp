@@ -110,10 +110,22 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
     index = end + 1;
   }
   // The chain of rigid chords keeps each body's length, so its top end drifts (second order in the
-  // offsets) from where the hook holds it: translate the whole chain back. The bit is axially free.
+  // offsets) from where the hook holds it axially: slide the whole chain along the bit's axis (the
+  // bit is axially free; a shift with a lateral part at the bit would load its stiff lateral
+  // support) until the top's axial place is right. Skipped when the string turns by more than 60°.
   if (!stations.empty()) {
     const Vec3 drift = stations.back().position + offsets.back() - start;
-    for (const model::Body& body : system.bodies()) q.segment<3>(body.q_offset) += drift;
+    const auto axis = [&](const model::Body& body) {
+      return Quat(q[body.q_offset + 3], q[body.q_offset + 4], q[body.q_offset + 5], q[body.q_offset + 6])
+          .toRotationMatrix()
+          .col(0);
+    };
+    const Vec3 bit_axis = axis(system.bodies().front()), top_axis = axis(system.bodies().back());
+    const double alignment = bit_axis.dot(top_axis);
+    if (alignment > 0.5) {
+      const Vec3 shift = (drift.dot(top_axis) / alignment) * bit_axis;
+      for (const model::Body& body : system.bodies()) q.segment<3>(body.q_offset) += shift;
+    }
   }
   return q;
 }

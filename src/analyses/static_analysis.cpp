@@ -137,7 +137,8 @@ constexpr int kMaxIterationsInHole = 100;
 namespace {
 
 // The equilibrium alone (no results along the string): see RunStatic.
-StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start) {
+StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start,
+                              int iteration_budget = 0) {
   StaticResult result;
   if (settings.method == StaticMethod::DynamicRelaxation) {
     RelaxationOptions relaxation;
@@ -154,6 +155,7 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
   solvers::NewtonOptions options = DefaultNewtonOptions();
   options.max_iterations = std::clamp(settings.max_iterations, 1, kMaxIterationsPerLoadStep);
   if (built.force_scale > 0.0) options.force_scale = built.force_scale;
+  options.max_total_iterations = iteration_budget;
   if (start) options.load_stepping.enabled = false;  // already near the equilibrium at full load
   // In a hole, let contacts close gradually: no node moves more than kWallStepLimit a step.
   if (!built.contact_elements.empty()) {
@@ -291,6 +293,10 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
 // the hole centre, then the hold softened by decades until it carries nothing, each equilibrium
 // the start of the next (a homotopy: every step a small change for Newton while contacts close as
 // the top settles onto the wall); a step that fails is halved.
+// The Newton iterations the fallback may spend (its load stepping from the centreline took 6874 on
+// the bundled example before the resting start; at ~5 ms an iteration on a 2000-coordinate model).
+constexpr int kFallbackBudget = 4000;
+
 StaticResult SolveByReleasingTheTop(const model::ModelInput& input, const model::BuiltModel& built,
                                     cms::ReductionCache& cache, const StaticSettings& settings) {
   model::ModelInput held = input;
@@ -299,15 +305,20 @@ StaticResult SolveByReleasingTheTop(const model::ModelInput& input, const model:
   lateral.at = built.system.length();
   lateral.fixed[model::kY] = lateral.fixed[model::kZ] = true;
   held.supports.push_back(lateral);
-  StaticResult stage = SolveEquilibrium(model::BuildSystemModel(held, cache), settings, nullptr);
+  StaticResult stage = SolveEquilibrium(model::BuildSystemModel(held, cache), settings, nullptr, kFallbackBudget);
   int iterations = stage.iterations;
   constexpr double kLastDecade = 16.0, kSmallestStep = 1.0 / 64.0;
   double decade = 0.0, step = 1.0;
   while (decade < kLastDecade) {
     const double next = std::min(decade + step, kLastDecade);
     held.supports.back().stiffness_scale = std::pow(10.0, -next);
+    if (iterations > kFallbackBudget) {
+      throw SolverError(fmt::format("releasing the top of the string onto the wall took more than {} Newton "
+                                    "iterations (stopped at a lateral hold of 1e-{:.3g} of a support's stiffness)",
+                                    kFallbackBudget, decade));
+    }
     try {
-      stage = SolveEquilibrium(model::BuildSystemModel(held, cache), settings, &stage.q);
+      stage = SolveEquilibrium(model::BuildSystemModel(held, cache), settings, &stage.q, kFallbackBudget);
       iterations += stage.iterations;
       decade = next;
       step = std::min(2.0 * step, 1.0);

@@ -224,6 +224,14 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
       result.residual_history = std::move(outcome.history);
       ++result.load_steps;
       if (load_factor >= 1.0) break;
+      if (options.max_total_iterations > 0 && result.iterations >= options.max_total_iterations) {
+        last_failure = std::move(outcome);
+        last_failure.converged = false;
+        last_failure.reason = fmt::format("the budget of {} iterations in all is spent", options.max_total_iterations);
+        place = {load_factor, load_factor, step, result.rejected_steps};
+        failed = true;
+        break;
+      }
       if (outcome.iterations <= stepping.fast_iterations) {
         step = std::min(step * stepping.growth_factor, stepping.max_step);
       }
@@ -232,7 +240,12 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
     ++result.rejected_steps;
     place = {trial, load_factor, trial_step, result.rejected_steps};
     step = 0.5 * trial_step;
-    if (!stepping.enabled || step < stepping.min_step) {
+    const bool over_budget = options.max_total_iterations > 0 && result.iterations >= options.max_total_iterations;
+    if (over_budget) {
+      outcome.reason = fmt::format("{}; the budget of {} iterations in all is spent", outcome.reason,
+                                   options.max_total_iterations);
+    }
+    if (!stepping.enabled || step < stepping.min_step || over_budget) {
       last_failure = std::move(outcome);
       failed = true;
     }

@@ -38,6 +38,9 @@ struct NewtonOptions {
   // radius: e.g. a fraction of the hole clearance, so that contacts close gradually). 0 = none.
   double max_increment = 0.0;
   int max_iterations = 25;           // per load step
+  // Over all load steps: the solve stops (fails) once it has used more (0 = no limit), so that a
+  // hopeless continuation ends with a message instead of running for minutes.
+  int max_total_iterations = 0;
   double divergence_factor = 1e8;    // a step fails when |R| exceeds this × its first |R|
   double time = 0.0;                 // t passed to Residual / IterationMatrix (s)
   LineSearchOptions line_search;

@@ -89,6 +89,34 @@ TEST(SolveStatic, LoadSteppingReachesFullLoadWherePlainNewtonFails) {
   EXPECT_LT((result.q - ChainEquilibrium(n, elongation)).cwiseAbs().maxCoeff(), 1e-9);
 }
 
+TEST(SolveStatic, AnIterationBudgetEndsALongContinuationWithAMessage) {
+  // The chain of the test above takes more than 8 iterations in all with load stepping; with a
+  // budget of 8 the solve stops, says so, and keeps the last converged load factor.
+  const int n = 5;
+  const double k = 1.0, k3 = 1.0e6, elongation = 0.2;
+  SpringChain chain(n, k, k3, k * elongation + k3 * std::pow(elongation, 3));
+  NewtonOptions stepping = PlainNewton();
+  stepping.max_iterations = 20;
+  stepping.load_stepping.enabled = true;
+  stepping.load_stepping.min_step = 1e-6;
+  const StaticResult free_run = SolveStatic(chain, VecX::Zero(n), stepping);
+  ASSERT_TRUE(free_run.converged);
+  ASSERT_GT(free_run.iterations, 8);
+  stepping.max_total_iterations = 8;
+  try {
+    SolveStatic(chain, VecX::Zero(n), stepping);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    EXPECT_THAT(std::string(error.what()), HasSubstr("the budget of 8 iterations in all is spent"));
+  }
+  stepping.throw_on_failure = false;
+  const StaticResult stopped = SolveStatic(chain, VecX::Zero(n), stepping);
+  EXPECT_FALSE(stopped.converged);
+  EXPECT_LT(stopped.load_factor, 1.0);
+  EXPECT_LE(stopped.iterations, 8 + stepping.max_iterations);
+  EXPECT_TRUE(stopped.q.allFinite());
+}
+
 TEST(SolveStatic, FollowsAVonMisesTrussUpToNearItsLimitPoint) {
   // EA = 1e7 N, b = 1 m, h = 0.1 m (shallow). Choose w* on the rising branch and apply the load
   // the truss carries there, F(w*), so w* is the exact answer.
