@@ -227,12 +227,29 @@ TEST(Robustness, GeneratorSpansTheStatedRanges) {
   for (int n = 1; n <= 3; ++n) EXPECT_GT(by_stabilizers[n], 40) << n << " stabilizers";
 }
 
+constexpr const char* kSummaryHeader =
+    "index,seed,inclination_deg,dls_deg_per_100ft,clearance_in,hole_in,wob_klbf,stabilizers,bha_ft,string_ft,status,"
+    "exit,seconds,cpu_seconds,peak_mb,iterations,load_steps,message\n";
+
+std::string SummaryRow(const RobustnessCase& c, const Outcome& outcome) {
+  std::string message = outcome.status == 0 ? "" : outcome.message;
+  for (char& ch : message) if (ch == ',' || ch == '"') ch = ';';
+  return fmt::format("{},{},{:.3f},{:.3f},{:.4f},{},{:.3f},{},{:.2f},{:.2f},{},{},{:.3f},{:.3f},{:.1f},{},{},{}\n",
+                     c.index, kRobustnessSeed + c.index, c.final_inclination_deg, c.max_dls_deg_per_100ft,
+                     c.clearance_in, c.hole_in, c.wob_klbf, c.stabilizers, c.bha_length_ft, c.string_length_ft,
+                     StatusName(outcome), outcome.status, outcome.seconds, outcome.cpu_seconds, outcome.peak_mb,
+                     outcome.iterations, outcome.load_steps, message);
+}
+
 // Runs every case on kWorkers threads (each a `drillflex` process at a time), printing a line as
-// each case ends.
+// each case ends and its row to progress.csv (the order they end in; summary.csv is written sorted
+// at the end).
 std::vector<Outcome> RunAll(const fs::path& directory) {
   std::vector<Outcome> outcomes(kCaseCount);
   std::atomic<int> next{0};
   std::mutex print;
+  std::ofstream progress(directory / "progress.csv");
+  progress << kSummaryHeader << std::flush;
   auto work = [&]() {
     for (int i = next++; i < kCaseCount; i = next++) {
       const RobustnessCase c = MakeRobustnessCase(i);
@@ -245,6 +262,7 @@ std::vector<Outcome> RunAll(const fs::path& directory) {
                                outcome.iterations);
       if (outcome.status != 0) std::cout << "      " << outcome.message << "\n";
       std::cout << std::flush;
+      progress << SummaryRow(c, outcome) << std::flush;
     }
   };
   std::vector<std::thread> workers;
@@ -262,8 +280,7 @@ TEST(Robustness, RandomCasesConvergeOrStopWithAMessage) {
   const std::vector<Outcome> outcomes = RunAll(directory);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   std::ofstream summary(directory / "summary.csv");
-  summary << "index,seed,inclination_deg,dls_deg_per_100ft,clearance_in,hole_in,wob_klbf,stabilizers,"
-             "bha_ft,string_ft,status,exit,seconds,cpu_seconds,peak_mb,iterations,load_steps,message\n";
+  summary << kSummaryHeader;
   int converged = 0, stopped = 0;
   std::vector<double> times, cpu_times, peaks;
   std::vector<std::string> failures;
@@ -274,13 +291,7 @@ TEST(Robustness, RandomCasesConvergeOrStopWithAMessage) {
     cpu_times.push_back(outcome.cpu_seconds);
     peaks.push_back(outcome.peak_mb);
     if (outcome.problems.empty()) (outcome.status == 0 ? converged : stopped) += 1;
-    std::string message = outcome.status == 0 ? "" : outcome.message;
-    for (char& ch : message) if (ch == ',' || ch == '"') ch = ';';
-    summary << fmt::format("{},{},{:.3f},{:.3f},{:.4f},{},{:.3f},{},{:.2f},{:.2f},{},{},{:.3f},{:.3f},{:.1f},{},{},{}\n",
-                           i, kRobustnessSeed + i, c.final_inclination_deg, c.max_dls_deg_per_100ft, c.clearance_in,
-                           c.hole_in, c.wob_klbf, c.stabilizers, c.bha_length_ft, c.string_length_ft,
-                           StatusName(outcome), outcome.status, outcome.seconds, outcome.cpu_seconds, outcome.peak_mb,
-                           outcome.iterations, outcome.load_steps, message);
+    summary << SummaryRow(c, outcome);
     for (const auto& problem : outcome.problems) {
       failures.push_back(fmt::format("case {:03d}: {} ({})", i, problem, outcome.message));
     }
