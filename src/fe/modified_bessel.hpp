@@ -14,7 +14,8 @@
 //                       A&S 9.6.26), then I₀ from the Wronskian I₀K₁ + I₁K₀ = 1/z (A&S 9.6.15);
 //   Re z > 40:          the large-argument expansion A&S 9.7.1 (its exponentially small second
 //                       part is below e^{−80} there).
-// Accuracy: about 1e-15 relative over the right half plane tested (|z| from 1e-3 to 1e4).
+// Accuracy (tests/fe/modified_bessel_test.cpp): 1e-14 relative against mpmath along arg z = π/4
+// for |z| from 1e-3 to 1e3; the Wronskian holds to 2e-14 up to |z| = 2e4 at arg z = 0, π/4, 1.2.
 #pragma once
 
 #include <complex>
