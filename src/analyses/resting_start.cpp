@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/so3.hpp"
 #include "model/wall_contact.hpp"
 #include "well/hole.hpp"
 
@@ -67,20 +68,187 @@ void AddLoadDirections(const model::ModelInput& input, const model::SystemModel&
   }
 }
 
-// The offset of each station: the least clearance within kSupportReach, ramped from the bit.
+// The offset of each station: the least clearance within kSupportReach along the lateral load,
+// averaged as a vector over half that reach, so that the line bends smoothly where the contact
+// diameter changes (a collar meets drill pipe) or the load turns or vanishes (tension through a
+// kick-off: on the inside of the bend below, centred in the vertical hole above). A step there
+// would kink the line by up to ~0.3 rad and start the couplings strained by ~1e8 N. Every least
+// clearance in the averaging window covers the window itself, so the offset anywhere is at most the
+// least clearance within half a reach of it: a node laid a few centimetres from its station (the
+// chain's slide) does not start in the wall. Ramped from zero at the bit.
 std::vector<Vec3> Offsets(const std::vector<NodeStation>& stations) {
-  std::vector<Vec3> offsets(stations.size(), Vec3::Zero());
+  const std::size_t n = stations.size();
+  std::vector<double> least(n, 0.0);
   std::size_t first = 0;
-  for (std::size_t i = 0; i < stations.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     while (stations[first].s < stations[i].s - kSupportReach) ++first;
     double clearance = stations[i].clearance;
-    for (std::size_t j = first; j < stations.size() && stations[j].s <= stations[i].s + kSupportReach; ++j) {
+    for (std::size_t j = first; j < n && stations[j].s <= stations[i].s + kSupportReach; ++j) {
       clearance = std::min(clearance, stations[j].clearance);
     }
+    least[i] = clearance + kStartPenetration;
+  }
+  std::vector<Vec3> offsets(n, Vec3::Zero());
+  const double average_reach = 0.5 * kSupportReach;
+  first = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    while (stations[first].s < stations[i].s - average_reach) ++first;
+    Vec3 sum = Vec3::Zero();
+    int count = 0;
+    for (std::size_t j = first; j < n && stations[j].s <= stations[i].s + average_reach; ++j, ++count) {
+      sum += least[j] * stations[j].direction;
+    }
     const double ramp = std::min(1.0, stations[i].s / kSupportReach);
-    offsets[i] = ramp * (clearance + kStartPenetration) * stations[i].direction;
+    offsets[i] = ramp * sum / count;
   }
   return offsets;
+}
+
+// The resting line: where the chain of bodies is laid, as a function of u, the distance from the
+// bit along the hole axis (MD = bit_md − u): the hole axis plus the stations' offsets, linear in u
+// between stations (the bit's offset is zero; beyond the last station the last offset holds).
+class RestingLine {
+ public:
+  RestingLine(const model::ModelInput& input, const std::vector<NodeStation>& stations, const std::vector<Vec3>& offsets)
+      : trajectory_(*input.trajectory), bit_md_(input.bit_md) {
+    for (std::size_t i = 0; i < stations.size(); ++i) {
+      const double u = bit_md_ - stations[i].md;
+      if (!u_.empty() && u <= u_.back()) continue;  // a joint's second node, or a station out of order
+      u_.push_back(u);
+      offsets_.push_back(offsets[i]);
+    }
+  }
+
+  Vec3 At(double u) const { return trajectory_.Position(bit_md_ - u) + Offset(u); }
+
+  // The u > u_start whose point lies `chord` from `from` (the chord of a straight body), by the
+  // secant method from u_start + chord; the line is nearly straight over a body, so two or three
+  // steps reach 1e-12 m.
+  double Along(const Vec3& from, double u_start, double chord) const {
+    auto miss = [&](double u) { return (At(u) - from).norm() - chord; };
+    double u0 = u_start + chord, u1 = u_start + 1.01 * chord;
+    double f0 = miss(u0), f1 = miss(u1);
+    for (int iteration = 0; iteration < 30 && std::abs(f1) > 1e-12 * std::max(chord, 1.0); ++iteration) {
+      if (f1 == f0) break;
+      const double u2 = u1 - f1 * (u1 - u0) / (f1 - f0);
+      u0 = u1;
+      f0 = f1;
+      u1 = u2;
+      f1 = miss(u1);
+    }
+    return u1;
+  }
+
+ private:
+  Vec3 Offset(double u) const {
+    if (u_.empty() || u <= u_.front()) return offsets_.empty() ? Vec3::Zero() : offsets_.front();
+    if (u >= u_.back()) return offsets_.back();
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(u_.begin(), u_.end(), u) - u_.begin());
+    const double w = (u - u_[i - 1]) / (u_[i] - u_[i - 1]);
+    return (1.0 - w) * offsets_[i - 1] + w * offsets_[i];
+  }
+
+  const well::Trajectory& trajectory_;
+  double bit_md_ = 0.0;
+  std::vector<double> u_;
+  std::vector<Vec3> offsets_;
+};
+
+// Lays the bodies as straight chords (η = 0) end to end along the resting line from `bit`, the
+// bit's first node, at u = shift; returns the top node's position. `ends` gets the u of each
+// body's last node.
+//
+// Orientations: the top body's is its reference frame turned (by the smallest rotation) onto its
+// chord, since the hook holds the top in torsion; each body below takes the frame of the body
+// above turned onto its own chord (parallel transport: no roll between neighbours). The bodies'
+// reference frames point z to the high side, which rolls with the azimuth and jumps where the hole
+// leaves the vertical (there the vertical's "high side" is north): taking the chords' rolls from
+// those frames would start the couplings twisted by up to π (a kick-off toward the south), the
+// one strain Newton resolves worst (a twist turns the bending held in body coordinates).
+Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const Vec3& bit, double shift, VecX& q,
+              std::vector<double>& ends) {
+  const auto& bodies = system.bodies();
+  double u = shift;
+  std::vector<Vec3> starts;
+  Vec3 start = bit;
+  ends.clear();
+  for (const model::Body& body : bodies) {
+    const Vec3 first = body.reduced->node_positions.front(), last = body.reduced->node_positions.back();
+    u = line.Along(start, u, (last - first).norm());
+    starts.push_back(start);
+    start = line.At(u);
+    ends.push_back(u);
+  }
+  starts.push_back(start);
+  Mat3 above = Mat3::Identity();
+  for (std::size_t b = bodies.size(); b-- > 0;) {
+    const model::Body& body = bodies[b];
+    const Vec3 first = body.reduced->node_positions.front(), last = body.reduced->node_positions.back();
+    const Vec3 chord = starts[b + 1] - starts[b];
+    const Mat3 reference = body.reference_orientation.toRotationMatrix();
+    const Mat3 from = b + 1 == bodies.size() ? reference : above;
+    // `from`'s axis is the body's reference chord direction ρ_last − ρ_first (along x).
+    const Mat3 frame = Quat::FromTwoVectors(from * (last - first), chord).toRotationMatrix() * from;
+    Quat orientation(frame);
+    orientation.normalize();
+    q.segment<3>(body.q_offset) = starts[b] - orientation.toRotationMatrix() * first;
+    q.segment<4>(body.q_offset + 3) << orientation.w(), orientation.x(), orientation.y(), orientation.z();
+    above = orientation.toRotationMatrix();
+  }
+  return start;
+}
+
+Quat BodyOrientation(const model::Body& body, const VecX& q) {
+  return Quat(q[body.q_offset + 3], q[body.q_offset + 4], q[body.q_offset + 5], q[body.q_offset + 6]);
+}
+
+// Bends each straight chord of LayChain into the resting line's curve. The chords meet at kinks
+// (the turn of the hole over a body, ~1e-3 rad) that the stiff couplings resist with moments of
+// ~c·EI/ℓ·kink (1e8 N·m at c = 10 for a 13 in collar: a start far from any equilibrium). Each body
+// gets the small frame motion (δr, δθ, body frame) and the modal coordinates η that keep its end
+// nodes where they are and turn them to the joint frames R_j: the chord frame of the body below
+// turned onto the line's tangent at the joint (one frame shared by both bodies of a joint, so the
+// coupling starts unstrained). Per body, with ρ_k, Φ_k, Ψ_k the node rows of its modes (k: the
+// two end nodes; model/body_dynamics.hpp):
+//   δr + δθ × ρ_k + Φ_k η = 0,   δθ + Ψ_k η = log(A_bᵀ R_j),
+// 12 equations for 6 + n_f unknowns, solved for the least η (the frame motion weighted as free).
+void BendAlongLine(const model::SystemModel& system, const RestingLine& line, double shift,
+                   const std::vector<double>& ends, VecX& q) {
+  const auto& bodies = system.bodies();
+  constexpr double kHalfSpan = 0.005;  // m, central difference of the line's tangent
+  auto tangent = [&](double u) { return (line.At(u + kHalfSpan) - line.At(u - kHalfSpan)).normalized(); };
+  auto joint_frame = [&](const Mat3& chord, double u) -> Mat3 {
+    return Quat::FromTwoVectors(chord.col(0), tangent(u)).toRotationMatrix() * chord;
+  };
+  std::vector<Mat3> chords;
+  for (const model::Body& body : bodies) chords.push_back(BodyOrientation(body, q).toRotationMatrix());
+  std::vector<Mat3> joints;  // joints[b]: the frame at body b's first node; joints[n]: the top's
+  joints.push_back(joint_frame(chords.front(), shift));
+  for (std::size_t b = 0; b < bodies.size(); ++b) joints.push_back(joint_frame(chords[b], ends[b]));
+  constexpr double kFrameWeight = 1e3;  // frame columns scaled up: their motion counts as free
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const model::Body& body = bodies[b];
+    const int nf = body.flexible_count;
+    const int last = body.node_count() - 1;
+    MatX a = MatX::Zero(12, 6 + nf);
+    VecX rhs = VecX::Zero(12);
+    for (int end = 0; end < 2; ++end) {
+      const int k = end == 0 ? 0 : last;
+      const Vec3& rho = body.reduced->node_positions[k];
+      a.block<3, 3>(6 * end, 0) = kFrameWeight * Mat3::Identity();
+      a.block<3, 3>(6 * end, 3) = -kFrameWeight * so3::Skew(rho);
+      a.block(6 * end, 6, 3, nf) = body.reduced->node_translation_modes[k];
+      a.block<3, 3>(6 * end + 3, 3) = kFrameWeight * Mat3::Identity();
+      a.block(6 * end + 3, 6, 3, nf) = body.reduced->node_rotation_modes[k];
+      rhs.segment<3>(6 * end + 3) = so3::LogMap(chords[b].transpose() * joints[b + end]);
+    }
+    const VecX x = a.completeOrthogonalDecomposition().solve(rhs);
+    const Vec3 dr = kFrameWeight * x.head<3>(), dtheta = kFrameWeight * x.segment<3>(3);
+    q.segment<3>(body.q_offset) += chords[b] * dr;
+    const Quat bent = so3::Compose(BodyOrientation(body, q), dtheta);
+    q.segment<4>(body.q_offset + 3) << bent.w(), bent.x(), bent.y(), bent.z();
+    q.segment(body.q_offset + 7, nf) = x.tail(nf);
+  }
 }
 
 }  // namespace
@@ -91,42 +259,34 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   std::vector<NodeStation> stations = Stations(input, system);
   AddLoadDirections(input, system, stations);
   const std::vector<Vec3> offsets = Offsets(stations);
-
   VecX q = system.ReferencePositions();
-  std::size_t index = 0;
-  Vec3 start = Vec3::Zero();
-  if (!stations.empty()) start = stations.front().position + offsets.front();
-  for (const model::Body& body : system.bodies()) {
-    const std::size_t end = index + static_cast<std::size_t>(body.node_count()) - 1;
-    const Vec3 target = stations[end].position + offsets[end];
-    const Mat3 reference = body.reference_orientation.toRotationMatrix();
-    // The smallest rotation taking the reference axis onto the chord to the moved end node.
-    const Quat turn = Quat::FromTwoVectors(reference.col(0), target - start);
-    Quat orientation = turn * body.reference_orientation;
-    orientation.normalize();
-    q.segment<3>(body.q_offset) = start - orientation.toRotationMatrix() * body.reduced->node_positions.front();
-    q.segment<4>(body.q_offset + 3) << orientation.w(), orientation.x(), orientation.y(), orientation.z();
-    start = q.segment<3>(body.q_offset) + orientation.toRotationMatrix() * body.reduced->node_positions.back();
-    index = end + 1;
+  if (stations.empty()) return q;
+  const RestingLine line(input, stations, offsets);
+  // The chain laid on the offset line is longer or shorter along the hole than the string on the
+  // hole axis (the offsets change its path length), so its top would miss the hook, which holds
+  // the top axially, by centimetres (e.g. 7.7 cm on 300 m through a 75° turn; ~1e10 N in the
+  // hook's stiff spring). The bit is axially free: slide the chain along the hole until the top
+  // lands at its reference MD (the miss is nearly linear in the shift: two or three passes).
+  // The hook holds the top axially along its body's reference axis; the bit's support holds the bit
+  // laterally (very stiffly: a micrometre across it is ~1e4 N), so the bit slides along its own
+  // reference axis, and the top's miss is measured along the top's.
+  const model::Body& bit_body = system.bodies().front();
+  const model::Body& top_body = system.bodies().back();
+  const Vec3 bit_axis = bit_body.reference_orientation.toRotationMatrix().col(0);
+  const Vec3 top_axis = top_body.reference_orientation.toRotationMatrix().col(0);
+  const Vec3 bit_reference = bit_body.reference_position +
+                             bit_body.reference_orientation.toRotationMatrix() * bit_body.reduced->node_positions.front();
+  const Vec3 top_reference = top_body.reference_position +
+                             top_body.reference_orientation.toRotationMatrix() * top_body.reduced->node_positions.back();
+  double shift = 0.0;  // m up the hole along the bit's axis
+  std::vector<double> ends;
+  for (int pass = 0; pass < 5; ++pass) {
+    const Vec3 top = LayChain(system, line, bit_reference + shift * bit_axis, shift, q, ends);
+    const double miss = (top - top_reference).dot(top_axis);
+    if (std::abs(miss) < 1e-10) break;
+    shift -= miss;
   }
-  // The chain of rigid chords keeps each body's length, so its top end drifts (second order in the
-  // offsets) from where the hook holds it axially: slide the whole chain along the bit's axis (the
-  // bit is axially free; a shift with a lateral part at the bit would load its stiff lateral
-  // support) until the top's axial place is right. Skipped when the string turns by more than 60°.
-  if (!stations.empty()) {
-    const Vec3 drift = stations.back().position + offsets.back() - start;
-    const auto axis = [&](const model::Body& body) {
-      return Quat(q[body.q_offset + 3], q[body.q_offset + 4], q[body.q_offset + 5], q[body.q_offset + 6])
-          .toRotationMatrix()
-          .col(0);
-    };
-    const Vec3 bit_axis = axis(system.bodies().front()), top_axis = axis(system.bodies().back());
-    const double alignment = bit_axis.dot(top_axis);
-    if (alignment > 0.5) {
-      const Vec3 shift = (drift.dot(top_axis) / alignment) * bit_axis;
-      for (const model::Body& body : system.bodies()) q.segment<3>(body.q_offset) += shift;
-    }
-  }
+  BendAlongLine(system, line, shift, ends, q);
   return q;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -37,6 +38,13 @@ class NewtonStepper {
   StepOutcome Run(const VecX& q_start);
 
  private:
+  // The Newton correction dv cut to the trust radius (NewtonOptions::max_increment): a step that
+  // makes |R| grow more than kTrustGrowth times is cut to a quarter until it does not (the
+  // radius shrinks with it, down to kSmallestRadius of max_increment); a step that lowers |R|
+  // lets the radius grow back (×2, up to max_increment). The acceptance is non-monotone on
+  // purpose: a contact that closes raises |R| for an iteration before the next step settles it.
+  LineSearchResult TrustRegionStep(const VecX& q, const VecX& residual, const VecX& dv, double& radius) const;
+
   // Factorizes K(q); returns an empty string or the reason it failed.
   std::string Factorize(const VecX& q);
 
@@ -58,6 +66,31 @@ std::string NewtonStepper::Factorize(const VecX& q) {
   return {};
 }
 
+constexpr double kTrustGrowth = 4.0;
+constexpr double kSmallestRadius = 1e-3;
+
+LineSearchResult NewtonStepper::TrustRegionStep(const VecX& q, const VecX& residual, const VecX& dv,
+                                                double& radius) const {
+  const double norm = residual.norm();
+  const double length = problem_.StepLength(q, dv);
+  LineSearchResult result;
+  while (true) {
+    result.step = length > radius ? radius / length : 1.0;
+    result.q = problem_.Increment(q, result.step * dv);
+    result.residual = problem_.Residual(options_.time, result.q, zero_, zero_);
+    ++result.residual_evaluations;
+    const double trial = result.residual.allFinite() ? result.residual.norm() : std::numeric_limits<double>::infinity();
+    result.decreased = trial < norm;
+    const bool acceptable = trial <= kTrustGrowth * norm;
+    if (acceptable || radius <= kSmallestRadius * options_.max_increment || length <= radius * 0.25) {
+      if (trial < norm) radius = std::min(2.0 * radius, options_.max_increment);
+      result.decreased = result.decreased || acceptable;
+      return result;
+    }
+    radius = std::max(0.25 * std::min(radius, length), kSmallestRadius * options_.max_increment);
+  }
+}
+
 StepOutcome NewtonStepper::Run(const VecX& q_start) {
   StepOutcome out;
   out.q = q_start;
@@ -65,6 +98,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
   const bool reuse = problem_.CanReuseIterationMatrix();
   bool fresh = false;  // the factorization belongs to the current q
   double first_norm = -1.0;
+  double radius = options_.max_increment;
   while (true) {
     if (!residual.allFinite()) {
       out.reason = "the residual became non-finite (NaN or Inf)";
@@ -100,13 +134,13 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
       out.reason = fmt::format("the Newton correction cannot be computed ({})", error.what());
       return out;
     }
-    if (options_.max_increment > 0.0) {
-      const double longest = problem_.StepLength(out.q, dv);
-      if (longest > options_.max_increment) dv *= options_.max_increment / longest;
-    }
     ++out.iterations;
-    LineSearchResult search = BacktrackingLineSearch(problem_, options_.time, out.q, residual, dv,
-                                                     options_.line_search);
+    LineSearchResult search;
+    if (options_.max_increment > 0.0) {
+      search = TrustRegionStep(out.q, residual, dv, radius);
+    } else {
+      search = BacktrackingLineSearch(problem_, options_.time, out.q, residual, dv, options_.line_search);
+    }
     if (options_.line_search.enabled && !search.decreased) {
       if (reuse && !fresh) {  // an old matrix: refresh it at q and try again
         if (std::string failure = Factorize(out.q); !failure.empty()) {

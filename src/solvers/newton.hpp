@@ -36,6 +36,9 @@ struct NewtonOptions {
   // Largest StaticProblem::StepLength of one Newton step (by default |dv|∞ in units of v; for the
   // string model the largest node translation in m); a longer step is scaled down to it (a trust
   // radius: e.g. a fraction of the hole clearance, so that contacts close gradually). 0 = none.
+  // The radius adapts: a step that makes |R| grow more than 4 times is cut to a quarter (down to
+  // 1e-3 max_increment) and retried along the same direction; a step that lowers |R| doubles it
+  // again, up to max_increment. With a trust radius the line search is not used.
   double max_increment = 0.0;
   int max_iterations = 25;           // per load step
   // Over all load steps: the solve stops (fails) once it has used more (0 = no limit), so that a
