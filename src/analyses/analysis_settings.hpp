@@ -31,7 +31,8 @@ struct Excitation {
   double lateral = 0.0;     // N
   double axial = 0.0;       // N
   double torsional = 0.0;   // N·m
-  int lobes = 0;            // motor rotor lobes
+  int lobes = 0;            // motor rotor lobes (0: the motor component's)
+  std::optional<double> motor_speed;  // rad/s, motor rotor speed (default: rev_per_volume × flow rate)
   int source_line = 0;
 };
 
@@ -40,6 +41,10 @@ struct VibrationSettings {
   double rpm_to = 250.0 * kPi / 30.0;    // rad/s
   double rpm_step = 1.0 * kPi / 30.0;    // rad/s
   std::vector<Excitation> excitations;
+  // Safe windows (analyses/critical_speeds.hpp): the lateral displacement amplitude stays below
+  // this fraction of the radial clearance, and the bending-stress amplitude below the limit.
+  double clearance_fraction = 0.5;
+  double stress_limit = 10000.0 * 6894.757293168;  // Pa (10 ksi): a screening value, set your own
 };
 
 struct BucklingSettings {

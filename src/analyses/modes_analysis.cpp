@@ -89,6 +89,47 @@ ModeResult DescribeMode(const model::SystemModel& model, const std::vector<model
   return mode;
 }
 
+// The frequency (corrected for a viscous fluid's C_m(ω)) and damping ratio of an undamped mode:
+// the fixed point ω² = φᵀKφ / (φᵀM_sφ + Σ m_k(ω) s_k), s_k = |J_lat,k φ|² (model/lateral_fluid.hpp),
+// then ζ = ζ_s + (φᵀDφ + Σ c_k(ω) s_k) / (2 ω (φᵀM_sφ + Σ m_k(ω) s_k)).
+void SetFrequencyAndDamping(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system,
+                            const model::LateralFluid* fluid, ModeResult& mode) {
+  if (mode.rigid_body || mode.eigenvalue <= 0.0) return;
+  const VecX& phi = mode.vector;
+  const double stiffness = phi.dot(system.stiffness * phi);
+  const double steel = phi.dot(system.mass * phi);
+  const double structural_damping = phi.dot(system.damping * phi);
+  std::vector<double> squares;
+  if (fluid && !fluid->empty()) squares = model::LateralNodeSquares(model, *fluid, q, phi);
+  auto fluid_terms = [&](double omega) {
+    model::NodeFluidTerms sum;
+    for (std::size_t k = 0; k < squares.size(); ++k) {
+      const model::NodeFluidTerms terms = model::CalcNodeFluidTerms(*fluid, k, omega);
+      sum.mass += terms.mass * squares[k];
+      sum.damping += terms.damping * squares[k];
+    }
+    return sum;
+  };
+  double omega = std::sqrt(mode.eigenvalue);
+  if (fluid && fluid->frequency_dependent()) {
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const double next = std::sqrt(std::max(0.0, stiffness / (steel + fluid_terms(omega).mass)));
+      const bool done = std::abs(next - omega) <= 1e-12 * omega;
+      omega = next;
+      if (done) break;
+    }
+    mode.eigenvalue = omega * omega;
+    mode.frequency_hz = omega / (2.0 * kPi);
+  }
+  const model::NodeFluidTerms terms = fluid_terms(omega);
+  // Plus the structural damping ratio ζ_s as a loss factor 2ζ_s on K (vibration_analysis.hpp).
+  const double structural = model.bodies().empty() ? 0.0 : model.bodies().front().reduced->structural_damping;
+  if (omega > 0.0) {
+    mode.damping_ratio =
+        structural + (structural_damping + terms.damping) / (2.0 * omega * (steel + terms.mass));
+  }
+}
+
 // The `rigid` eigenvalues of smallest |ω²| are the rigid-body modes.
 std::vector<bool> RigidFlags(const VecX& eigenvalues, int rigid) {
   std::vector<Eigen::Index> order(eigenvalues.size());
@@ -154,13 +195,17 @@ LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, doubl
   LinearizedSystem system;
   system.stiffness = (0.5 * (tangent + SparseMat(tangent.transpose()))).pruned();
   system.mass = (0.5 * (mass + SparseMat(mass.transpose()))).pruned();
+  system.damping = model.IterationMatrix(0.0, q, zero, zero, load_factor, 0.0, 1.0, 0.0).pruned();
   return system;
 }
 
 ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings,
-                         double load_factor) {
+                         double load_factor, const model::LateralFluid* fluid) {
   if (settings.count < 1) throw LogicError("ComputeModes: count must be at least 1");
   const LinearizedSystem system = Linearize(model, q, load_factor);
+  // The eigenproblem's mass: the steel and the fluid at its inviscid (or given) added mass.
+  LinearizedSystem solved = system;
+  if (fluid && !fluid->empty()) solved.mass += model::CalcLateralFluidMatrices(model, *fluid, q, 0.0).mass;
   const int n = model.num_velocities();
   const auto poses = model.Poses(q);
   const std::vector<Station> stations = StringStations(model);
@@ -169,10 +214,10 @@ ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const M
   int solve_count = all ? std::min(n, settings.count) : std::min(bound, std::max(3 * settings.count, 12));
   ModesResult result;
   for (const Station& station : stations) result.s.push_back(station.s);
-  const int rigid = CountRigidBodyModes(model, q, system);
+  const int rigid = CountRigidBodyModes(model, q, solved);
   if (all) solve_count = std::min(n, settings.count + rigid);
   while (true) {
-    const solvers::ModalResult modal = LowestModes(system, solve_count);
+    const solvers::ModalResult modal = LowestModes(solved, solve_count);
     const std::vector<bool> rigid_flags = RigidFlags(modal.eigenvalues, rigid);
     result.modes.clear();
     result.rigid_body_modes = 0;
@@ -188,13 +233,15 @@ ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const M
     if (static_cast<int>(result.modes.size()) >= settings.count || solve_count >= bound) break;
     solve_count = std::min(bound, 2 * solve_count);
   }
+  for (ModeResult& mode : result.modes) SetFrequencyAndDamping(model, q, system, fluid, mode);
   std::stable_sort(result.modes.begin(), result.modes.end(),
                    [](const ModeResult& a, const ModeResult& b) { return a.eigenvalue < b.eigenvalue; });
   return result;
 }
 
-ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesSettings& settings) {
-  return ComputeModes(built.system, q, settings, 1.0);
+ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesSettings& settings,
+                     const model::LateralFluid* fluid) {
+  return ComputeModes(built.system, q, settings, 1.0, fluid);
 }
 
 }  // namespace drillflex::analyses

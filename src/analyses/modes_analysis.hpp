@@ -11,6 +11,7 @@
 #include "analyses/string_stations.hpp"
 #include "core/types.hpp"
 #include "model/builder.hpp"
+#include "model/lateral_fluid.hpp"
 #include "solvers/eigen.hpp"
 
 namespace drillflex::analyses {
@@ -18,6 +19,11 @@ namespace drillflex::analyses {
 struct ModeResult {
   double frequency_hz = 0.0;     // 0 for a rigid-body mode
   double eigenvalue = 0.0;       // ω², rad²/s²
+  // ζ = ζ_s + φᵀ D φ / (2 ω φᵀ M φ) of the undamped mode φ: the case's structural damping ratio
+  // ζ_s (a loss factor 2ζ_s on K, analyses/vibration_analysis.hpp) plus the viscous damping D at
+  // ω (the bodies' modal damping, couplings, supports, contacts, fluid); 0 for a rigid-body mode.
+  // First order in D (exact for proportional damping). See ComputeModes for the fluid.
+  double damping_ratio = 0.0;
   ModeKind kind = ModeKind::Lateral;  // the dominant family (never All)
   // Kinetic-energy fractions (sum 1): translation along the string axis, rotation about it, rest.
   double axial_fraction = 0.0, torsional_fraction = 0.0, lateral_fraction = 0.0;
@@ -43,18 +49,29 @@ const char* ModeKindName(ModeKind kind);
 // The `count` lowest modes (kind All), or the `count` lowest modes of one family (Lateral,
 // Axial, Torsional: more modes are solved progressively until enough are found, at most
 // kMaxModesSearched). Throws SolverError if the eigen solver fails.
-ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesSettings& settings);
+//
+// Drilling fluid (`fluid`, model/lateral_fluid.hpp): its lateral mass joins M. The eigenproblem
+// is solved with the annulus added mass at its inviscid C_m (or the case's override); with a
+// viscous fluid each reported mode's frequency is then corrected for the frequency-dependent
+// C_m(ω) by the fixed point of the Rayleigh quotient ω² = φᵀKφ / φᵀ(M_s + M_f(ω))φ on the shape φ
+// found with the inviscid mass (the shape's change with C_m is neglected: the added mass is close
+// to proportional to the steel's along a uniform section), and its damping ratio includes the
+// fluid damping C_v(ω) at that ω.
+ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesSettings& settings,
+                     const model::LateralFluid* fluid = nullptr);
 
 // The same on a bare system model at a given load factor (buckling's frequency method).
 ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings,
-                         double load_factor = 1.0);
+                         double load_factor = 1.0, const model::LateralFluid* fluid = nullptr);
 
 // The linearized matrices at q (v = a = 0): K = ∂R/∂q at the load factor, symmetrized
 // ½(K + Kᵀ) (the tangent of dead moments and of the rotation parametrization is slightly
-// unsymmetric away from equilibrium), and M(q).
+// unsymmetric away from equilibrium), M(q) (the steel; the fluid is added by the analyses) and
+// D = ∂R/∂v (modal structural damping of the bodies, coupling, support and contact damping).
 struct LinearizedSystem {
   SparseMat stiffness;
   SparseMat mass;
+  SparseMat damping;
 };
 LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, double load_factor);
 

@@ -10,6 +10,7 @@
 #include "analyses/buckling_analysis.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
+#include "analyses/vibration_analysis.hpp"
 #include "app/commands.hpp"
 #include "cms/reduction_cache.hpp"
 #include "core/error.hpp"
@@ -22,7 +23,7 @@ namespace {
 using units::Quantity;
 
 struct Requested {
-  bool static_analysis = false, modes = false, buckling = false;
+  bool static_analysis = false, modes = false, buckling = false, vibration = false;
 };
 
 std::string Show(const io::Case& c, double si, Quantity quantity, int digits = 5) {
@@ -94,13 +95,50 @@ void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
 
 void PrintModes(const analyses::ModesResult& result) {
   std::cout << fmt::format("modes: {} computed\n", result.modes.size());
-  std::cout << fmt::format("  {:>4} {:>12}  {:<10} {:>6} {:>6} {:>6}\n", "#", "f (Hz)", "kind", "axial", "tors", "lat");
+  std::cout << fmt::format("  {:>4} {:>12} {:>9}  {:<10} {:>6} {:>6} {:>6}\n", "#", "f (Hz)", "damping", "kind", "axial",
+                           "tors", "lat");
   for (std::size_t m = 0; m < result.modes.size(); ++m) {
     const auto& mode = result.modes[m];
-    std::cout << fmt::format("  {:>4} {:>12.6g}  {:<10} {:>6.3f} {:>6.3f} {:>6.3f}{}\n", m + 1, mode.frequency_hz,
-                             analyses::ModeKindName(mode.kind), mode.axial_fraction, mode.torsional_fraction,
+    std::cout << fmt::format("  {:>4} {:>12.6g} {:>9.3g}  {:<10} {:>6.3f} {:>6.3f} {:>6.3f}{}\n", m + 1,
+                             mode.frequency_hz, mode.damping_ratio, analyses::ModeKindName(mode.kind), mode.axial_fraction, mode.torsional_fraction,
                              mode.lateral_fraction, mode.rigid_body ? "  (rigid body)" : "");
   }
+}
+
+void PrintCriticalRpm(const io::Case& c, const analyses::ModesResult& result) {
+  const io::RuleOfThumbRpm rule = io::CalcRuleOfThumbCriticalRpm(c);
+  for (const auto& mode : result.modes) {
+    if (mode.rigid_body || mode.kind != analyses::ModeKind::Lateral || mode.frequency_hz <= 0.0) continue;
+    std::cout << fmt::format("  critical RPM of the first lateral mode {:.5g} rpm; rule of thumb 33055 sqrt(OD²+ID²)/L² "
+                             "{:.5g} rpm (span {}, ±15 %)\n",
+                             60.0 * mode.frequency_hz, rule.rpm * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
+    return;
+  }
+  std::cout << fmt::format("  rule-of-thumb critical RPM 33055 sqrt(OD²+ID²)/L² {:.5g} rpm (span {})\n",
+                           rule.rpm * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
+}
+
+void PrintVibration(const io::Case& c, const analyses::VibrationResult& result) {
+  std::cout << fmt::format("vibration: {} rotary speeds, {} to {}; {} wall contacts closed at equilibrium\n",
+                           result.rpm.size(), Show(c, result.rpm.front(), Quantity::RotarySpeed),
+                           Show(c, result.rpm.back(), Quantity::RotarySpeed), result.closed_contacts);
+  const auto peak = std::max_element(result.max_lateral_displacement.begin(), result.max_lateral_displacement.end());
+  const std::size_t i = static_cast<std::size_t>(peak - result.max_lateral_displacement.begin());
+  std::cout << fmt::format("  largest lateral displacement amplitude {} at {} ({} from the bit)\n",
+                           Show(c, *peak, Quantity::Diameter), Show(c, result.rpm[i], Quantity::RotarySpeed),
+                           Show(c, result.s_max_displacement[i], Quantity::Length));
+  std::string critical;
+  for (const double rpm : result.critical_rpm) critical += (critical.empty() ? "" : ", ") + Show(c, rpm, Quantity::RotarySpeed);
+  std::cout << "  critical RPMs: " << (critical.empty() ? "none in the sweep" : critical) << "\n";
+  std::string windows;
+  for (const auto& w : result.safe_windows) {
+    windows += (windows.empty() ? "" : ", ") + fmt::format("{} to {}", Show(c, w.from, Quantity::RotarySpeed),
+                                                           Show(c, w.to, Quantity::RotarySpeed));
+  }
+  std::cout << fmt::format("  safe windows (displacement below {:.3g} of the clearance, bending-stress amplitude "
+                           "below {}): {}\n",
+                           result.clearance_fraction, Show(c, result.stress_limit, Quantity::Stress),
+                           windows.empty() ? "none" : windows);
 }
 
 void PrintBuckling(const io::Case& c, const analyses::BucklingResult& result) {
@@ -130,7 +168,7 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
   io::AddCaseHeader(c, built, files);
 
   VecX equilibrium = built.system.ReferencePositions();
-  if (requested.static_analysis || requested.modes) {
+  if (requested.static_analysis || requested.modes || requested.vibration) {
     const auto result =
         analyses::RunStaticInWell(input, built, cache, c.analyses.static_analysis.value_or(analyses::StaticSettings{}));
     equilibrium = result.q;
@@ -140,9 +178,25 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     }
   }
   if (requested.modes) {
-    const auto result = analyses::RunModes(built, equilibrium, c.analyses.modes.value_or(analyses::ModesSettings{}));
+    const model::LateralFluid fluid = model::MakeLateralFluid(input, built.system);
+    const auto result =
+        analyses::RunModes(built, equilibrium, c.analyses.modes.value_or(analyses::ModesSettings{}), &fluid);
     PrintModes(result);
+    PrintCriticalRpm(c, result);
     io::AddModesResults(c, result, files);
+  }
+  if (requested.vibration) {
+    const model::LateralFluid fluid = model::MakeLateralFluid(input, built.system);
+    analyses::VibrationResult result;
+    try {
+      result = analyses::RunVibration(built, input, fluid, equilibrium,
+                                      c.analyses.vibration.value_or(analyses::VibrationSettings{}));
+    } catch (const InputError& e) {  // an excitation the string cannot take: name the case file
+      if (!e.location().file.empty()) throw;
+      throw InputError({c.file, e.location().line, e.location().column}, e.key_path(), e.message());
+    }
+    PrintVibration(c, result);
+    io::AddVibrationResults(c, result, files);
   }
   if (requested.buckling) {
     const auto result = analyses::RunBuckling(built, c.analyses.buckling.value_or(analyses::BucklingSettings{}));
@@ -157,27 +211,28 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
 
 }  // namespace
 
-int RunStaticCommand(const CommandOptions& options) { return RunAnalyses(options, {true, false, false}); }
-int RunModesCommand(const CommandOptions& options) { return RunAnalyses(options, {false, true, false}); }
-int RunBucklingCommand(const CommandOptions& options) { return RunAnalyses(options, {false, false, true}); }
+int RunStaticCommand(const CommandOptions& options) { return RunAnalyses(options, {true, false, false, false}); }
+int RunModesCommand(const CommandOptions& options) { return RunAnalyses(options, {false, true, false, false}); }
+int RunBucklingCommand(const CommandOptions& options) { return RunAnalyses(options, {false, false, true, false}); }
+int RunVibrationCommand(const CommandOptions& options) { return RunAnalyses(options, {false, false, false, true}); }
 
 int RunCaseCommand(const CommandOptions& options) {
   const io::Case c = io::ReadCase(options.case_path);
   const auto& a = c.analyses;
   std::vector<std::string> unavailable;
-  if (a.vibration) unavailable.push_back("vibration");
   if (a.transient) unavailable.push_back("transient");
   if (!unavailable.empty()) {
     std::string list;
     for (const auto& name : unavailable) list.append(list.empty() ? "" : ", ").append(name);
     throw InputError({c.file, 0, 0}, "analyses",
                      fmt::format("this version of drillflex cannot run: {}; remove them from 'analyses' "
-                                 "or run the others one by one (static, modes, buckling)", list));
+                                 "or run the others one by one (static, modes, vibration, buckling)", list));
   }
-  if (!a.static_analysis && !a.modes && !a.buckling) {
+  if (!a.static_analysis && !a.modes && !a.buckling && !a.vibration) {
     throw InputError({c.file, 0, 0}, "analyses", "the case lists no analyses to run");
   }
-  return RunAnalyses(options, {a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value()});
+  return RunAnalyses(options, {a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value(),
+                               a.vibration.has_value()});
 }
 
 }  // namespace drillflex::app

@@ -22,6 +22,7 @@ int RunWell(const CommandOptions& options);
 int RunStaticCommand(const CommandOptions& options);
 int RunModesCommand(const CommandOptions& options);
 int RunBucklingCommand(const CommandOptions& options);
+int RunVibrationCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);
 
 }  // namespace drillflex::app

@@ -52,6 +52,8 @@ int main(int argc, char** argv) {
        drillflex::app::RunStaticCommand, true},
       {"modes", "Natural frequencies and mode shapes about the static equilibrium", drillflex::app::RunModesCommand,
        true},
+      {"vibration", "Forced response against RPM: the critical-speed map, critical RPMs and safe windows",
+       drillflex::app::RunVibrationCommand, true},
       {"buckling", "Critical load multiplier of the case's loads (eigenproblem and frequency against load)",
        drillflex::app::RunBucklingCommand, true},
       {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true},

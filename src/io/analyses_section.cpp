@@ -60,11 +60,12 @@ analyses::Excitation ReadExcitation(const YamlView& item) {
     excitation.torsional = item.QuantityOr("torsional", Quantity::Moment, 0.0);
     if (excitation.harmonic < 1) item.Child("harmonic").Fail("expected a harmonic of at least 1");
   } else if (type == "motor") {
-    item.AllowOnlyKeys({"type", "lobes", "lateral", "at"});
+    item.AllowOnlyKeys({"type", "lobes", "lateral", "at", "speed"});
     excitation.type = analyses::ExcitationType::Motor;
     excitation.lobes = item.IntegerOr("lobes", 0);
     excitation.lateral = item.Positive("lateral", Quantity::Force);
     excitation.at = item.QuantityOr("at", Quantity::Length, -1.0);
+    excitation.motor_speed = item.OptionalPositive("speed", Quantity::RotarySpeed);
     if (item.Has("lobes") && excitation.lobes < 1) item.Child("lobes").Fail("expected at least 1 lobe");
   } else {
     item.Child("type").Fail(fmt::format("unknown excitation type '{}'; expected imbalance, bit or motor", type));
@@ -74,7 +75,7 @@ analyses::Excitation ReadExcitation(const YamlView& item) {
 
 analyses::VibrationSettings ReadVibration(const YamlView& node) {
   node.ExpectMap("the vibration settings {rpm, excitations}");
-  node.AllowOnlyKeys({"rpm", "excitations"});
+  node.AllowOnlyKeys({"rpm", "excitations", "clearance_fraction", "stress_limit"});
   analyses::VibrationSettings settings;
   if (const auto rpm = node.OptionalChild("rpm")) {
     rpm->ExpectMap("an RPM sweep {from, to, step}", false);
@@ -86,6 +87,9 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
     if (!(settings.rpm_to >= settings.rpm_from)) rpm->Fail("'to' must not lie below 'from'");
     if ((settings.rpm_to - settings.rpm_from) / settings.rpm_step > 1.0e5) rpm->Fail("more than 100000 RPM values: use a larger step");
   }
+  settings.clearance_fraction =
+      node.OptionalPositive("clearance_fraction", Quantity::Dimensionless).value_or(settings.clearance_fraction);
+  settings.stress_limit = node.OptionalPositive("stress_limit", Quantity::Stress).value_or(settings.stress_limit);
   if (const auto list = node.OptionalChild("excitations")) {
     list->ExpectSequence("excitations");
     for (std::size_t i = 0; i < list->size(); ++i) settings.excitations.push_back(ReadExcitation(list->Item(i)));

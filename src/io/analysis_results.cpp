@@ -173,19 +173,21 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
 
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files) {
   const OutputUnits out{c.output_units};
-  CsvTable frequencies({"mode", "frequency_hz", "axial_fraction", "torsional_fraction", "lateral_fraction"});
+  CsvTable frequencies(
+      {"mode", "frequency_hz", "damping_ratio", "axial_fraction", "torsional_fraction", "lateral_fraction"});
   CsvTable shapes({"mode", "s", "ux", "uy", "uz", "rx", "ry", "rz"});
   json modes = json::array();
   for (std::size_t m = 0; m < result.modes.size(); ++m) {
     const auto& mode = result.modes[m];
-    frequencies.AddRow({static_cast<double>(m + 1), mode.frequency_hz, mode.axial_fraction, mode.torsional_fraction,
-                        mode.lateral_fraction});
+    frequencies.AddRow({static_cast<double>(m + 1), mode.frequency_hz, mode.damping_ratio, mode.axial_fraction,
+                        mode.torsional_fraction, mode.lateral_fraction});
     for (std::size_t i = 0; i < result.s.size() && i < mode.displacement.size(); ++i) {
       shapes.AddRow({static_cast<double>(m + 1), out(result.s[i], Quantity::Length), mode.displacement[i].x(),
                      mode.displacement[i].y(), mode.displacement[i].z(), mode.rotation[i].x(), mode.rotation[i].y(),
                      mode.rotation[i].z()});
     }
     modes.push_back({{"frequency_hz", mode.frequency_hz},
+                     {"damping_ratio", mode.damping_ratio},
                      {"kind", analyses::ModeKindName(mode.kind)},
                      {"rigid_body", mode.rigid_body},
                      {"axial_fraction", mode.axial_fraction},
@@ -195,6 +197,15 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
   files.Add("modes.csv", frequencies.ToString());
   files.Add("mode_shapes.csv", shapes.ToString());
   files.json()["modes"] = modes;
+  // The first lateral mode at 1× rotation beside the field rule of thumb (validation.md V6).
+  const RuleOfThumbRpm rule = CalcRuleOfThumbCriticalRpm(c);
+  json critical = {{"rule_of_thumb", out(rule.rpm, Quantity::RotarySpeed)},
+                   {"rule_of_thumb_span", out(rule.span, Quantity::Length)}};
+  const auto lateral = std::find_if(result.modes.begin(), result.modes.end(), [](const auto& mode) {
+    return !mode.rigid_body && mode.kind == analyses::ModeKind::Lateral && mode.frequency_hz > 0.0;
+  });
+  if (lateral != result.modes.end()) critical["first_lateral"] = 60.0 * lateral->frequency_hz;
+  files.json()["critical_rpm"] = critical;
 }
 
 void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, ResultFiles& files) {

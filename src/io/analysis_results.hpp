@@ -6,6 +6,7 @@
 #include "analyses/buckling_analysis.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
+#include "analyses/vibration_analysis.hpp"
 #include "io/case.hpp"
 #include "io/result_files.hpp"
 #include "model/builder.hpp"
@@ -22,6 +23,21 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files);
 // "buckling" and buckling.csv (frequency against load).
 void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, ResultFiles& files);
+
+// "vibration" (case-format.md: rpm, max_lateral_displacement, max_bending_stress, max_contact_force,
+// critical_rpm, safe_windows, ...) and vibration.csv (one row per RPM).
+void AddVibrationResults(const Case& c, const analyses::VibrationResult& result, ResultFiles& files);
+
+// The field rule of thumb for the critical rotary speed of a tube span (validation.md V6):
+// 33,055 sqrt(OD² + ID²)/L² rpm (in, ft), for the longest component's OD and ID over the span
+// between the outermost lateral supports (the whole string without two of them).
+struct RuleOfThumbRpm {
+  double rpm = 0.0;             // rad/s
+  double span = 0.0;            // L, m
+  double outer_diameter = 0.0;  // m
+  double inner_diameter = 0.0;  // m
+};
+RuleOfThumbRpm CalcRuleOfThumbCriticalRpm(const Case& c);
 
 // MD of a station: bit MD − s with a well, s without one (measured along the string from the bit).
 double StationMd(const Case& c, double s);

@@ -70,6 +70,7 @@ struct HarmonicSolver::Workspace {
   HarmonicOptions options;
   ComplexSparse matrix;  // the union pattern; values rewritten at every frequency
   std::vector<double> stiffness, mass, damping, gyroscopic;  // on that pattern
+  std::vector<std::vector<double>> terms;                    // the frequency terms, on it too
   bool natural_order = false;
   PivotCheckedLu<Eigen::NaturalOrdering<int>> lu_natural;
   PivotCheckedLu<Eigen::COLAMDOrdering<int>> lu_colamd;
@@ -92,6 +93,9 @@ void CheckSystemMatrix(const SparseMat& matrix, Eigen::Index n, const char* name
 }  // namespace
 
 HarmonicSolver::HarmonicSolver(LinearSystem system, HarmonicOptions options)
+    : HarmonicSolver(std::move(system), {}, options) {}
+
+HarmonicSolver::HarmonicSolver(LinearSystem system, std::vector<SparseMat> terms, HarmonicOptions options)
     : workspace_(std::make_unique<Workspace>()) {
   Workspace& w = *workspace_;
   w.options = options;
@@ -100,6 +104,7 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, HarmonicOptions options)
   CheckSystemMatrix(system.mass, n, "M", false);
   CheckSystemMatrix(system.damping, n, "D", true);
   CheckSystemMatrix(system.gyroscopic, n, "G", true);
+  for (const SparseMat& term : terms) CheckSystemMatrix(term, n, "a frequency term", false);
   for (SparseMat* matrix : {&system.stiffness, &system.mass, &system.damping,
                             &system.gyroscopic}) {
     matrix->makeCompressed();
@@ -109,6 +114,7 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, HarmonicOptions options)
   SparseMat pattern = system.stiffness.cwiseAbs() + system.mass.cwiseAbs();
   if (system.damping.size() > 0) pattern += system.damping.cwiseAbs();
   if (system.gyroscopic.size() > 0) pattern += system.gyroscopic.cwiseAbs();
+  for (const SparseMat& term : terms) pattern += term.cwiseAbs();
   SparseMat identity(n, n);
   identity.setIdentity();
   pattern += identity;
@@ -117,6 +123,7 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, HarmonicOptions options)
   w.mass = ValuesOnPattern(system.mass, pattern);
   w.damping = ValuesOnPattern(system.damping, pattern);
   w.gyroscopic = ValuesOnPattern(system.gyroscopic, pattern);
+  for (const SparseMat& term : terms) w.terms.push_back(ValuesOnPattern(term, pattern));
   w.matrix = pattern.cast<Complex>();
   w.matrix.makeCompressed();
   // Band fill n·b against the entries (linear_solver.hpp): narrow bands keep their own order.
@@ -138,7 +145,17 @@ HarmonicSolver& HarmonicSolver::operator=(HarmonicSolver&&) noexcept = default;
 Eigen::Index HarmonicSolver::size() const { return workspace_->matrix.rows(); }
 
 ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, double rotor_speed) {
+  return Solve(frequency, loads, rotor_speed,
+               std::vector<FrequencyTermCoefficients>(workspace_->terms.size()));
+}
+
+ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, double rotor_speed,
+                                 const std::vector<FrequencyTermCoefficients>& terms) {
   Workspace& w = *workspace_;
+  if (terms.size() != w.terms.size()) {
+    throw LogicError(fmt::format("HarmonicSolver::Solve: {} term coefficients for {} terms", terms.size(),
+                                 w.terms.size()));
+  }
   if (!std::isfinite(frequency) || frequency < 0.0 || !std::isfinite(rotor_speed)) {
     throw LogicError(fmt::format("HarmonicSolver::Solve: needs a finite ω ≥ 0 and a finite Ω "
                                  "(ω = {} rad/s, Ω = {} rad/s)", frequency, rotor_speed));
@@ -152,12 +169,19 @@ ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, doub
   // A = K − ω² M + iω (D + Ω G), entry by entry on the shared pattern.
   const double omega2 = frequency * frequency;
   Complex* values = w.matrix.valuePtr();
-  double largest = 0.0;
+  double largest2 = 0.0;  // max |a_ij|² (std::norm: no hypot per entry and frequency)
   for (std::size_t k = 0; k < w.stiffness.size(); ++k) {
     values[k] = Complex(w.stiffness[k] - omega2 * w.mass[k],
                         frequency * (w.damping[k] + rotor_speed * w.gyroscopic[k]));
-    largest = std::max(largest, std::abs(values[k]));
   }
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    const Complex factor(-omega2 * terms[t].mass, frequency * terms[t].damping);
+    if (factor == Complex(0.0, 0.0)) continue;
+    const std::vector<double>& term = w.terms[t];
+    for (std::size_t k = 0; k < term.size(); ++k) values[k] += factor * term[k];
+  }
+  for (std::size_t k = 0; k < w.stiffness.size(); ++k) largest2 = std::max(largest2, std::norm(values[k]));
+  const double largest = std::sqrt(largest2);
   auto singular = [&](const std::string& why) {
     return SolverError(fmt::format(
         "harmonic response: K − ω²M + iω(D + ΩG) is singular at ω = {} rad/s ({} Hz), Ω = {} "

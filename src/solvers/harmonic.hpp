@@ -42,6 +42,14 @@ struct LinearSystem {
   SparseMat stiffness;   // K, N/m
 };
 
+// A matrix T whose coefficients change with the frequency (a viscous fluid's added mass and
+// damping, a hysteretic loss factor): it adds (−ω² a + iω b) T to the dynamic matrix with the
+// coefficients (a, b) given at each Solve.
+struct FrequencyTermCoefficients {
+  double mass = 0.0;     // a
+  double damping = 0.0;  // b
+};
+
 struct HarmonicOptions {
   // Relative pivot size min |u_jj| / max |a_ij| below which the matrix counts as singular.
   double singular_pivot_tolerance = 1e-12;
@@ -52,6 +60,8 @@ struct HarmonicOptions {
 class HarmonicSolver {
  public:
   explicit HarmonicSolver(LinearSystem system, HarmonicOptions options = {});
+  // With frequency-dependent terms T_t (n×n; their patterns join the factorized one).
+  HarmonicSolver(LinearSystem system, std::vector<SparseMat> terms, HarmonicOptions options = {});
   ~HarmonicSolver();
   HarmonicSolver(HarmonicSolver&&) noexcept;
   HarmonicSolver& operator=(HarmonicSolver&&) noexcept;
@@ -60,6 +70,11 @@ class HarmonicSolver {
   // (rad/s). Throws SolverError if the matrix is singular at ω (see the header comment),
   // LogicError if F has the wrong number of rows or ω, Ω are not finite.
   ComplexMat Solve(double frequency, const ComplexMat& loads, double rotor_speed = 0.0);
+
+  // The same with the terms of the constructor: (K − ω² M + iω (D + Ω G) + Σ_t (−ω² a_t + iω b_t)
+  // T_t) X = F, one coefficient pair per term (LogicError on a different count).
+  ComplexMat Solve(double frequency, const ComplexMat& loads, double rotor_speed,
+                   const std::vector<FrequencyTermCoefficients>& terms);
 
   Eigen::Index size() const;
 

@@ -152,11 +152,75 @@ TEST(Cli, UnknownSubcommandExitsNonZero) {
   EXPECT_NE(RunDrillflex("fly " + kExample).status, 0);
 }
 
+// A small case without a well: the imbalance collar of the validation (pinned-pinned, 30 ft).
+const std::string kImbalanceCase = std::string(DRILLFLEX_SOURCE_DIR) + "/validation/imbalance-response/collar.yaml";
+
+// Writes `text` as a case file in a fresh directory and returns its path.
+fs::path WriteCase(const std::string& name, const std::string& text) {
+  const fs::path directory = FreshDirectory(name + "-case");
+  fs::create_directories(directory);
+  const fs::path path = directory / "case.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kCollarYaml = R"(name: cli-collar
+units: field
+string:
+  - {type: collar, od: 8, id: 2.8125, length: 30}
+supports:
+  - {at: 0, fix: [x, y, z, rx]}
+  - {at: 30, fix: [y, z]}
+)";
+
 TEST(Cli, RunRefusesAnalysesThisVersionCannotRunBeforeWritingAnything) {
   const fs::path out = FreshDirectory("run-refused");
-  const RunResult result = RunDrillflex("run " + kExample + " -o " + out.string());
+  const fs::path path = WriteCase("run-refused", std::string(kCollarYaml) +
+                                                     "analyses:\n  static: {}\n  transient: {duration: 1 s}\n");
+  const RunResult result = RunDrillflex("run " + path.string() + " -o " + out.string());
   EXPECT_EQ(result.status, 2) << result.output;
-  EXPECT_THAT(result.output, HasSubstr("vibration"));
+  EXPECT_THAT(result.output, HasSubstr("transient"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
+  const fs::path out = FreshDirectory("vibration");
+  const RunResult result = RunDrillflex("vibration " + kImbalanceCase + " -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("critical RPMs: 311.7 rpm"));
+  EXPECT_THAT(result.output, HasSubstr("safe windows"));
+  std::ifstream csv(out / "vibration.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "rpm,max_lateral_displacement,s_max_displacement,max_bending_stress,max_contact_force");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 1201);
+  std::ifstream json_file(out / "results.json");
+  const auto json = nlohmann::json::parse(json_file);
+  ASSERT_TRUE(json.contains("vibration"));
+  const auto& vibration = json["vibration"];
+  for (const char* key : {"rpm", "max_lateral_displacement", "max_bending_stress", "max_contact_force", "critical_rpm",
+                          "safe_windows"}) {
+    EXPECT_TRUE(vibration.contains(key)) << key;
+  }
+  EXPECT_EQ(vibration["rpm"].size(), 1201u);
+  // No well: no clearance; the windows follow the bending-stress limit (10 ksi), which the
+  // 1 mm whirl at resonance stays far below: one window over the whole sweep.
+  EXPECT_FALSE(vibration.contains("max_clearance_ratio"));
+  ASSERT_EQ(vibration["safe_windows"].size(), 1u);
+  EXPECT_NEAR(vibration["safe_windows"][0]["from"].get<double>(), 280.0, 1e-9);
+  EXPECT_FALSE(json.contains("modes"));
+}
+
+TEST(Cli, VibrationWithAnUnknownMotorSpeedExitsWithTwoAndWritesNothing) {
+  const fs::path out = FreshDirectory("vibration-motor");
+  const fs::path path = WriteCase(
+      "vibration-motor", std::string(kCollarYaml) +
+                             "analyses:\n  vibration:\n    excitations:\n      - {type: motor, lobes: 5, lateral: 100, at: 10}\n");
+  const RunResult result = RunDrillflex("vibration " + path.string() + " -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("motor speed"));
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -254,5 +254,26 @@ TEST(Harmonic, RejectsInconsistentInput) {
   EXPECT_THROW(solver.Solve(std::nan(""), Ones(2)), LogicError);
 }
 
+TEST(Harmonic, FrequencyTermsEqualASystemThatHoldsThem) {
+  // (K − ω²(M + a T₁) + iω(D + b T₂)) X = F with T₁, T₂ passed as frequency terms equals the solve
+  // of a system built with M + a T₁ and D + b T₂ (4-DOF chain; T₁ off the chain's pattern).
+  const SparseMat k = ChainStiffness(4, 1000.0, true);
+  const SparseMat m = ScaledIdentity(4, 2.0);
+  const SparseMat d = ScaledIdentity(4, 0.3);
+  SparseMat first(4, 4), second(4, 4);
+  first.coeffRef(1, 1) = 0.7;
+  first.coeffRef(0, 3) = first.coeffRef(3, 0) = 0.1;
+  second.coeffRef(3, 3) = 1.5;
+  HarmonicSolver split({m, d, {}, k}, {first, second});
+  for (const double omega : {0.0, 7.0, 19.0, 40.0}) {
+    const double a = 1.0 + 0.01 * omega, b = 2.0 / (1.0 + omega);
+    HarmonicSolver whole({SparseMat(m + a * first), SparseMat(d + b * second), {}, k});
+    const ComplexMat x = split.Solve(omega, Ones(4, 2), 0.0, {{a, 0.0}, {0.0, b}});
+    const ComplexMat reference = whole.Solve(omega, Ones(4, 2));
+    EXPECT_LT((x - reference).norm(), 1e-12 * reference.norm()) << omega;
+  }
+  EXPECT_THROW(split.Solve(1.0, Ones(4), 0.0, {{1.0, 0.0}}), LogicError);
+}
+
 }  // namespace
 }  // namespace drillflex::solvers

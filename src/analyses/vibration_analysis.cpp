@@ -1,0 +1,402 @@
+#include "analyses/vibration_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "analyses/critical_speeds.hpp"
+#include "analyses/modes_analysis.hpp"
+#include "analyses/string_stations.hpp"
+#include "core/error.hpp"
+#include "core/so3.hpp"
+#include "fe/annulus_fluid.hpp"
+#include "model/wall_contact.hpp"
+#include "solvers/harmonic.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+using Complex = std::complex<double>;
+using ComplexVec = Eigen::VectorXcd;
+
+// The largest |u(t)| of u(t) = Re(U e^{iωt}) for a complex vector U = a + i b: the major
+// semi-axis of the orbit, max over t of |a cos ωt − b sin ωt| =
+// sqrt((|a|² + |b|²)/2 + sqrt(((|a|² − |b|²)/2)² + (a·b)²)).
+double OrbitSemiMajorAxis(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const double half_sum = 0.5 * (a.squaredNorm() + b.squaredNorm());
+  const double half_difference = 0.5 * (a.squaredNorm() - b.squaredNorm());
+  const double ab = a.dot(b);
+  return std::sqrt(half_sum + std::sqrt(half_difference * half_difference + ab * ab));
+}
+
+// A station's lateral translation (string frame y, z) as rows acting on its body's velocity block:
+// rows y, z of [Fᵀ, Fᵀ A (−ũ_k), Fᵀ A Φ_k], F the string frame (analyses/string_stations.hpp MapToNode).
+struct StationMap {
+  int v_offset = 0;
+  MatX lateral;             // 2 × (6 + n_f)
+  double clearance = -1.0;  // radial clearance at q with an open wall contact, m; < 0: none
+  double s = 0.0;
+};
+
+// An FE element's curvature rows (body frame bending y, z) on η, and E·OD/2.
+struct ElementMap {
+  int eta_offset = 0;
+  MatX curvature;  // 2 × n_f: (Ψ_{k+1} − Ψ_k)_{y,z} / ℓ
+  double stress_per_curvature = 0.0;
+};
+
+// A contact closed at q: n ᵀ L_k (global radial direction on the body block) and k_n.
+struct ContactMap {
+  int v_offset = 0;
+  VecX radial;  // 6 + n_f
+  double stiffness = 0.0;
+};
+
+// The node's global translation Jacobian L_k = [I, −A ũ_k, A Φ_k] (model/node_force.hpp).
+MatX NodeTranslationJacobian(const model::Body& body, const model::BodyPose& pose, int node) {
+  MatX jacobian(3, body.velocity_count());
+  jacobian.leftCols<3>() = Mat3::Identity();
+  jacobian.middleCols<3>(3) = -pose.A * so3::Skew(pose.NodeOffset(body, node));
+  jacobian.rightCols(body.flexible_count) = pose.A * body.reduced->node_translation_modes[node];
+  return jacobian;
+}
+
+// Open-contact clearances and closed contacts at q, by (body, node).
+struct WallState {
+  std::map<std::pair<int, int>, double> clearance;  // open contacts: R_h − R_c − ρ, m
+  std::vector<ContactMap> closed;
+};
+
+WallState ReadWall(const model::BuiltModel& built, const std::vector<model::BodyPose>& poses) {
+  WallState wall;
+  const model::SystemModel& model = built.system;
+  const VecX v = VecX::Zero(model.num_velocities());
+  for (const int index : built.contact_elements) {
+    const auto* contact = dynamic_cast<const model::WallContactElement*>(model.elements()[index].get());
+    if (!contact) continue;
+    const model::Body* body = contact->bodies().front();
+    const int b = model.IndexOf(body);
+    const model::WallContactResult result = contact->Result(model.StateOf(*contact, poses, v, 0.0, 1.0));
+    if (result.in_contact) {
+      ContactMap map;
+      map.v_offset = body->v_offset;
+      map.radial = (result.normal.transpose() * NodeTranslationJacobian(*body, poses[b], contact->node())).transpose();
+      map.stiffness = contact->parameters().normal_stiffness;
+      wall.closed.push_back(std::move(map));
+    } else {
+      wall.clearance[{b, contact->node()}] = -result.penetration;
+    }
+  }
+  return wall;
+}
+
+std::vector<StationMap> MapStations(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
+                                    const WallState& wall) {
+  std::vector<StationMap> maps;
+  for (const Station& station : StringStations(model)) {
+    const model::Body& body = model.bodies()[station.body];
+    const Mat3 frame = body.reference_orientation.toRotationMatrix();
+    StationMap map;
+    map.v_offset = body.v_offset;
+    map.s = station.s;
+    map.lateral = (frame.transpose() * NodeTranslationJacobian(body, poses[station.body], station.node)).bottomRows<2>();
+    const auto found = wall.clearance.find({station.body, station.node});
+    if (found != wall.clearance.end()) map.clearance = found->second;
+    maps.push_back(std::move(map));
+  }
+  return maps;
+}
+
+std::vector<ElementMap> MapElements(const model::SystemModel& model) {
+  std::vector<ElementMap> maps;
+  for (const model::Body& body : model.bodies()) {
+    const auto& spec = body.reduced->spec;
+    for (int k = 0; k + 1 < body.node_count(); ++k) {
+      const double length = body.reduced->node_positions[k + 1].x() - body.reduced->node_positions[k].x();
+      ElementMap map;
+      map.eta_offset = body.v_offset + 6;
+      map.curvature =
+          (body.reduced->node_rotation_modes[k + 1] - body.reduced->node_rotation_modes[k]).bottomRows<2>() / length;
+      // σ = E c κ with c = OD/2 (the bending stress of static_analysis.hpp: M c / I, M = E I κ).
+      map.stress_per_curvature = spec.material.youngs_modulus * 0.5 * spec.section.outer_diameter;
+      maps.push_back(std::move(map));
+    }
+  }
+  return maps;
+}
+
+// The generalized force of a force f and moment m (string frame at the node, complex amplitudes)
+// at node k: Q = [F; u_k × AᵀF + AᵀM; Φ_kᵀAᵀF + Ψ_kᵀAᵀM] with F, M global (model/node_force.hpp).
+ComplexVec NodeLoad(const model::SystemModel& model, const std::vector<model::BodyPose>& poses, double s,
+                    const Eigen::Vector3cd& force_string, const Eigen::Vector3cd& moment_string) {
+  const auto [b, node] = model.NodeAt(s);
+  const model::Body& body = model.bodies()[b];
+  const model::BodyPose& pose = poses[b];
+  const Mat3 frame = body.reference_orientation.toRotationMatrix();
+  const Eigen::Vector3cd force_body = (pose.A.transpose() * frame).cast<Complex>() * force_string;
+  const Eigen::Vector3cd moment_body = (pose.A.transpose() * frame).cast<Complex>() * moment_string;
+  const Eigen::Vector3cd offset = pose.NodeOffset(body, node).cast<Complex>();
+  ComplexVec load = ComplexVec::Zero(model.num_velocities());
+  load.segment<3>(body.v_offset) = frame.cast<Complex>() * force_string;
+  load.segment<3>(body.v_offset + 3) = offset.cross(force_body) + moment_body;
+  load.segment(body.v_offset + 6, body.flexible_count) =
+      body.reduced->node_translation_modes[node].transpose().cast<Complex>() * force_body +
+      body.reduced->node_rotation_modes[node].transpose().cast<Complex>() * moment_body;
+  return load;
+}
+
+// Lateral force rotating forward (y toward z): Re((e_y − i e_z) e^{iωt}) = cos ωt e_y + sin ωt e_z.
+Eigen::Vector3cd RotatingLateral(double amplitude) { return Eigen::Vector3cd(0.0, amplitude, Complex(0.0, -amplitude)); }
+
+// The middle of the string's first motor, m from the bit; NaN without one.
+double MotorMiddle(const model::StringConfig& string) {
+  double s = 0.0;
+  for (const model::Component& component : string.components) {
+    const double span = component.length * component.count;
+    if (component.type == model::ComponentType::Motor) return s + 0.5 * span;
+    s += span;
+  }
+  return std::nan("");
+}
+
+const model::Component* FirstMotor(const model::StringConfig& string) {
+  for (const model::Component& component : string.components) {
+    if (component.type == model::ComponentType::Motor) return &component;
+  }
+  return nullptr;
+}
+
+// The load amplitude of an excitation at rotary speed Ω (the imbalance grows with Ω²).
+ComplexVec ExcitationLoad(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
+                          const model::ModelInput& input, const Excitation& excitation, double rotary_speed) {
+  const Eigen::Vector3cd none = Eigen::Vector3cd::Zero();
+  switch (excitation.type) {
+    case ExcitationType::Imbalance:
+      return NodeLoad(model, poses, excitation.at, RotatingLateral(excitation.imbalance * rotary_speed * rotary_speed),
+                      none);
+    case ExcitationType::Bit: {
+      Eigen::Vector3cd force = RotatingLateral(excitation.lateral);
+      force.x() = excitation.axial;
+      return NodeLoad(model, poses, 0.0, force, Eigen::Vector3cd(excitation.torsional, 0.0, 0.0));
+    }
+    case ExcitationType::Motor: {
+      const double at = excitation.at >= 0.0 ? excitation.at : MotorMiddle(input.string);
+      return NodeLoad(model, poses, at, RotatingLateral(excitation.lateral), none);
+    }
+  }
+  throw LogicError("ExcitationLoad: unknown excitation type");
+}
+
+}  // namespace
+
+double ExcitationFrequency(const Excitation& excitation, double rotary_speed, double motor_speed) {
+  switch (excitation.type) {
+    case ExcitationType::Imbalance: return rotary_speed;
+    case ExcitationType::Bit: return excitation.harmonic * rotary_speed;
+    case ExcitationType::Motor: return excitation.lobes * motor_speed;
+  }
+  throw LogicError("ExcitationFrequency: unknown excitation type");
+}
+
+double MotorSpeed(const Excitation& excitation, const model::ModelInput& input, int index) {
+  if (excitation.type != ExcitationType::Motor) return 0.0;
+  const std::string key = fmt::format("analyses.vibration.excitations[{}]", index);
+  const model::Component* motor = FirstMotor(input.string);
+  if (excitation.lobes < 1 && !(motor && motor->lobes)) {
+    throw InputError({"", excitation.source_line, 0}, key + ".lobes",
+                     "a motor excitation needs 'lobes' (here or on the string's motor)");
+  }
+  if (excitation.at < 0.0 && !motor) {
+    throw InputError({"", excitation.source_line, 0}, key + ".at", "no motor in the string: give 'at'");
+  }
+  if (excitation.motor_speed) return *excitation.motor_speed;
+  if (motor && motor->speed_per_flow && input.operation.flow_rate) {
+    return *motor->speed_per_flow * *input.operation.flow_rate;  // rad/m³ × m³/s
+  }
+  throw InputError({"", excitation.source_line, 0}, key + ".speed",
+                   "a motor excitation needs the motor speed: 'speed', or the motor's rev_per_volume and "
+                   "operation.flow_rate");
+}
+
+namespace {
+
+// Excitations with the motor's lobes and rotor speed filled in.
+struct ResolvedExcitation {
+  Excitation excitation;
+  double motor_speed = 0.0;  // rad/s
+};
+
+std::vector<ResolvedExcitation> Resolve(const VibrationSettings& settings, const model::ModelInput& input) {
+  std::vector<ResolvedExcitation> resolved;
+  for (std::size_t i = 0; i < settings.excitations.size(); ++i) {
+    ResolvedExcitation item{settings.excitations[i], 0.0};
+    item.motor_speed = MotorSpeed(item.excitation, input, static_cast<int>(i));
+    if (item.excitation.type == ExcitationType::Motor && item.excitation.lobes < 1) {
+      item.excitation.lobes = *FirstMotor(input.string)->lobes;
+    }
+    resolved.push_back(item);
+  }
+  return resolved;
+}
+
+// The structural damping ratio ζ_s of the case (model.structural_damping, the same on every body).
+double StructuralDampingRatio(const model::SystemModel& model) {
+  return model.bodies().empty() ? 0.0 : model.bodies().front().reduced->structural_damping;
+}
+
+// (K − ω² M(ω) + iω D(ω)) X = F at any ω: K, M (steel and bore fluid), D = ∂R/∂v factorized on one
+// pattern; per ω the annulus terms (model/lateral_fluid.hpp) and the structural damping as a loss
+// factor 2 ζ_s on K (hysteretic: iω (2ζ_s/ω) K = 2iζ_s K, so every mode gets ζ_s at its resonance;
+// the modal damping of the bodies' fixed-interface modes alone reaches the string's low modes only
+// weakly, e.g. ζ ≈ 2e-4 for ζ_s = 0.01 in V5's collar).
+class ResponseSolver {
+ public:
+  ResponseSolver(const model::SystemModel& model, const model::LateralFluid& fluid, const VecX& q)
+      : loss_factor_(2.0 * StructuralDampingRatio(model)) {
+    const LinearizedSystem linear = Linearize(model, q, 1.0);
+    solvers::LinearSystem system{linear.mass, linear.damping, SparseMat(), linear.stiffness};
+    std::vector<SparseMat> terms;
+    if (!fluid.empty()) {
+      system.mass += model::CalcLateralFluidMatrices(model, fluid, q, 0.0, model::FluidPart::Internal).mass;
+      groups_ = model::CalcAnnulusGroups(model, fluid, q);
+      fluid_ = &fluid;
+      for (const model::AnnulusGroup& group : groups_) terms.push_back(group.unit_mass);
+    }
+    terms.push_back(linear.stiffness);  // the hysteretic term, last
+    solver_ = std::make_unique<solvers::HarmonicSolver>(std::move(system), std::move(terms));
+  }
+
+  ComplexVec Solve(double frequency, const ComplexVec& load) {
+    std::vector<solvers::FrequencyTermCoefficients> coefficients;
+    for (const model::AnnulusGroup& group : groups_) {
+      fe::AnnulusFluidCoefficients c;
+      if (fluid_->added_mass_override >= 0.0) {
+        c.added_mass = fluid_->added_mass_override;
+      } else {
+        const bool viscous = fluid_->frequency_dependent() && frequency > 0.0;
+        c = fe::CalcAnnulusFluidCoefficients(group.rod_radius, group.hole_radius, viscous ? frequency : 0.0,
+                                             viscous ? fluid_->kinematic_viscosity : 0.0);
+      }
+      // m_a = C_m U_g, c_a = C_v ω U_g (model/lateral_fluid.hpp).
+      coefficients.push_back({c.added_mass, c.damping * frequency});
+    }
+    coefficients.push_back({0.0, frequency > 0.0 ? loss_factor_ / frequency : 0.0});
+    return solver_->Solve(frequency, load, 0.0, coefficients);
+  }
+
+ private:
+  double loss_factor_ = 0.0;
+  const model::LateralFluid* fluid_ = nullptr;
+  std::vector<model::AnnulusGroup> groups_;
+  std::unique_ptr<solvers::HarmonicSolver> solver_;
+};
+
+// Sums the amplitudes of one response X into the per-station, per-element, per-contact totals.
+struct Amplitudes {
+  std::vector<double> displacement, stress, contact;
+
+  void Add(const ComplexVec& x, const std::vector<StationMap>& stations, const std::vector<ElementMap>& elements,
+           const std::vector<ContactMap>& contacts) {
+    const VecX re = x.real(), im = x.imag();
+    for (std::size_t i = 0; i < stations.size(); ++i) {
+      const StationMap& map = stations[i];
+      const Eigen::Index n = map.lateral.cols();
+      displacement[i] += OrbitSemiMajorAxis(map.lateral * re.segment(map.v_offset, n),
+                                            map.lateral * im.segment(map.v_offset, n));
+    }
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      const ElementMap& map = elements[e];
+      const Eigen::Index n = map.curvature.cols();
+      stress[e] += map.stress_per_curvature * OrbitSemiMajorAxis(map.curvature * re.segment(map.eta_offset, n),
+                                                                 map.curvature * im.segment(map.eta_offset, n));
+    }
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+      const ContactMap& map = contacts[c];
+      const Eigen::Index n = map.radial.size();
+      const double a = map.radial.dot(re.segment(map.v_offset, n)), b = map.radial.dot(im.segment(map.v_offset, n));
+      contact[c] += map.stiffness * std::sqrt(a * a + b * b);
+    }
+  }
+};
+
+void FindCriticalSpeeds(const VibrationSettings& settings, VibrationResult& result) {
+  const bool ratio = !result.max_clearance_ratio.empty();
+  const std::vector<double>& curve = ratio ? result.max_clearance_ratio : result.max_lateral_displacement;
+  for (const std::size_t i : FindProminentPeaks(curve, kCriticalPeakProminence)) result.critical_rpm.push_back(result.rpm[i]);
+  std::vector<bool> ok(result.rpm.size());
+  for (std::size_t i = 0; i < ok.size(); ++i) {
+    ok[i] = result.max_bending_stress[i] <= settings.stress_limit &&
+            (!ratio || result.max_clearance_ratio[i] <= settings.clearance_fraction);
+  }
+  for (const IndexRange& run : FindRuns(ok)) result.safe_windows.push_back({result.rpm[run.first], result.rpm[run.last]});
+}
+
+}  // namespace
+
+VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelInput& input,
+                             const model::LateralFluid& fluid, const VecX& q, const VibrationSettings& settings) {
+  const model::SystemModel& model = built.system;
+  const std::vector<ResolvedExcitation> excitations = Resolve(settings, input);
+  if (excitations.empty()) throw InputError({}, "analyses.vibration.excitations", "the vibration analysis needs excitations");
+  const auto poses = model.Poses(q);
+  const WallState wall = ReadWall(built, poses);
+  const std::vector<StationMap> stations = MapStations(model, poses, wall);
+  const std::vector<ElementMap> elements = MapElements(model);
+  ResponseSolver solver(model, fluid, q);
+  VibrationResult result;
+  result.clearance_fraction = settings.clearance_fraction;
+  result.stress_limit = settings.stress_limit;
+  result.closed_contacts = static_cast<int>(wall.closed.size());
+  const bool with_clearance = std::any_of(stations.begin(), stations.end(), [](const StationMap& m) { return m.clearance > 0.0; });
+  std::map<double, ComplexVec> fixed;  // responses at frequencies that do not follow the RPM
+  const int count = static_cast<int>(std::floor((settings.rpm_to - settings.rpm_from) / settings.rpm_step + 1e-9)) + 1;
+  for (int j = 0; j < count; ++j) {
+    const double rotary_speed = settings.rpm_from + j * settings.rpm_step;
+    // Excitations at one frequency superposed (one factorization), amplitudes of different ones summed.
+    std::vector<std::pair<double, ComplexVec>> groups;
+    for (const ResolvedExcitation& item : excitations) {
+      const double frequency = ExcitationFrequency(item.excitation, rotary_speed, item.motor_speed);
+      if (j == 0) result.excitation_frequencies.push_back(frequency);
+      const ComplexVec load = ExcitationLoad(model, poses, input, item.excitation, rotary_speed);
+      auto same = std::find_if(groups.begin(), groups.end(),
+                               [&](const auto& g) { return std::abs(g.first - frequency) <= 1e-12 * frequency; });
+      if (same == groups.end()) groups.emplace_back(frequency, load);
+      else same->second += load;
+    }
+    Amplitudes sums{std::vector<double>(stations.size(), 0.0), std::vector<double>(elements.size(), 0.0),
+                    std::vector<double>(wall.closed.size(), 0.0)};
+    for (const auto& [frequency, load] : groups) {
+      const bool follows = std::any_of(excitations.begin(), excitations.end(), [&](const ResolvedExcitation& item) {
+        return item.excitation.type != ExcitationType::Motor &&
+               std::abs(ExcitationFrequency(item.excitation, rotary_speed, 0.0) - frequency) <= 1e-12 * frequency;
+      });
+      if (follows) {
+        sums.Add(solver.Solve(frequency, load), stations, elements, wall.closed);
+        continue;
+      }
+      auto cached = fixed.find(frequency);
+      if (cached == fixed.end()) cached = fixed.emplace(frequency, solver.Solve(frequency, load)).first;
+      sums.Add(cached->second, stations, elements, wall.closed);
+    }
+    result.rpm.push_back(rotary_speed);
+    const auto widest = std::max_element(sums.displacement.begin(), sums.displacement.end());
+    result.max_lateral_displacement.push_back(*widest);
+    result.s_max_displacement.push_back(stations[widest - sums.displacement.begin()].s);
+    if (with_clearance) {
+      double ratio = 0.0;
+      for (std::size_t i = 0; i < stations.size(); ++i) {
+        if (stations[i].clearance > 0.0) ratio = std::max(ratio, sums.displacement[i] / stations[i].clearance);
+      }
+      result.max_clearance_ratio.push_back(ratio);
+    }
+    result.max_bending_stress.push_back(sums.stress.empty() ? 0.0 : *std::max_element(sums.stress.begin(), sums.stress.end()));
+    result.max_contact_force.push_back(sums.contact.empty() ? 0.0 : *std::max_element(sums.contact.begin(), sums.contact.end()));
+  }
+  FindCriticalSpeeds(settings, result);
+  return result;
+}
+
+}  // namespace drillflex::analyses

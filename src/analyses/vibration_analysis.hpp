@@ -1,0 +1,78 @@
+// Forced lateral/axial/torsional response against rotary speed (method.md §9.2): the critical-speed
+// map. The string is linearized about a state q (the static equilibrium: RunStaticInWell in a
+// well), modes_analysis.hpp Linearize: K = ∂R/∂q (the geometric stiffening of the axial load and
+// the springs of the wall contacts closed at q; open contacts add nothing, so free parts may pass
+// the wall: the paper's rule), M(q) with the fluid (model/lateral_fluid.hpp), D = ∂R/∂v plus the
+// fluid damping. For every rotary speed Ω of the sweep and every excitation at its frequency ω
+//   (K − ω² M(ω) + iω D(ω)) X = F,       x(t) = Re(X e^{iωt})
+// is solved with solvers/harmonic (one factorization per distinct frequency and RPM, every
+// excitation at that frequency a right-hand side; the annulus terms at each ω when the fluid is
+// viscous). Excitations (case-format.md, analyses/analysis_settings.hpp Excitation):
+//  * imbalance `me` at `at`: the force m e Ω² rotating with the string at 1× (forward), i.e. the
+//    lateral pair F = m e Ω² (e_y − i e_z) in the string frame at the node: Re(F e^{iΩt}) =
+//    m e Ω² (cos Ωt e_y + sin Ωt e_z);
+//  * bit: at the bit node at `harmonic` × Ω: a lateral force of amplitude `lateral` rotating in
+//    the same sense, an axial force `axial` along the string axis and a torque `torsional` about
+//    it, all in phase;
+//  * motor: a lateral force `lateral` rotating at lobes × the motor's rotor speed (given by the
+//    excitation's `speed`, else the motor's rev_per_volume × operation.flow_rate), at `at` (default:
+//    the middle of the string's first motor); this frequency does not follow the rotary speed.
+// The amplitude at a node sums the amplitudes of the responses at different frequencies (their
+// peaks may coincide); excitations at one frequency are superposed in phase.
+//
+// Per RPM, the largest over the stations of: the lateral displacement amplitude (the major
+// semi-axis of the node's orbit in the string frame's y-z plane), its ratio to the radial
+// clearance at q (nodes with an open wall contact; none without a well), the bending-stress
+// amplitude E (OD/2) κ of the element-mean curvature κ = (Ψ_{k+1} − Ψ_k) X_η / ℓ of each FE element
+// (again the orbit's major semi-axis), and the contact-force amplitude k_n |n · X_k| at the contacts
+// closed at q (normal stiffness × the amplitude of the node's radial motion).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analyses/analysis_settings.hpp"
+#include "core/types.hpp"
+#include "model/builder.hpp"
+#include "model/lateral_fluid.hpp"
+
+namespace drillflex::analyses {
+
+struct RpmWindow {
+  double from = 0.0, to = 0.0;  // rad/s
+};
+
+struct VibrationResult {
+  std::vector<double> rpm;                       // rotary speeds Ω, rad/s
+  std::vector<double> max_lateral_displacement;  // m
+  std::vector<double> max_clearance_ratio;       // –; empty without clearances (no well)
+  std::vector<double> max_bending_stress;        // Pa
+  std::vector<double> max_contact_force;         // N (0 without closed contacts)
+  std::vector<double> s_max_displacement;        // where the displacement peaks, m from the bit
+  // The critical-speed map (analyses/critical_speeds.hpp): the peaks of the clearance ratio (of the
+  // displacement without clearances), and the windows that stay below the limits.
+  std::vector<double> critical_rpm;  // rad/s
+  std::vector<RpmWindow> safe_windows;
+  double clearance_fraction = 0.0;   // the limits used (VibrationSettings)
+  double stress_limit = 0.0;         // Pa
+  int closed_contacts = 0;           // wall contacts closed at q (springs of the linear model)
+  std::vector<double> excitation_frequencies;  // ω of each excitation at the first RPM, rad/s
+};
+
+// The excitation frequency ω (rad/s) of an excitation at rotary speed Ω; `motor_speed` is the
+// rotor speed (rad/s) for a motor excitation.
+double ExcitationFrequency(const Excitation& excitation, double rotary_speed, double motor_speed);
+
+// The rotor speed of a motor excitation (rad/s): its `speed`, else rev_per_volume × flow rate of the
+// string's first motor. Throws InputError (key path analyses.vibration.excitations[index]) when
+// neither is known, or when there is no motor to take the lobes or place from.
+double MotorSpeed(const Excitation& excitation, const model::ModelInput& input, int index);
+
+// Runs the sweep about q. `input` is what `built` was built from (the string, the motor's data,
+// the operation). Throws SolverError when a frequency hits an undamped resonance, InputError for
+// an excitation the string cannot take (see MotorSpeed).
+VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelInput& input,
+                             const model::LateralFluid& fluid, const VecX& q, const VibrationSettings& settings);
+
+}  // namespace drillflex::analyses

@@ -1,0 +1,86 @@
+// "vibration" and vibration.csv; the rule-of-thumb critical RPM beside the modes.
+#include <algorithm>
+#include <cmath>
+
+#include "io/analysis_results.hpp"
+
+namespace drillflex::io {
+namespace {
+
+using nlohmann::json;
+using units::Quantity;
+
+}  // namespace
+
+RuleOfThumbRpm CalcRuleOfThumbCriticalRpm(const Case& c) {
+  RuleOfThumbRpm rule;
+  if (c.string.components.empty()) return rule;
+  // The span: between the outermost supports that hold the string laterally, else the whole string.
+  double lowest = 1e300, highest = -1e300;
+  for (const model::Support& support : c.supports) {
+    if (!support.fixed[model::kY] && !support.fixed[model::kZ]) continue;
+    lowest = std::min(lowest, support.at);
+    highest = std::max(highest, support.at);
+  }
+  double length = 0.0, longest = -1.0;
+  const model::Component* dominant = nullptr;
+  for (const model::Component& component : c.string.components) {
+    const double span = component.length * component.count;
+    length += span;
+    if (span > longest) longest = span, dominant = &component;
+  }
+  rule.span = highest > lowest ? highest - lowest : length;
+  rule.outer_diameter = dominant->outer_diameter;
+  rule.inner_diameter = dominant->inner_diameter;
+  // 33,055 sqrt(OD² + ID²)/L² rpm, OD and ID in in, L in ft (validation.md V6; ±15 %): 60 × the
+  // first frequency of a pinned-pinned steel tube of that span, π/(2L²) sqrt(EI/m).
+  const double od = rule.outer_diameter / 0.0254, id = rule.inner_diameter / 0.0254, span_ft = rule.span / 0.3048;
+  rule.rpm = 33055.0 * std::sqrt(od * od + id * id) / (span_ft * span_ft) * kPi / 30.0;
+  return rule;
+}
+
+void AddVibrationResults(const Case& c, const analyses::VibrationResult& result, ResultFiles& files) {
+  auto out = [&](double si, Quantity quantity) { return units::FromSI(si, quantity, c.output_units); };
+  const bool ratio = !result.max_clearance_ratio.empty();
+  std::vector<std::string> columns = {"rpm", "max_lateral_displacement", "s_max_displacement", "max_bending_stress",
+                                      "max_contact_force"};
+  if (ratio) columns.push_back("max_clearance_ratio");
+  CsvTable table(columns);
+  json rpm = json::array(), displacement = json::array(), stress = json::array(), contact = json::array(),
+       clearance = json::array(), where = json::array();
+  for (std::size_t i = 0; i < result.rpm.size(); ++i) {
+    std::vector<double> row = {out(result.rpm[i], Quantity::RotarySpeed),
+                               out(result.max_lateral_displacement[i], Quantity::Diameter),
+                               out(result.s_max_displacement[i], Quantity::Length),
+                               out(result.max_bending_stress[i], Quantity::Stress),
+                               out(result.max_contact_force[i], Quantity::Force)};
+    if (ratio) row.push_back(result.max_clearance_ratio[i]);
+    table.AddRow(row);
+    rpm.push_back(row[0]);
+    displacement.push_back(row[1]);
+    where.push_back(row[2]);
+    stress.push_back(row[3]);
+    contact.push_back(row[4]);
+    if (ratio) clearance.push_back(result.max_clearance_ratio[i]);
+  }
+  json critical = json::array(), windows = json::array();
+  for (const double value : result.critical_rpm) critical.push_back(out(value, Quantity::RotarySpeed));
+  for (const auto& window : result.safe_windows) {
+    windows.push_back({{"from", out(window.from, Quantity::RotarySpeed)}, {"to", out(window.to, Quantity::RotarySpeed)}});
+  }
+  json block = {{"rpm", rpm},
+                {"max_lateral_displacement", displacement},
+                {"s_max_displacement", where},
+                {"max_bending_stress", stress},
+                {"max_contact_force", contact},
+                {"critical_rpm", critical},
+                {"safe_windows", windows},
+                {"clearance_fraction", result.clearance_fraction},
+                {"stress_limit", out(result.stress_limit, Quantity::Stress)},
+                {"closed_contacts", result.closed_contacts}};
+  if (ratio) block["max_clearance_ratio"] = clearance;
+  files.Add("vibration.csv", table.ToString());
+  files.json()["vibration"] = block;
+}
+
+}  // namespace drillflex::io

@@ -1,0 +1,181 @@
+#include "model/lateral_fluid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/so3.hpp"
+#include "fe/annulus_fluid.hpp"
+#include "well/hole.hpp"
+
+namespace drillflex::model {
+namespace {
+
+// Tributary length of node k of a body: half the distance to each neighbour inside the body.
+double TributaryLength(const Body& body, int k) {
+  const auto& nodes = body.reduced->node_positions;
+  const int last = body.node_count() - 1;
+  const double below = k > 0 ? nodes[k].x() - nodes[k - 1].x() : 0.0;
+  const double above = k < last ? nodes[k + 1].x() - nodes[k].x() : 0.0;
+  return 0.5 * (below + above);
+}
+
+}  // namespace
+
+LateralFluid MakeLateralFluid(const ModelInput& input, const SystemModel& model) {
+  LateralFluid fluid;
+  if (!input.fluid) return fluid;
+  fluid.density = input.fluid->density;
+  fluid.kinematic_viscosity = fluid.density > 0.0 ? input.fluid->viscosity / fluid.density : 0.0;
+  fluid.added_mass_override = input.fluid->added_mass_coefficient_override;
+  const double inside = input.fluid->internal_density.value_or(input.fluid->density);
+  std::optional<well::HoleProfile> hole;
+  if (input.trajectory && !input.hole.empty()) hole.emplace(input.hole);
+  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+    const Body& body = model.bodies()[b];
+    const AveragedAreas areas = AverageAreas(input.string.components.at(body.component));
+    for (int k = 0; k < body.node_count(); ++k) {
+      LateralFluidNode node;
+      node.body = static_cast<int>(b);
+      node.node = k;
+      node.length = TributaryLength(body, k);
+      node.internal_mass = inside * areas.bore * node.length;
+      node.rod_radius = 0.5 * body.outer_diameter;
+      if (hole) {
+        const double s = body.s_start + body.reduced->node_positions[k].x();
+        const double hole_radius = 0.5 * hole->Diameter(input.bit_md - s);
+        // No annulus where the body fills the hole (the case checks forbid it; a guard only).
+        if (hole_radius > node.rod_radius) node.hole_radius = hole_radius;
+      }
+      fluid.nodes.push_back(node);
+    }
+  }
+  return fluid;
+}
+
+NodeFluidTerms CalcNodeFluidTerms(const LateralFluid& fluid, std::size_t index, double circular_frequency) {
+  const LateralFluidNode& node = fluid.nodes.at(index);
+  NodeFluidTerms terms;
+  terms.mass = node.internal_mass;
+  if (node.hole_radius <= 0.0 || fluid.density <= 0.0) return terms;
+  fe::AnnulusFluidCoefficients coefficients;
+  if (fluid.added_mass_override >= 0.0) {
+    coefficients.added_mass = fluid.added_mass_override;
+  } else if (!fluid.frequency_dependent() || circular_frequency <= 0.0) {
+    coefficients = fe::CalcAnnulusFluidCoefficients(node.rod_radius, node.hole_radius, 0.0, 0.0);
+  } else {
+    coefficients = fe::CalcAnnulusFluidCoefficients(node.rod_radius, node.hole_radius, circular_frequency,
+                                                    fluid.kinematic_viscosity);
+  }
+  // m_a = C_m ρ π a² and c = C_v ρ π a² ω per length (Chen et al. 1976; fe/annulus_fluid.hpp).
+  terms.mass += fe::AddedMassPerLength(coefficients, fluid.density, node.rod_radius) * node.length;
+  terms.damping =
+      fe::DampingPerLength(coefficients, fluid.density, node.rod_radius, circular_frequency) * node.length;
+  return terms;
+}
+
+MatX LateralNodeJacobian(const SystemModel& model, const std::vector<BodyPose>& poses, const LateralFluidNode& node) {
+  const Body& body = model.bodies()[node.body];
+  const BodyPose& pose = poses[node.body];
+  MatX jacobian(3, body.velocity_count());
+  // t_k = Aᵀṙ + ω × u_k + Φ_k η̇ (body frame, method.md §4); ω × u = −ũ ω.
+  jacobian.leftCols<3>() = pose.A.transpose();
+  jacobian.middleCols<3>(3) = -so3::Skew(pose.NodeOffset(body, node.node));
+  jacobian.rightCols(body.flexible_count) = body.reduced->node_translation_modes[node.node];
+  return jacobian.bottomRows<2>();
+}
+
+LateralFluidMatrices CalcLateralFluidMatrices(const SystemModel& model, const LateralFluid& fluid, const VecX& q,
+                                              double circular_frequency, FluidPart part) {
+  const auto poses = model.Poses(q);
+  std::vector<Eigen::Triplet<double>> mass, damping;
+  for (std::size_t i = 0; i < fluid.nodes.size(); ++i) {
+    const LateralFluidNode& node = fluid.nodes[i];
+    NodeFluidTerms terms = CalcNodeFluidTerms(fluid, i, circular_frequency);
+    if (part == FluidPart::Annulus) terms.mass -= node.internal_mass;
+    if (part == FluidPart::Internal) terms = {node.internal_mass, 0.0};
+    if (terms.mass == 0.0 && terms.damping == 0.0) continue;
+    const MatX jacobian = LateralNodeJacobian(model, poses, node);
+    const MatX product = jacobian.transpose() * jacobian;
+    const int offset = model.bodies()[node.body].v_offset;
+    for (Eigen::Index r = 0; r < product.rows(); ++r) {
+      for (Eigen::Index c = 0; c < product.cols(); ++c) {
+        if (product(r, c) == 0.0) continue;
+        const int row = offset + static_cast<int>(r), col = offset + static_cast<int>(c);
+        if (terms.mass != 0.0) mass.emplace_back(row, col, terms.mass * product(r, c));
+        if (terms.damping != 0.0) damping.emplace_back(row, col, terms.damping * product(r, c));
+      }
+    }
+  }
+  const int n = model.num_velocities();
+  LateralFluidMatrices matrices{SparseMat(n, n), SparseMat(n, n)};
+  matrices.mass.setFromTriplets(mass.begin(), mass.end());
+  matrices.damping.setFromTriplets(damping.begin(), damping.end());
+  return matrices;
+}
+
+std::vector<AnnulusGroup> CalcAnnulusGroups(const SystemModel& model, const LateralFluid& fluid, const VecX& q) {
+  const auto poses = model.Poses(q);
+  const int n = model.num_velocities();
+  std::vector<AnnulusGroup> groups;
+  std::vector<std::vector<Eigen::Triplet<double>>> triplets;
+  for (const LateralFluidNode& node : fluid.nodes) {
+    if (node.hole_radius <= 0.0 || fluid.density <= 0.0) continue;
+    auto group = std::find_if(groups.begin(), groups.end(), [&](const AnnulusGroup& g) {
+      return g.rod_radius == node.rod_radius && g.hole_radius == node.hole_radius;
+    });
+    if (group == groups.end()) {
+      groups.push_back({node.rod_radius, node.hole_radius, SparseMat(n, n)});
+      triplets.emplace_back();
+      group = groups.end() - 1;
+    }
+    auto& list = triplets[static_cast<std::size_t>(group - groups.begin())];
+    const MatX jacobian = LateralNodeJacobian(model, poses, node);
+    const MatX product = (fluid.density * kPi * node.rod_radius * node.rod_radius * node.length) *
+                         (jacobian.transpose() * jacobian);
+    const int offset = model.bodies()[node.body].v_offset;
+    for (Eigen::Index r = 0; r < product.rows(); ++r) {
+      for (Eigen::Index c = 0; c < product.cols(); ++c) {
+        if (product(r, c) != 0.0) list.emplace_back(offset + r, offset + c, product(r, c));
+      }
+    }
+  }
+  for (std::size_t g = 0; g < groups.size(); ++g) groups[g].unit_mass.setFromTriplets(triplets[g].begin(), triplets[g].end());
+  return groups;
+}
+
+LateralFluidMatrices CalcAnnulusMatrices(const std::vector<AnnulusGroup>& groups, const LateralFluid& fluid,
+                                         double circular_frequency) {
+  const Eigen::Index n = groups.empty() ? 0 : groups.front().unit_mass.rows();
+  LateralFluidMatrices matrices{SparseMat(n, n), SparseMat(n, n)};
+  for (const AnnulusGroup& group : groups) {
+    fe::AnnulusFluidCoefficients coefficients;
+    if (fluid.added_mass_override >= 0.0) {
+      coefficients.added_mass = fluid.added_mass_override;
+    } else {
+      const bool viscous = fluid.frequency_dependent() && circular_frequency > 0.0;
+      coefficients = fe::CalcAnnulusFluidCoefficients(group.rod_radius, group.hole_radius,
+                                                      viscous ? circular_frequency : 0.0,
+                                                      viscous ? fluid.kinematic_viscosity : 0.0);
+    }
+    // m_a = C_m ρ π a², c = C_v ρ π a² ω per length (fe/annulus_fluid.hpp).
+    matrices.mass += coefficients.added_mass * group.unit_mass;
+    if (coefficients.damping != 0.0) matrices.damping += (coefficients.damping * circular_frequency) * group.unit_mass;
+  }
+  return matrices;
+}
+
+std::vector<double> LateralNodeSquares(const SystemModel& model, const LateralFluid& fluid, const VecX& q,
+                                       const VecX& v) {
+  const auto poses = model.Poses(q);
+  std::vector<double> squares;
+  squares.reserve(fluid.nodes.size());
+  for (const LateralFluidNode& node : fluid.nodes) {
+    const Body& body = model.bodies()[node.body];
+    squares.push_back((LateralNodeJacobian(model, poses, node) * v.segment(body.v_offset, body.velocity_count()))
+                          .squaredNorm());
+  }
+  return squares;
+}
+
+}  // namespace drillflex::model
