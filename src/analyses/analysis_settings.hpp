@@ -1,6 +1,7 @@
 // What each analysis is asked to do, as a case describes it: plain data in SI.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@ enum class StaticMethod { Newton, DynamicRelaxation };
 struct StaticSettings {
   StaticMethod method = StaticMethod::Newton;
   int max_iterations = 200;
+  // Where the solver's progress goes (one line per stage and Newton iteration); none when empty.
+  std::function<void(const std::string&)> log;
 };
 
 enum class ModeKind { All, Lateral, Axial, Torsional };

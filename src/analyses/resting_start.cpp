@@ -26,6 +26,7 @@ struct NodeStation {
   Vec3 position = Vec3::Zero();  // reference, global
   double clearance = 0.0;        // R_h − R_c, m
   Vec3 direction = Vec3::Zero(); // unit lateral load direction, or zero
+  double tension = 0.0;          // soft-string axial force, N (tension positive)
 };
 
 std::vector<NodeStation> Stations(const model::ModelInput& input, const model::SystemModel& system) {
@@ -63,6 +64,7 @@ void AddLoadDirections(const model::ModelInput& input, const model::SystemModel&
     const Vec3 t = trajectory.Tangent(station.md);
     tension += weight * t.dot(down) * (station.s - previous_s);  // dT/ds = w_b cos I
     previous_s = station.s;
+    station.tension = tension;
     const Vec3 lateral = weight * (down - down.dot(t) * t) + tension * trajectory.Curvature(station.md);
     if (lateral.norm() > 1e-6 * std::max(std::abs(weight), 1e-9)) station.direction = lateral.normalized();
   }
@@ -165,16 +167,17 @@ class RestingLine {
 // leaves the vertical (there the vertical's "high side" is north): taking the chords' rolls from
 // those frames would start the couplings twisted by up to π (a kick-off toward the south), the
 // one strain Newton resolves worst (a twist turns the bending held in body coordinates).
-Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const Vec3& bit, double shift, VecX& q,
-              std::vector<double>& ends) {
+Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const std::vector<double>& stretches,
+              const Vec3& bit, double shift, VecX& q, std::vector<double>& ends) {
   const auto& bodies = system.bodies();
   double u = shift;
   std::vector<Vec3> starts;
   Vec3 start = bit;
   ends.clear();
-  for (const model::Body& body : bodies) {
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const model::Body& body = bodies[b];
     const Vec3 first = body.reduced->node_positions.front(), last = body.reduced->node_positions.back();
-    u = line.Along(start, u, (last - first).norm());
+    u = line.Along(start, u, (last - first).norm() + stretches[b]);
     starts.push_back(start);
     start = line.At(u);
     ends.push_back(u);
@@ -198,6 +201,21 @@ Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const V
   return start;
 }
 
+// The elongation of each body under the soft-string axial force at its middle, T ℓ/(EA) (a
+// 3 km string hanging in tension stretches by about a metre: left to Newton, that slide along a
+// curved hole comes with lateral moves of ~0.1 m in the linearized step).
+std::vector<double> Stretches(const model::SystemModel& system, const std::vector<NodeStation>& stations) {
+  std::vector<double> stretches;
+  std::size_t index = 0;
+  for (const model::Body& body : system.bodies()) {
+    const std::size_t last = index + static_cast<std::size_t>(body.node_count()) - 1;
+    const double tension = 0.5 * (stations[index].tension + stations[last].tension);
+    stretches.push_back(tension * body.length() / body.axial_rigidity);
+    index = last + 1;
+  }
+  return stretches;
+}
+
 Quat BodyOrientation(const model::Body& body, const VecX& q) {
   return Quat(q[body.q_offset + 3], q[body.q_offset + 4], q[body.q_offset + 5], q[body.q_offset + 6]);
 }
@@ -210,10 +228,12 @@ Quat BodyOrientation(const model::Body& body, const VecX& q) {
 // turned onto the line's tangent at the joint (one frame shared by both bodies of a joint, so the
 // coupling starts unstrained). Per body, with ρ_k, Φ_k, Ψ_k the node rows of its modes (k: the
 // two end nodes; model/body_dynamics.hpp):
-//   δr + δθ × ρ_k + Φ_k η = 0,   δθ + Ψ_k η = log(A_bᵀ R_j),
+//   δr + δθ × ρ_k + Φ_k η = d_k,   δθ + Ψ_k η = log(A_bᵀ R_j),
+// d_k = 0 at the first node and (Δℓ, 0, 0) at the last (the body's stretch, Stretches; the chord
+// it was laid on is that much longer than the body),
 // 12 equations for 6 + n_f unknowns, solved for the least η (the frame motion weighted as free).
-void BendAlongLine(const model::SystemModel& system, const RestingLine& line, double shift,
-                   const std::vector<double>& ends, VecX& q) {
+void BendAlongLine(const model::SystemModel& system, const RestingLine& line, const std::vector<double>& stretches,
+                   double shift, const std::vector<double>& ends, VecX& q) {
   const auto& bodies = system.bodies();
   constexpr double kHalfSpan = 0.005;  // m, central difference of the line's tangent
   auto tangent = [&](double u) { return (line.At(u + kHalfSpan) - line.At(u - kHalfSpan)).normalized(); };
@@ -240,6 +260,7 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, do
       a.block(6 * end, 6, 3, nf) = body.reduced->node_translation_modes[k];
       a.block<3, 3>(6 * end + 3, 3) = kFrameWeight * Mat3::Identity();
       a.block(6 * end + 3, 6, 3, nf) = body.reduced->node_rotation_modes[k];
+      if (end == 1) rhs[6] = stretches[b];  // the last node moved along the axis by the stretch
       rhs.segment<3>(6 * end + 3) = so3::LogMap(chords[b].transpose() * joints[b + end]);
     }
     const VecX x = a.completeOrthogonalDecomposition().solve(rhs);
@@ -262,6 +283,7 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   VecX q = system.ReferencePositions();
   if (stations.empty()) return q;
   const RestingLine line(input, stations, offsets);
+  const std::vector<double> stretches = Stretches(system, stations);
   // The chain laid on the offset line is longer or shorter along the hole than the string on the
   // hole axis (the offsets change its path length), so its top would miss the hook, which holds
   // the top axially, by centimetres (e.g. 7.7 cm on 300 m through a 75° turn; ~1e10 N in the
@@ -281,12 +303,12 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   double shift = 0.0;  // m up the hole along the bit's axis
   std::vector<double> ends;
   for (int pass = 0; pass < 5; ++pass) {
-    const Vec3 top = LayChain(system, line, bit_reference + shift * bit_axis, shift, q, ends);
+    const Vec3 top = LayChain(system, line, stretches, bit_reference + shift * bit_axis, shift, q, ends);
     const double miss = (top - top_reference).dot(top_axis);
     if (std::abs(miss) < 1e-10) break;
     shift -= miss;
   }
-  BendAlongLine(system, line, shift, ends, q);
+  BendAlongLine(system, line, stretches, shift, ends, q);
   return q;
 }
 

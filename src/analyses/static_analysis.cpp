@@ -18,6 +18,10 @@
 namespace drillflex::analyses {
 namespace {
 
+void Log(const StaticSettings& settings, const std::string& line) {
+  if (settings.log) settings.log(line);
+}
+
 // Newton iterations per load step: the case's max_iterations, capped (a Newton step that has not
 // converged in this many iterations is better cut than continued).
 constexpr int kMaxIterationsPerLoadStep = 50;
@@ -156,6 +160,7 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
   options.max_iterations = std::clamp(settings.max_iterations, 1, kMaxIterationsPerLoadStep);
   if (built.force_scale > 0.0) options.force_scale = built.force_scale;
   options.max_total_iterations = iteration_budget;
+  options.log = settings.log;
   if (start) options.load_stepping.enabled = false;  // already near the equilibrium at full load
   // In a hole, let contacts close gradually: no node moves more than kWallStepLimit a step.
   if (!built.contact_elements.empty()) {
@@ -252,6 +257,8 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
   stage.static_sliding.reset();
   VecX q = RestingStart(input, built);
   const model::BuiltModel soft_model = model::BuildSystemModel(stage, cache);
+  Log(settings, fmt::format("static: from the string resting on the wall, couplings at c = {:g}, no torque",
+                             stage.settings.coupling_factor));
   const StaticResult soft = SolveEquilibrium(soft_model, settings, &q);
   q = soft.q;
   TwistUnderTorque(input, soft_model, q);
@@ -264,7 +271,8 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
     VecX trial = q;
     try {
       StaticResult solved;
-      auto solve = [&](const model::BuiltModel& model) {
+      auto solve = [&](const model::BuiltModel& model, double factor) {
+        Log(settings, fmt::format("static: couplings at c = {:g}, all loads", factor));
         solved = SolveEquilibrium(model, settings, &trial);
         trial = solved.q;
         iterations += solved.iterations;
@@ -275,14 +283,15 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
              factor *= steps[attempt]) {
           model::ModelInput stiffer = stage;
           stiffer.settings.coupling_factor = factor;
-          solve(model::BuildSystemModel(stiffer, cache));
+          solve(model::BuildSystemModel(stiffer, cache), factor);
         }
       }
-      solve(built);
+      solve(built, input.settings.coupling_factor);
       solved.iterations = iterations;
       solved.load_steps = load_steps;
       return solved;
-    } catch (const SolverError&) {
+    } catch (const SolverError& error) {
+      Log(settings, fmt::format("static: {}", error.what()));
       if (attempt + 1 == steps.size()) throw;
     }
   }
@@ -305,6 +314,7 @@ StaticResult SolveByReleasingTheTop(const model::ModelInput& input, const model:
   lateral.at = built.system.length();
   lateral.fixed[model::kY] = lateral.fixed[model::kZ] = true;
   held.supports.push_back(lateral);
+  Log(settings, "static: fallback from the centreline, the top held at the hole centre");
   StaticResult stage = SolveEquilibrium(model::BuildSystemModel(held, cache), settings, nullptr, kFallbackBudget);
   int iterations = stage.iterations;
   constexpr double kLastDecade = 16.0, kSmallestStep = 1.0 / 64.0;
@@ -344,7 +354,8 @@ StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltM
   }
   try {
     return WithResults(built, SolveFromRestingStart(input, built, cache, settings));
-  } catch (const SolverError&) {
+  } catch (const SolverError& error) {
+    Log(settings, fmt::format("static: the solve from the resting start failed: {}", error.what()));
     // A start the soft-string estimate got wrong (e.g. a string buckled in a vertical hole):
     // the slower path below does not depend on it.
   }

@@ -15,6 +15,7 @@ inline constexpr int kExitNotConverged = 3;
 struct CommandOptions {
   std::string case_path;
   std::string output_directory;  // "" = results/<case name>
+  bool verbose = false;          // the solvers' progress on standard error
 };
 
 int RunCheck(const CommandOptions& options);

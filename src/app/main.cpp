@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     if (command.writes_results) {
       sub->add_option("-o,--output", options.output_directory,
                       "Output directory (default: results/<case name>)");
+      sub->add_flag("-v,--verbose", options.verbose, "Print the solvers' progress (stages, Newton iterations)");
     }
     sub->callback([&status, &options, command]() { status = Guarded(command, options); });
   }

@@ -10,6 +10,8 @@
 // most fast_iterations iterations lets the next one grow by growth_factor.
 #pragma once
 
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -37,8 +39,8 @@ struct NewtonOptions {
   // string model the largest node translation in m); a longer step is scaled down to it (a trust
   // radius: e.g. a fraction of the hole clearance, so that contacts close gradually). 0 = none.
   // The radius adapts: a step that makes |R| grow more than 4 times is cut to a quarter (down to
-  // 1e-3 max_increment) and retried along the same direction; a step that lowers |R| doubles it
-  // again, up to max_increment. With a trust radius the line search is not used.
+  // 1e-3 max_increment) and retried along the same direction; an accepted step doubles it again,
+  // up to max_increment. With a trust radius the line search is not used.
   double max_increment = 0.0;
   int max_iterations = 25;           // per load step
   // Over all load steps: the solve stops (fails) once it has used more (0 = no limit), so that a
@@ -49,6 +51,8 @@ struct NewtonOptions {
   LineSearchOptions line_search;
   LoadSteppingOptions load_stepping;
   bool throw_on_failure = true;  // false: return converged = false with the last converged state
+  // Called with one line per Newton iteration (|R|, step length, trust radius); none when empty.
+  std::function<void(const std::string&)> log;
 };
 
 struct StaticResult {
