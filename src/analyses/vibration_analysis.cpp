@@ -3,7 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <exception>
 #include <map>
+#include <memory>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include <fmt/format.h>
 
@@ -21,6 +27,14 @@ namespace {
 
 using Complex = std::complex<double>;
 using ComplexVec = Eigen::VectorXcd;
+
+#ifdef _OPENMP
+int MaxThreads() { return omp_get_max_threads(); }
+int ThreadIndex() { return omp_get_thread_num(); }
+#else
+int MaxThreads() { return 1; }
+int ThreadIndex() { return 0; }
+#endif
 
 // The largest |u(t)| of u(t) = Re(U e^{iωt}) for a complex vector U = a + i b: the major
 // semi-axis of the orbit, max over t of |a cos ωt − b sin ωt| =
@@ -269,7 +283,7 @@ class ResponseSolver {
     solver_ = std::make_unique<solvers::HarmonicSolver>(std::move(system), std::move(terms));
   }
 
-  ComplexVec Solve(double frequency, const ComplexVec& load) {
+  solvers::ComplexMat Solve(double frequency, const solvers::ComplexMat& load) {
     std::vector<solvers::FrequencyTermCoefficients> coefficients;
     for (const model::AnnulusGroup& group : groups_) {
       fe::AnnulusFluidCoefficients c;
@@ -320,6 +334,12 @@ struct Amplitudes {
       contact[c] += map.stiffness * std::sqrt(a * a + b * b);
     }
   }
+
+  void Accumulate(const Amplitudes& other) {
+    for (std::size_t i = 0; i < displacement.size(); ++i) displacement[i] += other.displacement[i];
+    for (std::size_t i = 0; i < stress.size(); ++i) stress[i] += other.stress[i];
+    for (std::size_t i = 0; i < contact.size(); ++i) contact[i] += other.contact[i];
+  }
 };
 
 void FindCriticalSpeeds(const VibrationSettings& settings, VibrationResult& result) {
@@ -334,6 +354,100 @@ void FindCriticalSpeeds(const VibrationSettings& settings, VibrationResult& resu
   for (const IndexRange& run : FindRuns(ok)) result.safe_windows.push_back({result.rpm[run.first], result.rpm[run.last]});
 }
 
+// One excitation at one sweep point: its frequency there.
+struct SweepTask {
+  double frequency = 0.0;  // rad/s
+  int point = 0;           // RPM index
+  int excitation = 0;
+};
+
+// The load of an excitation is its unit load (at Ω = 1 rad/s) times this: the imbalance's m e Ω².
+double LoadScale(const Excitation& excitation, double rotary_speed) {
+  return excitation.type == ExcitationType::Imbalance ? rotary_speed * rotary_speed : 1.0;
+}
+
+struct FrequencyGroup {
+  std::size_t begin = 0, end = 0;  // tasks at one frequency (sorted by point inside)
+};
+
+// Sorts the tasks by frequency (those within 1e-9 relative are one frequency: a bit at 3× 20 rpm and
+// an imbalance at 60 rpm; a motor's fixed frequency once for the whole sweep) and by point inside.
+std::vector<FrequencyGroup> GroupByFrequency(std::vector<SweepTask>& tasks) {
+  std::stable_sort(tasks.begin(), tasks.end(), [](const SweepTask& a, const SweepTask& b) { return a.frequency < b.frequency; });
+  std::vector<FrequencyGroup> groups;
+  for (std::size_t begin = 0; begin < tasks.size();) {
+    std::size_t end = begin;
+    while (end < tasks.size() && tasks[end].frequency <= tasks[begin].frequency * (1.0 + 1e-9)) ++end;
+    std::stable_sort(tasks.begin() + static_cast<std::ptrdiff_t>(begin), tasks.begin() + static_cast<std::ptrdiff_t>(end),
+                     [](const SweepTask& a, const SweepTask& b) { return a.point < b.point; });
+    groups.push_back({begin, end});
+    begin = end;
+  }
+  return groups;
+}
+
+struct SweepMaps {
+  const std::vector<StationMap>& stations;
+  const std::vector<ElementMap>& elements;
+  const std::vector<ContactMap>& contacts;
+};
+
+// One frequency: one factorization, the unit response of each excitation at it a right-hand side,
+// scaled and superposed per sweep point into `sums`.
+void SolveFrequency(const std::vector<SweepTask>& tasks, const FrequencyGroup& group,
+                    const std::vector<ComplexVec>& unit_loads, const std::vector<ResolvedExcitation>& excitations,
+                    const std::vector<double>& speeds, ResponseSolver& solver, const SweepMaps& maps,
+                    std::vector<Amplitudes>& sums) {
+  std::vector<int> columns(unit_loads.size(), -1);
+  std::vector<int> used;
+  for (std::size_t t = group.begin; t < group.end; ++t) {
+    if (columns[tasks[t].excitation] < 0) {
+      columns[tasks[t].excitation] = static_cast<int>(used.size());
+      used.push_back(tasks[t].excitation);
+    }
+  }
+  solvers::ComplexMat loads(unit_loads.front().size(), static_cast<Eigen::Index>(used.size()));
+  for (std::size_t c = 0; c < used.size(); ++c) loads.col(static_cast<Eigen::Index>(c)) = unit_loads[used[c]];
+  const solvers::ComplexMat response = solver.Solve(tasks[group.begin].frequency, loads);
+  for (std::size_t t = group.begin; t < group.end;) {
+    const int point = tasks[t].point;
+    ComplexVec x = ComplexVec::Zero(response.rows());
+    for (; t < group.end && tasks[t].point == point; ++t) {
+      const int e = tasks[t].excitation;
+      x += LoadScale(excitations[e].excitation, speeds[point]) * response.col(columns[e]);
+    }
+    sums[point].Add(x, maps.stations, maps.elements, maps.contacts);
+  }
+}
+
+// Every sweep point's amplitudes, the frequencies shared out among the solvers (one per OpenMP
+// thread, each with its own sums, added up at the end).
+std::vector<Amplitudes> SolveSweep(std::vector<SweepTask> tasks, const std::vector<ComplexVec>& unit_loads,
+                                   const std::vector<ResolvedExcitation>& excitations, const std::vector<double>& speeds,
+                                   std::vector<std::unique_ptr<ResponseSolver>>& solvers, const Amplitudes& zero,
+                                   const SweepMaps& maps) {
+  const std::vector<FrequencyGroup> groups = GroupByFrequency(tasks);
+  const int threads = static_cast<int>(solvers.size());
+  std::vector<std::vector<Amplitudes>> sums(threads, std::vector<Amplitudes>(speeds.size(), zero));
+  std::exception_ptr failure;
+  const auto count = static_cast<std::ptrdiff_t>(groups.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+  for (std::ptrdiff_t g = 0; g < count; ++g) {
+    const int thread = ThreadIndex();
+    try {
+      SolveFrequency(tasks, groups[g], unit_loads, excitations, speeds, *solvers[thread], maps, sums[thread]);
+    } catch (...) {
+#pragma omp critical
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  for (int thread = 1; thread < threads; ++thread) {
+    for (std::size_t point = 0; point < speeds.size(); ++point) sums[0][point].Accumulate(sums[thread][point]);
+  }
+  return std::move(sums[0]);
+}
+
 }  // namespace
 
 VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelInput& input,
@@ -345,55 +459,45 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
   const WallState wall = ReadWall(built, poses);
   const std::vector<StationMap> stations = MapStations(model, poses, wall);
   const std::vector<ElementMap> elements = MapElements(model);
-  ResponseSolver solver(model, fluid, q);
+  // One solver a thread (a factorization each), at most one per RPM value.
+  const int count = static_cast<int>(std::floor((settings.rpm_to - settings.rpm_from) / settings.rpm_step + 1e-9)) + 1;
+  std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(std::clamp(MaxThreads(), 1, count)));
+  for (auto& solver : solvers) solver = std::make_unique<ResponseSolver>(model, fluid, q);
   VibrationResult result;
   result.clearance_fraction = settings.clearance_fraction;
   result.stress_limit = settings.stress_limit;
   result.closed_contacts = static_cast<int>(wall.closed.size());
-  const bool with_clearance = std::any_of(stations.begin(), stations.end(), [](const StationMap& m) { return m.clearance > 0.0; });
-  std::map<double, ComplexVec> fixed;  // responses at frequencies that do not follow the RPM
-  const int count = static_cast<int>(std::floor((settings.rpm_to - settings.rpm_from) / settings.rpm_step + 1e-9)) + 1;
+  std::vector<SweepTask> tasks;
+  std::vector<ComplexVec> unit_loads;
+  for (const ResolvedExcitation& item : excitations) {
+    unit_loads.push_back(ExcitationLoad(model, poses, input, item.excitation, 1.0));
+    result.excitation_frequencies.push_back(ExcitationFrequency(item.excitation, settings.rpm_from, item.motor_speed));
+  }
   for (int j = 0; j < count; ++j) {
-    const double rotary_speed = settings.rpm_from + j * settings.rpm_step;
-    // Excitations at one frequency superposed (one factorization), amplitudes of different ones summed.
-    std::vector<std::pair<double, ComplexVec>> groups;
-    for (const ResolvedExcitation& item : excitations) {
-      const double frequency = ExcitationFrequency(item.excitation, rotary_speed, item.motor_speed);
-      if (j == 0) result.excitation_frequencies.push_back(frequency);
-      const ComplexVec load = ExcitationLoad(model, poses, input, item.excitation, rotary_speed);
-      auto same = std::find_if(groups.begin(), groups.end(),
-                               [&](const auto& g) { return std::abs(g.first - frequency) <= 1e-12 * frequency; });
-      if (same == groups.end()) groups.emplace_back(frequency, load);
-      else same->second += load;
+    result.rpm.push_back(settings.rpm_from + j * settings.rpm_step);
+    for (std::size_t e = 0; e < excitations.size(); ++e) {
+      const double frequency = ExcitationFrequency(excitations[e].excitation, result.rpm.back(), excitations[e].motor_speed);
+      tasks.push_back({frequency, j, static_cast<int>(e)});
     }
-    Amplitudes sums{std::vector<double>(stations.size(), 0.0), std::vector<double>(elements.size(), 0.0),
-                    std::vector<double>(wall.closed.size(), 0.0)};
-    for (const auto& [frequency, load] : groups) {
-      const bool follows = std::any_of(excitations.begin(), excitations.end(), [&](const ResolvedExcitation& item) {
-        return item.excitation.type != ExcitationType::Motor &&
-               std::abs(ExcitationFrequency(item.excitation, rotary_speed, 0.0) - frequency) <= 1e-12 * frequency;
-      });
-      if (follows) {
-        sums.Add(solver.Solve(frequency, load), stations, elements, wall.closed);
-        continue;
-      }
-      auto cached = fixed.find(frequency);
-      if (cached == fixed.end()) cached = fixed.emplace(frequency, solver.Solve(frequency, load)).first;
-      sums.Add(cached->second, stations, elements, wall.closed);
-    }
-    result.rpm.push_back(rotary_speed);
-    const auto widest = std::max_element(sums.displacement.begin(), sums.displacement.end());
+  }
+  const Amplitudes zero{std::vector<double>(stations.size(), 0.0), std::vector<double>(elements.size(), 0.0),
+                        std::vector<double>(wall.closed.size(), 0.0)};
+  const std::vector<Amplitudes> sums =
+      SolveSweep(std::move(tasks), unit_loads, excitations, result.rpm, solvers, zero, {stations, elements, wall.closed});
+  const bool with_clearance = std::any_of(stations.begin(), stations.end(), [](const StationMap& m) { return m.clearance > 0.0; });
+  for (const Amplitudes& point : sums) {
+    const auto widest = std::max_element(point.displacement.begin(), point.displacement.end());
     result.max_lateral_displacement.push_back(*widest);
-    result.s_max_displacement.push_back(stations[widest - sums.displacement.begin()].s);
+    result.s_max_displacement.push_back(stations[static_cast<std::size_t>(widest - point.displacement.begin())].s);
     if (with_clearance) {
       double ratio = 0.0;
       for (std::size_t i = 0; i < stations.size(); ++i) {
-        if (stations[i].clearance > 0.0) ratio = std::max(ratio, sums.displacement[i] / stations[i].clearance);
+        if (stations[i].clearance > 0.0) ratio = std::max(ratio, point.displacement[i] / stations[i].clearance);
       }
       result.max_clearance_ratio.push_back(ratio);
     }
-    result.max_bending_stress.push_back(sums.stress.empty() ? 0.0 : *std::max_element(sums.stress.begin(), sums.stress.end()));
-    result.max_contact_force.push_back(sums.contact.empty() ? 0.0 : *std::max_element(sums.contact.begin(), sums.contact.end()));
+    result.max_bending_stress.push_back(point.stress.empty() ? 0.0 : *std::max_element(point.stress.begin(), point.stress.end()));
+    result.max_contact_force.push_back(point.contact.empty() ? 0.0 : *std::max_element(point.contact.begin(), point.contact.end()));
   }
   FindCriticalSpeeds(settings, result);
   return result;

@@ -70,7 +70,8 @@ struct HarmonicSolver::Workspace {
   HarmonicOptions options;
   ComplexSparse matrix;  // the union pattern; values rewritten at every frequency
   std::vector<double> stiffness, mass, damping, gyroscopic;  // on that pattern
-  std::vector<std::vector<double>> terms;                    // the frequency terms, on it too
+  // The frequency terms' nonzeros: (slot on the pattern, value).
+  std::vector<std::vector<std::pair<std::size_t, double>>> terms;
   bool natural_order = false;
   PivotCheckedLu<Eigen::NaturalOrdering<int>> lu_natural;
   PivotCheckedLu<Eigen::COLAMDOrdering<int>> lu_colamd;
@@ -123,7 +124,13 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, std::vector<SparseMat> terms
   w.mass = ValuesOnPattern(system.mass, pattern);
   w.damping = ValuesOnPattern(system.damping, pattern);
   w.gyroscopic = ValuesOnPattern(system.gyroscopic, pattern);
-  for (const SparseMat& term : terms) w.terms.push_back(ValuesOnPattern(term, pattern));
+  for (const SparseMat& term : terms) {
+    const std::vector<double> values = ValuesOnPattern(term, pattern);
+    auto& nonzeros = w.terms.emplace_back();
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      if (values[k] != 0.0) nonzeros.emplace_back(k, values[k]);
+    }
+  }
   w.matrix = pattern.cast<Complex>();
   w.matrix.makeCompressed();
   // Band fill n·b against the entries (linear_solver.hpp): narrow bands keep their own order.
@@ -177,8 +184,7 @@ ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, doub
   for (std::size_t t = 0; t < terms.size(); ++t) {
     const Complex factor(-omega2 * terms[t].mass, frequency * terms[t].damping);
     if (factor == Complex(0.0, 0.0)) continue;
-    const std::vector<double>& term = w.terms[t];
-    for (std::size_t k = 0; k < term.size(); ++k) values[k] += factor * term[k];
+    for (const auto& [slot, value] : w.terms[t]) values[slot] += factor * value;
   }
   for (std::size_t k = 0; k < w.stiffness.size(); ++k) largest2 = std::max(largest2, std::norm(values[k]));
   const double largest = std::sqrt(largest2);

@@ -1,0 +1,124 @@
+// The forced response (analyses/vibration_analysis.hpp) on the V1 rod, pinned-pinned: linearity
+// and superposition, the decoupling of axial and lateral motion in a straight rod, the static
+// limit far below resonance, and the motor's speed from the flow.
+#include "analyses/vibration_analysis.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analyses_test_support.hpp"
+#include "core/error.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+using testing::SupportAt;
+
+struct PinnedRod {
+  model::ModelInput input = testing::V1Rod();
+  cms::ReductionCache cache;
+  model::BuiltModel built;
+  model::LateralFluid fluid;
+
+  PinnedRod() : built(Build()) {}
+  model::BuiltModel Build() {
+    input.supports = {SupportAt(0.0, {model::kX, model::kY, model::kZ, model::kRx}),
+                      SupportAt(testing::kRodLength, {model::kY, model::kZ})};
+    return model::BuildSystemModel(input, cache);
+  }
+  VibrationResult Run(const VibrationSettings& settings) {
+    return RunVibration(built, input, fluid, built.system.ReferencePositions(), settings);
+  }
+};
+
+Excitation Imbalance(double at, double me) {
+  Excitation e;
+  e.type = ExcitationType::Imbalance;
+  e.at = at;
+  e.imbalance = me;
+  return e;
+}
+
+VibrationSettings Sweep(std::vector<Excitation> excitations, double from_rpm, double to_rpm, double step_rpm) {
+  VibrationSettings settings;
+  settings.rpm_from = from_rpm * kPi / 30.0;
+  settings.rpm_to = to_rpm * kPi / 30.0;
+  settings.rpm_step = step_rpm * kPi / 30.0;
+  settings.excitations = std::move(excitations);
+  return settings;
+}
+
+TEST(VibrationAnalysis, ResponsesAreLinearAndExcitationsAtOneFrequencySuperpose) {
+  PinnedRod rod;
+  const double mid = 0.5 * testing::kRodLength;
+  const VibrationResult one = rod.Run(Sweep({Imbalance(mid, 0.01)}, 100, 3000, 100));
+  const VibrationResult doubled = rod.Run(Sweep({Imbalance(mid, 0.02)}, 100, 3000, 100));
+  const VibrationResult pair = rod.Run(Sweep({Imbalance(mid, 0.01), Imbalance(mid, 0.01)}, 100, 3000, 100));
+  ASSERT_EQ(one.rpm.size(), 30u);
+  for (std::size_t i = 0; i < one.rpm.size(); ++i) {
+    const double x = one.max_lateral_displacement[i];
+    EXPECT_NEAR(doubled.max_lateral_displacement[i], 2.0 * x, 1e-10 * x);
+    EXPECT_NEAR(pair.max_lateral_displacement[i], 2.0 * x, 1e-8 * x);  // two solves added: round-off
+    EXPECT_NEAR(doubled.max_bending_stress[i], 2.0 * one.max_bending_stress[i], 1e-10 * one.max_bending_stress[i]);
+  }
+  EXPECT_TRUE(one.max_clearance_ratio.empty());  // no well
+  EXPECT_EQ(one.closed_contacts, 0);
+}
+
+TEST(VibrationAnalysis, FarBelowResonanceTheWhirlIsTheStaticDeflection) {
+  // At Ω ≪ ω₁ the rotating force m e Ω² deflects the rod as a static load: the mid-span deflection of
+  // a pinned-pinned beam under a central force P is P L³/(48 EI) (any strength-of-materials text).
+  PinnedRod rod;
+  const double mid = 0.5 * testing::kRodLength, me = 0.01;
+  const VibrationResult result = rod.Run(Sweep({Imbalance(mid, me)}, 10, 10, 1));
+  const double omega = 10.0 * kPi / 30.0;
+  const double ei = 2.1e11 * testing::RodSecondMoment();
+  const double reference = me * omega * omega * std::pow(testing::kRodLength, 3) / (48.0 * ei);
+  // ω₁ of the rod ≈ 2π × 51 Hz: (Ω/ω₁)² ≈ 4e-6, the dynamic amplification is negligible.
+  EXPECT_NEAR(result.max_lateral_displacement[0], reference, 1e-3 * reference);
+  EXPECT_NEAR(result.s_max_displacement[0], mid, 1e-9);
+  // Bending stress there: M c / I = (P L/4)(D/2)/I.
+  const double stress = me * omega * omega * testing::kRodLength / 4.0 * (0.5 * testing::kRodDiameter) /
+                        testing::RodSecondMoment();
+  EXPECT_NEAR(result.max_bending_stress[0], stress, 0.03 * stress);  // element-mean curvature near the load
+}
+
+TEST(VibrationAnalysis, AnAxialBitForceMovesAStraightRodOnlyAlongItsAxis) {
+  PinnedRod rod;
+  Excitation bit;
+  bit.type = ExcitationType::Bit;
+  bit.harmonic = 3;
+  bit.axial = 1000.0;
+  const VibrationResult axial = rod.Run(Sweep({bit}, 100, 500, 200));
+  ASSERT_EQ(axial.rpm.size(), 3u);
+  for (std::size_t i = 0; i < axial.rpm.size(); ++i) {
+    EXPECT_LT(axial.max_lateral_displacement[i], 1e-12);
+    EXPECT_LT(axial.max_bending_stress[i], 1e-3);  // Pa
+  }
+}
+
+TEST(VibrationAnalysis, MotorSpeedComesFromTheFlowOrIsGiven) {
+  model::ModelInput input = testing::V1Rod();
+  model::Component motor = input.string.components[0];
+  motor.type = model::ComponentType::Motor;
+  motor.speed_per_flow = 2.0 * kPi * 0.1 / 3.785411784e-3;  // 0.1 rev/gal
+  motor.lobes = 5;
+  input.string.components[0] = motor;
+  input.operation.flow_rate = 500.0 * 3.785411784e-3 / 60.0;  // 500 gpm
+  Excitation e;
+  e.type = ExcitationType::Motor;
+  e.lateral = 100.0;
+  // 500 gpm × 0.1 rev/gal = 50 rev/min.
+  EXPECT_NEAR(MotorSpeed(e, input, 0), 50.0 * kPi / 30.0, 1e-12);
+  e.lobes = 4;
+  EXPECT_NEAR(ExcitationFrequency(e, 7.0, 2.0), 8.0, 1e-12);  // lobes × rotor speed, not the RPM
+  e.motor_speed = 3.0;
+  EXPECT_NEAR(MotorSpeed(e, input, 0), 3.0, 1e-15);
+  e.motor_speed.reset();
+  input.operation.flow_rate.reset();
+  EXPECT_THROW(MotorSpeed(e, input, 0), InputError);
+}
+
+}  // namespace
+}  // namespace drillflex::analyses
