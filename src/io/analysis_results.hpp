@@ -30,7 +30,8 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
 
 // The field rule of thumb for the critical rotary speed of a tube span (validation.md V6):
 // 33,055 sqrt(OD² + ID²)/L² rpm (in, ft), for the longest component's OD and ID over the span
-// between the outermost lateral supports (the whole string without two of them).
+// between the outermost lateral supports; without two of them, one tool-joint spacing of a pipe
+// with joints, else the whole string.
 struct RuleOfThumbRpm {
   double rpm = 0.0;             // rad/s
   double span = 0.0;            // L, m

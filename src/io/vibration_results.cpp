@@ -15,7 +15,9 @@ using units::Quantity;
 RuleOfThumbRpm CalcRuleOfThumbCriticalRpm(const Case& c) {
   RuleOfThumbRpm rule;
   if (c.string.components.empty()) return rule;
-  // The span: between the outermost supports that hold the string laterally, else the whole string.
+  // The span: between the outermost supports that hold the string laterally; else, for drill pipe
+  // or HWDP with tool joints, one joint spacing (the rule's own use: the pipe between two joints
+  // that touch the wall); else the whole string.
   double lowest = 1e300, highest = -1e300;
   for (const model::Support& support : c.supports) {
     if (!support.fixed[model::kY] && !support.fixed[model::kZ]) continue;
@@ -29,7 +31,12 @@ RuleOfThumbRpm CalcRuleOfThumbCriticalRpm(const Case& c) {
     length += span;
     if (span > longest) longest = span, dominant = &component;
   }
-  rule.span = highest > lowest ? highest - lowest : length;
+  rule.span = length;
+  if (highest > lowest) {
+    rule.span = highest - lowest;
+  } else if (dominant->joint_diameter) {
+    rule.span = dominant->joint_spacing.value_or(std::min(model::kDefaultJointSpacing, dominant->length));
+  }
   rule.outer_diameter = dominant->outer_diameter;
   rule.inner_diameter = dominant->inner_diameter;
   // 33,055 sqrt(OD² + ID²)/L² rpm, OD and ID in in, L in ft (validation.md V6; ±15 %): 60 × the
