@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 
@@ -141,6 +142,83 @@ std::vector<bool> RigidFlags(const VecX& eigenvalues, int rigid) {
   return flags;
 }
 
+// The `count` lowest modes (kind All) or the lowest of one family, solving more modes progressively
+// (from solve_count, doubling, at most bound) until enough of the family are found.
+ModesResult SearchModes(const model::SystemModel& model, const VecX& q, const std::vector<model::BodyPose>& poses,
+                        const std::vector<Station>& stations, const LinearizedSystem& solved,
+                        const ModesSettings& settings, int solve_count, int bound) {
+  const bool all = settings.kind == ModeKind::All;
+  const int n = model.num_velocities();
+  ModesResult result;
+  const int rigid = CountRigidBodyModes(model, q, solved);
+  if (all) solve_count = std::min(n, settings.count + rigid);
+  while (true) {
+    const solvers::ModalResult modal = LowestModes(solved, solve_count);
+    const std::vector<bool> rigid_flags = RigidFlags(modal.eigenvalues, rigid);
+    result.modes.clear();
+    result.rigid_body_modes = 0;
+    for (Eigen::Index j = 0; j < modal.eigenvalues.size(); ++j) {
+      ModeResult mode = DescribeMode(model, poses, stations, modal.eigenvalues[j], modal.vectors.col(j));
+      mode.rigid_body = rigid_flags[j];
+      if (mode.rigid_body) mode.frequency_hz = 0.0;
+      if (!all && (mode.rigid_body || mode.kind != settings.kind)) continue;
+      if (mode.rigid_body) ++result.rigid_body_modes;
+      result.modes.push_back(std::move(mode));
+      if (static_cast<int>(result.modes.size()) == settings.count) break;
+    }
+    if (static_cast<int>(result.modes.size()) >= settings.count || solve_count >= bound) break;
+    solve_count = std::min(bound, 2 * solve_count);
+  }
+  return result;
+}
+
+// Axial or torsional modes of a string held laterally: stiff springs (the largest diagonal stiffness)
+// on every node's lateral translation push the bending modes far up, so the lowest modes of the held
+// system are the axial and torsional ones. Exact where the families are uncoupled (a straight string:
+// those modes move no node laterally); accepted only if each mode also satisfies the free system,
+// ‖Kφ − λMφ‖ ≤ 1e-6 ‖Kφ‖ with λ its Rayleigh quotient. None (the caller searches the full spectrum)
+// when the families couple (a curved hole, a loaded contact) or too few are found.
+std::optional<ModesResult> FamilyModesWithLateralHeld(const model::SystemModel& model, const VecX& q,
+                                                      const std::vector<model::BodyPose>& poses,
+                                                      const std::vector<Station>& stations,
+                                                      const LinearizedSystem& solved, const ModesSettings& settings,
+                                                      int bound) {
+  double hold = 0.0;
+  for (Eigen::Index i = 0; i < solved.stiffness.rows(); ++i) hold = std::max(hold, std::abs(solved.stiffness.coeff(i, i)));
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+    const model::Body& body = model.bodies()[b];
+    for (int k = 0; k < body.node_count(); ++k) {
+      model::LateralFluidNode node;
+      node.body = static_cast<int>(b);
+      node.node = k;
+      const MatX jacobian = model::LateralNodeJacobian(model, poses, node);
+      const MatX product = hold * (jacobian.transpose() * jacobian);
+      for (Eigen::Index r = 0; r < product.rows(); ++r) {
+        for (Eigen::Index c = 0; c < product.cols(); ++c) {
+          if (product(r, c) != 0.0) triplets.emplace_back(body.v_offset + r, body.v_offset + c, product(r, c));
+        }
+      }
+    }
+  }
+  SparseMat springs(solved.stiffness.rows(), solved.stiffness.cols());
+  springs.setFromTriplets(triplets.begin(), triplets.end());
+  LinearizedSystem held = solved;
+  held.stiffness += springs;
+  const int start = std::min(bound, std::max(2 * settings.count, 6));
+  ModesResult result = SearchModes(model, q, poses, stations, held, settings, start, std::min(bound, 4 * start));
+  if (static_cast<int>(result.modes.size()) < settings.count) return std::nullopt;
+  for (ModeResult& mode : result.modes) {
+    const VecX& phi = mode.vector;
+    const VecX k_phi = solved.stiffness * phi, m_phi = solved.mass * phi;
+    const double eigenvalue = phi.dot(k_phi) / phi.dot(m_phi);
+    if ((k_phi - eigenvalue * m_phi).norm() > 1e-6 * k_phi.norm()) return std::nullopt;
+    mode.eigenvalue = eigenvalue;
+    mode.frequency_hz = eigenvalue > 0.0 ? std::sqrt(eigenvalue) / (2.0 * kPi) : 0.0;
+  }
+  return result;
+}
+
 }  // namespace
 
 int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system) {
@@ -214,24 +292,15 @@ ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const M
   int solve_count = all ? std::min(n, settings.count) : std::min(bound, std::max(3 * settings.count, 12));
   ModesResult result;
   for (const Station& station : stations) result.s.push_back(station.s);
-  const int rigid = CountRigidBodyModes(model, q, solved);
-  if (all) solve_count = std::min(n, settings.count + rigid);
-  while (true) {
-    const solvers::ModalResult modal = LowestModes(solved, solve_count);
-    const std::vector<bool> rigid_flags = RigidFlags(modal.eigenvalues, rigid);
-    result.modes.clear();
-    result.rigid_body_modes = 0;
-    for (Eigen::Index j = 0; j < modal.eigenvalues.size(); ++j) {
-      ModeResult mode = DescribeMode(model, poses, stations, modal.eigenvalues[j], modal.vectors.col(j));
-      mode.rigid_body = rigid_flags[j];
-      if (mode.rigid_body) mode.frequency_hz = 0.0;
-      if (!all && (mode.rigid_body || mode.kind != settings.kind)) continue;
-      if (mode.rigid_body) ++result.rigid_body_modes;
-      result.modes.push_back(std::move(mode));
-      if (static_cast<int>(result.modes.size()) == settings.count) break;
+  if (settings.kind == ModeKind::Axial || settings.kind == ModeKind::Torsional) {
+    if (auto held = FamilyModesWithLateralHeld(model, q, poses, stations, solved, settings, bound)) {
+      result.modes = std::move(held->modes);
     }
-    if (static_cast<int>(result.modes.size()) >= settings.count || solve_count >= bound) break;
-    solve_count = std::min(bound, 2 * solve_count);
+  }
+  if (result.modes.empty()) {
+    const ModesResult found = SearchModes(model, q, poses, stations, solved, settings, solve_count, bound);
+    result.modes = found.modes;
+    result.rigid_body_modes = found.rigid_body_modes;
   }
   for (ModeResult& mode : result.modes) SetFrequencyAndDamping(model, q, system, fluid, mode);
   std::stable_sort(result.modes.begin(), result.modes.end(),

@@ -48,7 +48,10 @@ const char* ModeKindName(ModeKind kind);
 // `settings.gyroscopic` is not used yet (the string does not rotate in this analysis).
 // The `count` lowest modes (kind All), or the `count` lowest modes of one family (Lateral,
 // Axial, Torsional: more modes are solved progressively until enough are found, at most
-// kMaxModesSearched). Throws SolverError if the eigen solver fails.
+// kMaxModesSearched). Axial and torsional modes are first sought with every node's lateral
+// translation held by stiff springs (the bending modes pushed far up, so the lowest modes are the
+// family's): kept when each also satisfies the free system to 1e-6 (uncoupled families: a straight
+// string), else the full progressive search. Throws SolverError if the eigen solver fails.
 //
 // Drilling fluid (`fluid`, model/lateral_fluid.hpp): its lateral mass joins M. The eigenproblem
 // is solved with the annulus added mass at its inviscid C_m (or the case's override); with a
