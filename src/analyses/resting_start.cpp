@@ -15,7 +15,8 @@ namespace {
 // Half a standard drill-pipe joint spacing (30 ft, API RP 7G): the reach of a tool joint or
 // blade holding the string off the wall, and the length over which the offset ramps up from the bit.
 constexpr double kSupportReach = 4.572;
-// Penetration given to the node with the least clearance, m: its contact starts closed.
+// Added to the least clearance of each station, m: where the line touches the wall, the contact
+// starts (just) closed.
 constexpr double kStartPenetration = 1e-6;
 
 struct NodeStation {
@@ -231,7 +232,7 @@ Quat BodyOrientation(const model::Body& body, const VecX& q) {
 //   δr + δθ × ρ_k + Φ_k η = d_k,   δθ + Ψ_k η = log(A_bᵀ R_j),
 // d_k = 0 at the first node and (Δℓ, 0, 0) at the last (the body's stretch, Stretches; the chord
 // it was laid on is that much longer than the body),
-// 12 equations for 6 + n_f unknowns, solved for the least η (the frame motion weighted as free).
+// 12 equations for 6 + n_f unknowns, solved for the least strain energy (the frame motion free).
 void BendAlongLine(const model::SystemModel& system, const RestingLine& line, const std::vector<double>& stretches,
                    double shift, const std::vector<double>& ends, VecX& q) {
   const auto& bodies = system.bodies();
@@ -250,6 +251,11 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
     const model::Body& body = bodies[b];
     const int nf = body.flexible_count;
     const int last = body.node_count() - 1;
+    // Modal columns scaled by 1/ω_j: the least |ζ| with η_j = ζ_j/ω_j is the least strain energy
+    // ½ Σ ω_j² η_j², i.e. the static shape of the body under its end conditions. (The least |η|
+    // of the mass-normalised modes instead took shear-dominated shapes of the short Timoshenko
+    // elements: a third of the bend with the end rotations met, and tool joints 3–5 mm in the wall.)
+    const VecX compliance = body.reduced->natural_frequencies.cwiseInverse();
     MatX a = MatX::Zero(12, 6 + nf);
     VecX rhs = VecX::Zero(12);
     for (int end = 0; end < 2; ++end) {
@@ -257,9 +263,9 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
       const Vec3& rho = body.reduced->node_positions[k];
       a.block<3, 3>(6 * end, 0) = kFrameWeight * Mat3::Identity();
       a.block<3, 3>(6 * end, 3) = -kFrameWeight * so3::Skew(rho);
-      a.block(6 * end, 6, 3, nf) = body.reduced->node_translation_modes[k];
+      a.block(6 * end, 6, 3, nf) = body.reduced->node_translation_modes[k] * compliance.asDiagonal();
       a.block<3, 3>(6 * end + 3, 3) = kFrameWeight * Mat3::Identity();
-      a.block(6 * end + 3, 6, 3, nf) = body.reduced->node_rotation_modes[k];
+      a.block(6 * end + 3, 6, 3, nf) = body.reduced->node_rotation_modes[k] * compliance.asDiagonal();
       if (end == 1) rhs[6] = stretches[b];  // the last node moved along the axis by the stretch
       rhs.segment<3>(6 * end + 3) = so3::LogMap(chords[b].transpose() * joints[b + end]);
     }
@@ -268,7 +274,7 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
     q.segment<3>(body.q_offset) += chords[b] * dr;
     const Quat bent = so3::Compose(BodyOrientation(body, q), dtheta);
     q.segment<4>(body.q_offset + 3) << bent.w(), bent.x(), bent.y(), bent.z();
-    q.segment(body.q_offset + 7, nf) = x.tail(nf);
+    q.segment(body.q_offset + 7, nf) = compliance.asDiagonal() * x.tail(nf);
   }
 }
 
@@ -285,13 +291,11 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   const RestingLine line(input, stations, offsets);
   const std::vector<double> stretches = Stretches(system, stations);
   // The chain laid on the offset line is longer or shorter along the hole than the string on the
-  // hole axis (the offsets change its path length), so its top would miss the hook, which holds
-  // the top axially, by centimetres (e.g. 7.7 cm on 300 m through a 75° turn; ~1e10 N in the
-  // hook's stiff spring). The bit is axially free: slide the chain along the hole until the top
-  // lands at its reference MD (the miss is nearly linear in the shift: two or three passes).
-  // The hook holds the top axially along its body's reference axis; the bit's support holds the bit
-  // laterally (very stiffly: a micrometre across it is ~1e4 N), so the bit slides along its own
-  // reference axis, and the top's miss is measured along the top's.
+  // hole axis (the offsets and the stretch change its path length), so its top would miss the
+  // hook, which holds the top axially along the top body's reference axis, by centimetres (e.g.
+  // 7.7 cm on 300 m through a 75° turn; ~1e10 N in the hook's stiff spring). The bit is axially
+  // free but held very stiffly across (a micrometre is ~1e4 N): slide the chain along the bit's
+  // reference axis until the top lands (the miss is nearly linear in the shift: two or three passes).
   const model::Body& bit_body = system.bodies().front();
   const model::Body& top_body = system.bodies().back();
   const Vec3 bit_axis = bit_body.reference_orientation.toRotationMatrix().col(0);
@@ -302,10 +306,11 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
                              top_body.reference_orientation.toRotationMatrix() * top_body.reduced->node_positions.back();
   double shift = 0.0;  // m up the hole along the bit's axis
   std::vector<double> ends;
-  for (int pass = 0; pass < 5; ++pass) {
+  constexpr int kPasses = 5;
+  for (int pass = 0; pass < kPasses; ++pass) {
     const Vec3 top = LayChain(system, line, stretches, bit_reference + shift * bit_axis, shift, q, ends);
     const double miss = (top - top_reference).dot(top_axis);
-    if (std::abs(miss) < 1e-10) break;
+    if (std::abs(miss) < 1e-10 || pass + 1 == kPasses) break;  // q and ends belong to `shift`
     shift -= miss;
   }
   BendAlongLine(system, line, stretches, shift, ends, q);

@@ -169,8 +169,9 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
 
   VecX equilibrium = built.system.ReferencePositions();
   if (requested.static_analysis || requested.modes || requested.vibration) {
-    const auto result =
-        analyses::RunStaticInWell(input, built, cache, c.analyses.static_analysis.value_or(analyses::StaticSettings{}));
+    analyses::StaticSettings settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
+    if (options.verbose) settings.log = [](const std::string& line) { std::cerr << line << '\n'; };
+    const auto result = analyses::RunStaticInWell(input, built, cache, settings);
     equilibrium = result.q;
     if (requested.static_analysis) {
       PrintStatic(c, result);
