@@ -10,11 +10,14 @@
 // with w_b the buoyed weight per length, t the hole tangent, κ = dt/ds the curvature vector (toward
 // the centre of the bend; tension pulls the string to the inside of a bend, compression pushes it
 // out) and T the axial force (tension positive) from T(0) = −WOB and dT/ds = w_b cos I up the hole.
-// Each node is moved along f⊥ by the radial clearance left at the largest contact diameter near it
-// (the tool joints, blades or body within half a standard joint spacing), ramped from zero at the
-// bit, which its support holds at the hole centre. The bodies are laid as a chain of rigid chords
-// through the moved nodes (η = 0), so the couplings stay closed; Newton then adds the bending, the
-// sag between joints and the exact contact set.
+// Each station is moved along f⊥ by the radial clearance left at the largest contact diameter near
+// it (the tool joints, blades or body within half a standard joint spacing), the offsets averaged
+// along the string and ramped from zero at the bit, which its support holds at the hole centre:
+// the resting line. The bodies are laid on it end to end with exact chord lengths, each stretched
+// by T ℓ/EA, slid along the bit's axis until the top meets the hook, rolled from the body above
+// (parallel transport from the top down), and bent into the line by the least strain energy, so
+// the couplings start unstrained (resting_start.cpp says why each step is there). Newton then adds
+// the sag between joints, the exact contact set and the balance of forces.
 //
 // The torque on bit twists the string by radians over a few hundred metres of drill pipe. A Newton
 // step that turns a bent body about its axis also turns its bending (held in body coordinates),
