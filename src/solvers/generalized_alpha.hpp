@@ -1,0 +1,148 @@
+// Implicit time integration of R(t, q, v, v̇) = 0 (solvers/problem.hpp) by the generalized-α method
+// of Chung & Hulbert (J. Appl. Mech. 60, 1993) in the Lie-group form of Arnold & Brüls (Multibody
+// Syst. Dyn. 18, 2007) and Brüls, Cardona & Arnold (Mech. Mach. Theory 48, 2012). Per step h, with
+// v̇ the true acceleration and a an auxiliary ("pseudo") acceleration:
+//   q_{n+1} = q_n ⊕ (h v_n + h² (½ − β) a_n + h² β a_{n+1})     (rotation-aware: Problem::Increment)
+//   v_{n+1} = v_n + h (1 − γ) a_n + h γ a_{n+1}
+//   (1 − α_m) a_{n+1} + α_m a_n = (1 − α_f) v̇_{n+1} + α_f v̇_n
+//   R(t_{n+1}, q_{n+1}, v_{n+1}, v̇_{n+1}) = 0,
+// with α_m = (2ρ∞ − 1)/(ρ∞ + 1), α_f = ρ∞/(ρ∞ + 1), γ = ½ + α_f − α_m, β = ¼ (γ + ½)² (Chung &
+// Hulbert eq. 25 and 17): second order, unconditionally stable for linear problems, with the
+// spectral radius ρ∞ ∈ [0, 1] at ωh → ∞ (ρ∞ = 1: no numerical damping, the trapezoidal rule).
+//
+// Newton on v̇_{n+1}: a correction Δv̇ changes a by β'' Δv̇, v by γ h β'' Δv̇ and the position
+// increment by β h² β'' Δv̇ (β'' = (1 − α_f)/(1 − α_m)), so the iteration matrix is, divided by
+// β h² β'', S = K + γ/(β h) D + (1 − α_m)/((1 − α_f) β h²) M (Problem::IterationMatrix; the tangent
+// operator of the Lie-group increment is taken as the identity, as Brüls et al. do: it changes only
+// the convergence rate, O(h)). S is kept factorized across iterations and steps while Newton
+// converges fast (modified Newton); it is refactorized when an iteration contracts by less than
+// `reuse_contraction`, when Newton fails to converge with a stale matrix, or when h has changed by
+// more than `refactor_step_ratio`.
+//
+// Convergence and error are measured in a weighted RMS norm of position increments:
+// ‖x‖ = sqrt(mean((x_i / (atol + rtol · s_i))²)), s_i the largest |q_i − q_i(start)| so far
+// (accumulated in the tangent space), capped at position_scale (so that a body spinning thousands
+// of radians is still integrated to rtol · 1 rad, not rtol times its total turn). Newton stops when the last position correction, times the
+// estimated θ/(1 − θ) of its contraction, is below newton_tolerance in this norm (Hairer & Wanner,
+// "Solving ODEs II", §IV.8). The local error estimate is Zienkiewicz & Xie's (Earthquake Eng.
+// Struct. Dyn. 20, 1991) for Newmark-type schemes, e = (β − 1/6) h² (a_{n+1} − a_n); adaptive steps
+// accept e ≤ 1 and take h ← h · clamp(0.9 e^(−1/3), 0.2, 2). A step whose Newton iterations fail
+// (too many iterations, divergence, a non-finite residual, a singular matrix) is rejected and
+// retried at h/4; below min_step the integrator throws a SolverError naming the time and reason.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <string>
+
+#include "core/types.hpp"
+#include "solvers/linear_solver.hpp"
+#include "solvers/problem.hpp"
+
+namespace drillflex::solvers {
+
+// The scheme's coefficients for a spectral radius ρ∞ at infinite frequency (Chung & Hulbert 1993).
+struct GeneralizedAlphaParameters {
+  double alpha_m = 0.5;
+  double alpha_f = 0.5;
+  double gamma = 0.5;
+  double beta = 0.25;
+  // Throws LogicError unless 0 ≤ ρ∞ ≤ 1.
+  static GeneralizedAlphaParameters FromSpectralRadius(double rho_infinity);
+};
+
+struct GeneralizedAlphaOptions {
+  double rho_infinity = 0.8;        // spectral radius at ωh → ∞ (1: no numerical damping)
+  double initial_step = 1e-4;       // s
+  double min_step = 1e-12;          // s; a step cut below this throws
+  double max_step = std::numeric_limits<double>::infinity();  // s
+  bool adaptive = true;             // false: steps of initial_step (cut only when Newton fails)
+  double relative_tolerance = 1e-4; // rtol of the error norm (header)
+  double absolute_tolerance = 1e-8; // atol, units of q's tangent (m, rad, modal coordinates)
+  double position_scale = 1.0;      // cap of s_i in the error norm, same units
+  double newton_tolerance = 1e-3;   // fraction of the error norm at which Newton stops
+  int max_newton_iterations = 12;   // per attempt (a stale matrix gets one more attempt, fresh)
+  bool reuse_iteration_matrix = true;
+  double reuse_contraction = 0.3;   // an iteration contracting less than this refactorizes
+  double refactor_step_ratio = 0.25;  // |h/h_factorized − 1| above this refactorizes
+  long max_steps = 100'000'000;     // accepted plus rejected steps per AdvanceTo
+};
+
+struct GeneralizedAlphaState {
+  double time = 0.0;     // s
+  VecX q;                // positions (num_positions)
+  VecX v;                // velocities (num_velocities)
+  VecX acceleration;     // v̇, the true acceleration
+  VecX pseudo_acceleration;  // a, the scheme's auxiliary acceleration
+  double last_step = 0.0;    // the step that led here, s (0 at a start, where a = v̇)
+};
+
+struct GeneralizedAlphaStatistics {
+  long steps = 0;                // accepted
+  long error_rejections = 0;     // steps rejected by the error estimate
+  long newton_failures = 0;      // steps rejected because Newton failed
+  long newton_iterations = 0;    // over all attempts
+  long factorizations = 0;
+  long residual_evaluations = 0;
+  double smallest_step = std::numeric_limits<double>::infinity();  // accepted, s
+  double largest_step = 0.0;     // accepted, s
+};
+
+class GeneralizedAlphaIntegrator {
+ public:
+  GeneralizedAlphaIntegrator(const Problem& problem, const GeneralizedAlphaOptions& options);
+
+  // Starts at (t, q, v) with the consistent acceleration v̇ = −M(q)⁻¹ R(t, q, v, 0) and a = v̇.
+  // Throws SolverError if M is singular or the residual is not finite.
+  void Initialize(double time, const VecX& q, const VecX& v);
+  // Starts from a full state (e.g. to continue a run); sizes are checked.
+  void Initialize(const GeneralizedAlphaState& state);
+
+  // Integrates until state().time == end_time exactly (the last step is shortened to land on it).
+  // Throws SolverError (with the time and the reason) when a step cannot be completed.
+  void AdvanceTo(double end_time);
+
+  const GeneralizedAlphaState& state() const { return state_; }
+  const GeneralizedAlphaStatistics& statistics() const { return statistics_; }
+  const GeneralizedAlphaParameters& parameters() const { return parameters_; }
+  // The step size the next step will try (s).
+  double step_size() const { return step_; }
+  // The local error estimate of the last accepted step in the error norm (≤ 1 when adaptive).
+  double last_error() const { return last_error_; }
+  // Called after every accepted step; none when empty.
+  std::function<void(const GeneralizedAlphaState&)> on_step;
+
+ private:
+  enum class Outcome { kConverged, kFailed };
+  struct Attempt {
+    Outcome outcome = Outcome::kFailed;
+    std::string reason;
+  };
+  Attempt TryStep(double h);
+  Attempt Iterate(double h, bool fresh_matrix);
+  void PrepareStep(double h);
+  void UpdateStepState(double h);
+  bool Factorize(double h, std::string& reason);
+  double WeightedNorm(const VecX& increment) const;
+  double StepErrorEstimate(double h) const;
+  void AcceptStep(double h);
+
+  const Problem& problem_;
+  GeneralizedAlphaOptions options_;
+  GeneralizedAlphaParameters parameters_;
+  GeneralizedAlphaState state_;
+  GeneralizedAlphaStatistics statistics_;
+  SparseLinearSolver solver_;
+  bool has_factorization_ = false;
+  double factorized_step_ = 0.0;
+  double step_ = 0.0;
+  double last_error_ = 0.0;
+  double contraction_ = 1.0;  // θ/(1 − θ) of the last converged Newton solve, for the next one's first test
+  bool initialized_ = false;
+  // Workspace of the step being attempted (the trial state at t_{n+1}).
+  VecX trial_q_, trial_v_, trial_acceleration_, trial_pseudo_, increment_, base_increment_;
+  VecX step_pseudo_;  // a_n rescaled to the step being tried (PrepareStep)
+  VecX accumulated_, scale_;  // Σ increments since the start, and its running largest |·|
+};
+
+}  // namespace drillflex::solvers
