@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/string_config.hpp"
 
 namespace drillflex::analyses {
 
@@ -57,11 +58,22 @@ struct BucklingSettings {
   int frequency_points = 4;  // load levels in the first f² sweep (refined near the estimate)
 };
 
+// Where a transient run starts (analyses/transient_analysis.hpp).
+enum class TransientStart {
+  Equilibrium,  // the static equilibrium under the case's loads plus `initial_loads`
+  Reference,    // the undeformed placement, at rest
+};
 struct TransientSettings {
   double duration = 1.0;          // s
   double output_interval = 0.01;  // s
   std::vector<double> probes;     // m from the bit
-  std::optional<double> time_step;  // s; default adaptive
+  std::optional<double> time_step;  // s; fixed steps of this size; default adaptive
+  double rho_infinity = 0.8;      // generalized-α spectral radius at ωh → ∞ (1: no numerical damping)
+  double tolerance = 1e-4;        // relative local error per step (solvers/generalized_alpha.hpp)
+  TransientStart start = TransientStart::Equilibrium;
+  // Loads (string frame, as `loads`) that act in the start equilibrium only and are removed at
+  // t = 0: a string released from a deflected shape (free vibration).
+  std::vector<model::Load> initial_loads;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

@@ -1,7 +1,10 @@
-// `drillflex static|modes|buckling|run CASE [-o DIR]`: build the model of a case, run the
+// `drillflex static|modes|buckling|vibration|transient|run CASE [-o DIR]`: build the model of a case, run the
 // analyses, print a summary in the case's units and write the results atomically.
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -10,6 +13,7 @@
 #include "analyses/buckling_analysis.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
+#include "analyses/transient_analysis.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "app/commands.hpp"
 #include "cms/reduction_cache.hpp"
@@ -23,7 +27,7 @@ namespace {
 using units::Quantity;
 
 struct Requested {
-  bool static_analysis = false, modes = false, buckling = false, vibration = false;
+  bool static_analysis = false, modes = false, buckling = false, vibration = false, transient = false;
 };
 
 std::string Show(const io::Case& c, double si, Quantity quantity, int digits = 5) {
@@ -152,6 +156,51 @@ void PrintBuckling(const io::Case& c, const analyses::BucklingResult& result) {
   }
 }
 
+// A one-line progress bar with the time left on standard error, drawn only when it is a terminal
+// (none in pipes, files and tests), redrawn at most five times a second.
+class ProgressBar {
+ public:
+  ProgressBar() : enabled_(isatty(STDERR_FILENO) == 1), start_(Clock::now()), last_(start_) {}
+  ~ProgressBar() {
+    if (drawn_) std::fputc('\n', stderr);
+  }
+  void Update(double time, double duration) {
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    if (drawn_ && now - last_ < std::chrono::milliseconds(200) && time < duration) return;
+    last_ = now;
+    drawn_ = true;
+    const double fraction = std::clamp(time / duration, 0.0, 1.0);
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const int width = 30, filled = static_cast<int>(fraction * width);
+    const std::string left =
+        fraction > 0.0 ? fmt::format("{:.0f} s left", elapsed * (1.0 - fraction) / fraction) : std::string("...");
+    std::fprintf(stderr, "\r  [%s%s] %3.0f %%  t = %.4g of %.4g s, %s   ", std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), 100.0 * fraction, time, duration, left.c_str());
+    std::fflush(stderr);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool enabled_ = false;
+  bool drawn_ = false;
+  Clock::time_point start_, last_;
+};
+
+void PrintTransient(const io::Case& c, const analyses::TransientResult& result) {
+  const auto& stats = result.statistics;
+  std::cout << fmt::format("transient: {} s in {} steps ({} rejected), {} Newton iterations, {} factorizations; "
+                           "steps {:.3g} to {:.3g} s\n",
+                           result.samples.back().time, stats.steps, stats.error_rejections + stats.newton_failures,
+                           stats.newton_iterations, stats.factorizations, stats.smallest_step, stats.largest_step);
+  std::cout << fmt::format("  energy drift {:.3g} of the largest kinetic energy (rho_infinity {:.3g})\n",
+                           result.energy_drift, result.rho_infinity);
+  const auto& last = result.samples.back();
+  std::cout << fmt::format("  at the end: surface {}, bit {}, hook load {}, WOB {}\n",
+                           Show(c, last.surface_speed, Quantity::RotarySpeed), Show(c, last.bit_speed, Quantity::RotarySpeed),
+                           Show(c, last.hook_load, Quantity::Force), Show(c, last.weight_on_bit, Quantity::WeightOnBit));
+}
+
 int RunAnalyses(const CommandOptions& options, Requested requested) {
   const auto start = std::chrono::steady_clock::now();
   const io::Case c = io::ReadCase(options.case_path);
@@ -204,6 +253,26 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     PrintBuckling(c, result);
     io::AddBucklingResults(c, result, files);
   }
+  if (requested.transient) {
+    const analyses::TransientSettings settings = c.analyses.transient.value_or(analyses::TransientSettings{});
+    // The equilibrium already solved for the other analyses, when the start is that equilibrium.
+    const bool reuse_equilibrium = (requested.static_analysis || requested.modes || requested.vibration) &&
+                                   settings.start == analyses::TransientStart::Equilibrium &&
+                                   settings.initial_loads.empty();
+    analyses::StaticSettings static_settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
+    if (options.verbose) static_settings.log = [](const std::string& line) { std::cerr << line << '\n'; };
+    const VecX start_q = reuse_equilibrium
+                             ? equilibrium
+                             : analyses::TransientStartPositions(input, built, cache, settings, static_settings);
+    analyses::TransientResult result;
+    {
+      ProgressBar bar;
+      result = analyses::RunTransient(built, start_q, settings,
+                                      [&bar](double time, double duration) { bar.Update(time, duration); });
+    }
+    PrintTransient(c, result);
+    io::AddTransientResults(c, result, files);
+  }
   files.Commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << fmt::format("results written to {} ({:.3g} s)\n", files.directory(), seconds);
@@ -212,28 +281,20 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
 
 }  // namespace
 
-int RunStaticCommand(const CommandOptions& options) { return RunAnalyses(options, {true, false, false, false}); }
-int RunModesCommand(const CommandOptions& options) { return RunAnalyses(options, {false, true, false, false}); }
-int RunBucklingCommand(const CommandOptions& options) { return RunAnalyses(options, {false, false, true, false}); }
-int RunVibrationCommand(const CommandOptions& options) { return RunAnalyses(options, {false, false, false, true}); }
+int RunStaticCommand(const CommandOptions& options) { return RunAnalyses(options, {.static_analysis = true}); }
+int RunModesCommand(const CommandOptions& options) { return RunAnalyses(options, {.modes = true}); }
+int RunBucklingCommand(const CommandOptions& options) { return RunAnalyses(options, {.buckling = true}); }
+int RunVibrationCommand(const CommandOptions& options) { return RunAnalyses(options, {.vibration = true}); }
+int RunTransientCommand(const CommandOptions& options) { return RunAnalyses(options, {.transient = true}); }
 
 int RunCaseCommand(const CommandOptions& options) {
   const io::Case c = io::ReadCase(options.case_path);
   const auto& a = c.analyses;
-  std::vector<std::string> unavailable;
-  if (a.transient) unavailable.push_back("transient");
-  if (!unavailable.empty()) {
-    std::string list;
-    for (const auto& name : unavailable) list.append(list.empty() ? "" : ", ").append(name);
-    throw InputError({c.file, 0, 0}, "analyses",
-                     fmt::format("this version of drillflex cannot run: {}; remove them from 'analyses' "
-                                 "or run the others one by one (static, modes, vibration, buckling)", list));
-  }
-  if (!a.static_analysis && !a.modes && !a.buckling && !a.vibration) {
+  if (!a.static_analysis && !a.modes && !a.buckling && !a.vibration && !a.transient) {
     throw InputError({c.file, 0, 0}, "analyses", "the case lists no analyses to run");
   }
   return RunAnalyses(options, {a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value(),
-                               a.vibration.has_value()});
+                               a.vibration.has_value(), a.transient.has_value()});
 }
 
 }  // namespace drillflex::app

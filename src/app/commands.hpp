@@ -24,6 +24,7 @@ int RunStaticCommand(const CommandOptions& options);
 int RunModesCommand(const CommandOptions& options);
 int RunBucklingCommand(const CommandOptions& options);
 int RunVibrationCommand(const CommandOptions& options);
+int RunTransientCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);
 
 }  // namespace drillflex::app

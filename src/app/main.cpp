@@ -56,6 +56,8 @@ int main(int argc, char** argv) {
        drillflex::app::RunVibrationCommand, true},
       {"buckling", "Critical load multiplier of the case's loads (eigenproblem and frequency against load)",
        drillflex::app::RunBucklingCommand, true},
+      {"transient", "Time integration from the static equilibrium: transient.csv at the output interval",
+       drillflex::app::RunTransientCommand, true},
       {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true},
   };
 

@@ -99,11 +99,33 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
 
 analyses::TransientSettings ReadTransient(const YamlView& node) {
   node.ExpectMap("the transient settings {duration, output_interval, probes}");
-  node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step"});
+  node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step", "rho_infinity", "tolerance", "start",
+                      "initial_loads"});
   analyses::TransientSettings settings;
   settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
   settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
+  if (settings.duration / settings.output_interval > 1e7) {
+    node.Fail("more than 10 million output samples: use a larger output_interval");
+  }
   settings.time_step = node.OptionalPositive("time_step", Quantity::Time);
+  settings.rho_infinity = node.QuantityOr("rho_infinity", Quantity::Dimensionless, settings.rho_infinity);
+  if (!(settings.rho_infinity >= 0.0 && settings.rho_infinity <= 1.0)) {
+    node.Child("rho_infinity").Fail("expected a spectral radius between 0 and 1 (1: no numerical damping)");
+  }
+  settings.tolerance = node.OptionalPositive("tolerance", Quantity::Dimensionless).value_or(settings.tolerance);
+  if (settings.tolerance >= 0.1) node.Child("tolerance").Fail("expected a relative tolerance below 0.1");
+  if (const auto start = node.OptionalChild("start")) {
+    const std::string name = start->AsString();
+    if (name == "equilibrium") settings.start = analyses::TransientStart::Equilibrium;
+    else if (name == "reference") settings.start = analyses::TransientStart::Reference;
+    else start->Fail(fmt::format("expected 'equilibrium' or 'reference', got '{}'", name));
+  }
+  if (const auto loads = node.OptionalChild("initial_loads")) {
+    settings.initial_loads = ReadLoadsSection(*loads);
+    if (settings.start == analyses::TransientStart::Reference && !settings.initial_loads.empty()) {
+      loads->Fail("initial loads need the start from the equilibrium (start: equilibrium), not the reference");
+    }
+  }
   if (const auto probes = node.OptionalChild("probes")) {
     probes->ExpectSequence("probe distances from the bit");
     for (std::size_t i = 0; i < probes->size(); ++i) {

@@ -6,6 +6,7 @@
 #include "analyses/buckling_analysis.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
+#include "analyses/transient_analysis.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "io/case.hpp"
 #include "io/result_files.hpp"
@@ -27,6 +28,11 @@ void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, R
 // "vibration" (case-format.md: rpm, max_lateral_displacement, max_bending_stress, max_contact_force,
 // critical_rpm, safe_windows, ...) and vibration.csv (one row per RPM).
 void AddVibrationResults(const Case& c, const analyses::VibrationResult& result, ResultFiles& files);
+
+// "transient" (the integration's figures, the probes' places, the final state) and transient.csv (one
+// row per output sample: time, surface RPM and torque, hook load, bit RPM, WOB, TOB, energies, and
+// per probe the lateral displacement, whirl angle, contact force and bending moment).
+void AddTransientResults(const Case& c, const analyses::TransientResult& result, ResultFiles& files);
 
 // The field rule of thumb for the critical rotary speed of a tube span (validation.md V6):
 // 33,055 sqrt(OD² + ID²)/L² rpm (in, ft), for the longest component's OD and ID over the span

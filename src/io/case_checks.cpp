@@ -62,16 +62,20 @@ void CheckCaseConsistency(const Case& c, const YamlView& root) {
   for (std::size_t i = 0; i < c.supports.size(); ++i) {
     CheckOnString(c.supports[i].at, length, root.Child("supports").Item(i), "at", system);
   }
-  for (std::size_t i = 0; i < c.loads.size(); ++i) {
-    const model::Load& load = c.loads[i];
-    const YamlView item = root.Child("loads").Item(i);
-    if (load.distributed) {
-      CheckOnString(load.from, length, item, "from", system);
-      CheckOnString(load.to, length, item, "to", system);
-    } else {
-      CheckOnString(load.at, length, item, "at", system);
+  // Loads (the case's, or a transient's initial ones) listed at `list`.
+  auto check_loads = [&](const std::vector<model::Load>& loads, const YamlView& list) {
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+      const model::Load& load = loads[i];
+      const YamlView item = list.Item(i);
+      if (load.distributed) {
+        CheckOnString(load.from, length, item, "from", system);
+        CheckOnString(load.to, length, item, "to", system);
+      } else {
+        CheckOnString(load.at, length, item, "at", system);
+      }
     }
-  }
+  };
+  if (!c.loads.empty()) check_loads(c.loads, root.Child("loads"));
   if (c.analyses.vibration) {
     const auto& excitations = c.analyses.vibration->excitations;
     for (std::size_t i = 0; i < excitations.size(); ++i) {
@@ -83,6 +87,8 @@ void CheckCaseConsistency(const Case& c, const YamlView& root) {
   if (c.analyses.transient) {
     const auto& probes = c.analyses.transient->probes;
     const YamlView list = root.Child("analyses").Child("transient");
+    const auto& initial = c.analyses.transient->initial_loads;
+    if (!initial.empty()) check_loads(initial, list.Child("initial_loads"));
     for (std::size_t i = 0; i < probes.size(); ++i) {
       if (probes[i] < 0.0 || probes[i] > length * (1.0 + 1e-12)) {
         list.Child("probes").Item(i).Fail(fmt::format(

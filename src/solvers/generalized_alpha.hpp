@@ -15,9 +15,10 @@
 // β h² β'', S = K + γ/(β h) D + (1 − α_m)/((1 − α_f) β h²) M (Problem::IterationMatrix; the tangent
 // operator of the Lie-group increment is taken as the identity, as Brüls et al. do: it changes only
 // the convergence rate, O(h)). S is kept factorized across iterations and steps while Newton
-// converges fast (modified Newton); it is refactorized when an iteration contracts by less than
-// `reuse_contraction`, when Newton fails to converge with a stale matrix, or when h has changed by
-// more than `refactor_step_ratio`.
+// converges fast (modified Newton); it is refactorized at the current iterate when a correction is
+// more than `reuse_contraction` times the one before (slow, linear convergence), when Newton fails
+// with a matrix of an earlier step, or when h has changed by more than `refactor_step_ratio`.
+// Without reuse it is refactorized at every iterate (full Newton).
 //
 // Convergence and error are measured in a weighted RMS norm of position increments:
 // ‖x‖ = sqrt(mean((x_i / (atol + rtol · s_i))²)), s_i the largest |q_i − q_i(start)| so far

@@ -173,14 +173,47 @@ supports:
   - {at: 30, fix: [y, z]}
 )";
 
-TEST(Cli, RunRefusesAnalysesThisVersionCannotRunBeforeWritingAnything) {
-  const fs::path out = FreshDirectory("run-refused");
-  const fs::path path = WriteCase("run-refused", std::string(kCollarYaml) +
-                                                     "analyses:\n  static: {}\n  transient: {duration: 1 s}\n");
+// `transient` on the pinned collar released from a mid-span load: transient.csv with the contract's
+// columns and one row per sample, the transient block of results.json, and no progress bar when
+// standard error is not a terminal.
+TEST(Cli, TransientWritesTheTimeSeriesAndNoProgressBarOffATerminal) {
+  const fs::path out = FreshDirectory("transient");
+  const fs::path path = WriteCase("transient", std::string(kCollarYaml) + R"(analyses:
+  transient:
+    duration: 0.05 s
+    output_interval: 0.01 s
+    time_step: 1 ms
+    probes: [15]
+    initial_loads:
+      - {at: 15, force: [0, 0, 1000]}
+)");
+  const RunResult result = RunDrillflex("transient " + path.string() + " -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("transient: 0.05 s in 50 steps"));
+  EXPECT_THAT(result.output, ::testing::Not(HasSubstr("s left")));
+  std::ifstream csv(out / "transient.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("time,surface_rpm,surface_torque,hook_load,bit_rpm,wob,tob,", 0), 0u) << header;
+  EXPECT_THAT(header, HasSubstr("probe1_lateral_z,probe1_whirl_angle,probe1_contact_force,probe1_bending_moment"));
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 6);  // t = 0, 0.01, ..., 0.05
+  const nlohmann::json results = nlohmann::json::parse(std::ifstream(out / "results.json"));
+  EXPECT_EQ(results["transient"]["time_series"], "transient.csv");
+  EXPECT_EQ(results["transient"]["steps"], 50);
+  EXPECT_FALSE(results.contains("static"));
+}
+
+TEST(Cli, RunWithATransientRunsItAfterTheStatics) {
+  const fs::path out = FreshDirectory("run-transient");
+  const fs::path path = WriteCase("run-transient", std::string(kCollarYaml) +
+                                                       "analyses:\n  static: {}\n  transient: {duration: 0.01 s}\n");
   const RunResult result = RunDrillflex("run " + path.string() + " -o " + out.string());
-  EXPECT_EQ(result.status, 2) << result.output;
-  EXPECT_THAT(result.output, HasSubstr("transient"));
-  EXPECT_FALSE(fs::exists(out));
+  ASSERT_EQ(result.status, 0) << result.output;
+  const nlohmann::json results = nlohmann::json::parse(std::ifstream(out / "results.json"));
+  EXPECT_TRUE(results.contains("static"));
+  EXPECT_TRUE(results.contains("transient"));
 }
 
 TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {

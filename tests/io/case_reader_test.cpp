@@ -123,6 +123,33 @@ TEST(CaseReader, ReadsEveryKeyOfTheContractInSI) {
   EXPECT_FALSE(c.analyses.buckling);
 }
 
+TEST(CaseReader, TransientIntegratorKeysAndInitialLoads) {
+  const Case c = ParseCase(R"(string:
+  - {type: collar, od: 0.2, id: 0.07, length: 30}
+analyses:
+  transient:
+    duration: 2 s
+    output_interval: 5 ms
+    time_step: 1 ms
+    rho_infinity: 0.9
+    tolerance: 1e-6
+    initial_loads:
+      - {at: 30, force: [0, 0, 100]}
+)",
+                           "transient.yaml");
+  ASSERT_TRUE(c.analyses.transient);
+  const auto& t = *c.analyses.transient;
+  EXPECT_NEAR(t.output_interval, 5e-3, 1e-15);
+  ASSERT_TRUE(t.time_step);
+  EXPECT_NEAR(*t.time_step, 1e-3, 1e-15);
+  EXPECT_DOUBLE_EQ(t.rho_infinity, 0.9);
+  EXPECT_DOUBLE_EQ(t.tolerance, 1e-6);
+  EXPECT_EQ(t.start, analyses::TransientStart::Equilibrium);
+  ASSERT_EQ(t.initial_loads.size(), 1u);
+  EXPECT_NEAR(t.initial_loads[0].at, 30.0, 1e-12);  // SI case: m and N
+  EXPECT_NEAR(t.initial_loads[0].force.z(), 100.0, 1e-12);
+}
+
 TEST(CaseReader, DefaultsWithoutAWell) {
   const Case c = ParseCase(R"(
 string:
@@ -224,6 +251,13 @@ INSTANTIATE_TEST_SUITE_P(
         RejectedCase{"invalid yaml", "string: [\n  - {", 2, "", "not valid YAML"},
         RejectedCase{"bad mode kind", std::string(kGoodString) + "analyses:\n  modes: {kind: bending}\n", 4,
                      "analyses.modes.kind", "lateral"},
+        RejectedCase{"spectral radius above 1", std::string(kGoodString) + "analyses:\n  transient: {rho_infinity: 1.5}\n",
+                     4, "analyses.transient.rho_infinity", "between 0 and 1"},
+        RejectedCase{"bad transient start", std::string(kGoodString) + "analyses:\n  transient: {start: rest}\n", 4,
+                     "analyses.transient.start", "'equilibrium' or 'reference'"},
+        RejectedCase{"initial load off the string",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    initial_loads:\n      - {at: 45, force: [0, 1, 0]}\n",
+                     6, "analyses.transient.initial_loads[0].at", "off the string"},
         RejectedCase{"string longer than well", kWellHead + "  hole: 12.25\nstring:\n  - {type: pipe, od: 5, id: 4, length: 2000}\n",
                      8, "string", "longer than the well"}),
     [](const ::testing::TestParamInfo<RejectedCase>& info) {

@@ -1,0 +1,177 @@
+#include "analyses/transient_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "analyses/static_analysis.hpp"
+#include "analyses/string_stations.hpp"
+#include "analyses/wall_offsets.hpp"
+#include "core/error.hpp"
+#include "model/dynamic_problem.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+// What one probe reads: a string station and the wall contact element at its node (−1: none).
+struct Probe {
+  int station = 0;
+  int contact_element = -1;
+};
+
+int NearestStation(const std::vector<Station>& stations, double s) {
+  int best = 0;
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    if (std::abs(stations[i].s - s) < std::abs(stations[best].s - s)) best = static_cast<int>(i);
+  }
+  return best;
+}
+
+int ContactElementAt(const model::BuiltModel& built, const Station& station) {
+  const model::Body& body = built.system.bodies()[station.body];
+  for (const int index : built.contact_elements) {
+    const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
+    if (contact.bodies()[0] == &body && contact.node() == station.node) return index;
+  }
+  return -1;
+}
+
+// ω_x of a station's node about the string axis (string frame), rad/s.
+double SpinRate(const model::SystemModel& model, const std::vector<model::BodyPose>& poses, const VecX& v,
+                const Station& station) {
+  const model::Body& body = model.bodies()[station.body];
+  return MapToNode(body, poses[station.body], v, station.node).rotation.x();
+}
+
+// The direction of a lateral offset (y right, z high side) from the high side toward the right, [0, 2π).
+double HighSideAngle(double right, double high_side) {
+  const double angle = std::atan2(right, high_side);
+  const double wrapped = angle < 0.0 ? angle + 2.0 * kPi : angle;
+  return wrapped >= 2.0 * kPi ? 0.0 : wrapped;  // −0 and tiny negative angles round to 2π
+}
+
+TransientSample Sample(const model::BuiltModel& built, const std::vector<Station>& stations,
+                       const std::vector<Probe>& probes, double time, const VecX& q, const VecX& v) {
+  const model::SystemModel& model = built.system;
+  std::vector<StaticNodeResult> nodes = StaticNodeResults(model, q, 1.0);
+  AddWallOffsets(built, q, nodes);
+  const auto poses = model.Poses(q);
+  TransientSample sample;
+  sample.time = time;
+  const StaticNodeResult& bit = nodes.front();
+  const StaticNodeResult& top = nodes.back();
+  sample.surface_speed = SpinRate(model, poses, v, stations.back());
+  sample.bit_speed = SpinRate(model, poses, v, stations.front());
+  sample.surface_torque = top.torque;
+  sample.hook_load = top.axial_force;
+  sample.weight_on_bit = -bit.axial_force;
+  sample.torque_on_bit = bit.torque;
+  const model::Energies energies = model.ComputeEnergies(q, v, 1.0);
+  sample.kinetic_energy = energies.kinetic;
+  sample.potential_energy = energies.elastic + energies.potential;
+  for (const Probe& probe : probes) {
+    const StaticNodeResult& node = nodes[probe.station];
+    ProbeSample out;
+    out.lateral_y = node.displacement.y();
+    out.lateral_z = node.displacement.z();
+    out.whirl_angle = node.has_wall ? node.offset_high_side_angle : HighSideAngle(out.lateral_y, out.lateral_z);
+    out.bending_moment = node.bending_moment;
+    if (probe.contact_element >= 0) {
+      const auto& contact = static_cast<const model::WallContactElement&>(*model.elements()[probe.contact_element]);
+      const model::WallContactResult state = contact.Result(model.StateOf(contact, poses, v, time, 1.0));
+      out.contact_force = state.in_contact ? state.normal_force : 0.0;
+    }
+    sample.probes.push_back(out);
+  }
+  return sample;
+}
+
+// max |E(t) − E(0)| over the samples relative to the largest kinetic energy reached (the energy in
+// motion; the potential's zero is arbitrary under gravity). 0 when nothing moves.
+double EnergyDrift(const std::vector<TransientSample>& samples) {
+  double largest_kinetic = 0.0, largest_change = 0.0;
+  const double start = samples.front().kinetic_energy + samples.front().potential_energy;
+  for (const TransientSample& s : samples) {
+    largest_kinetic = std::max(largest_kinetic, s.kinetic_energy);
+    largest_change = std::max(largest_change, std::abs(s.kinetic_energy + s.potential_energy - start));
+  }
+  return largest_kinetic > 0.0 ? largest_change / largest_kinetic : 0.0;
+}
+
+}  // namespace
+
+solvers::GeneralizedAlphaOptions TransientIntegratorOptions(const TransientSettings& settings) {
+  solvers::GeneralizedAlphaOptions options;
+  options.rho_infinity = settings.rho_infinity;
+  options.relative_tolerance = settings.tolerance;
+  // The absolute part: the tolerance times 1 mm (or 1 mrad, or a modal coordinate of that size), so
+  // that one setting tightens both, and coordinates that barely move are not held to less.
+  options.absolute_tolerance = 1e-3 * settings.tolerance;
+  if (settings.time_step) {
+    options.adaptive = false;
+    options.initial_step = *settings.time_step;
+    options.min_step = std::min(options.min_step, 1e-6 * *settings.time_step);
+  } else {
+    options.initial_step = std::min(settings.output_interval, 1e-4);
+  }
+  return options;
+}
+
+VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,
+                             cms::ReductionCache& cache, const TransientSettings& settings,
+                             const StaticSettings& static_settings) {
+  if (settings.start == TransientStart::Reference) return built.system.ReferencePositions();
+  if (settings.initial_loads.empty()) return RunStaticInWell(input, built, cache, static_settings).q;
+  // The same string with the initial loads added: the same bodies, so the same coordinates.
+  model::ModelInput loaded = input;
+  loaded.loads.insert(loaded.loads.end(), settings.initial_loads.begin(), settings.initial_loads.end());
+  const model::BuiltModel start_model = model::BuildSystemModel(loaded, cache);
+  if (start_model.system.num_positions() != built.system.num_positions()) {
+    throw LogicError("transient: the model with the initial loads has other coordinates than the case's");
+  }
+  return RunStaticInWell(loaded, start_model, cache, static_settings).q;
+}
+
+TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, const TransientSettings& settings,
+                             const TransientProgress& progress) {
+  if (!(settings.duration > 0.0) || !(settings.output_interval > 0.0)) {
+    throw LogicError("RunTransient: the duration and the output interval must be positive");
+  }
+  const model::SystemModel& model = built.system;
+  const std::vector<Station> stations = StringStations(model);
+  TransientResult result;
+  std::vector<Probe> probes;
+  for (const double s : settings.probes) {
+    Probe probe;
+    probe.station = NearestStation(stations, s);
+    probe.contact_element = ContactElementAt(built, stations[probe.station]);
+    probes.push_back(probe);
+    result.probe_s.push_back(stations[probe.station].s);
+  }
+  const model::DynamicModelProblem problem(model);
+  const solvers::GeneralizedAlphaOptions options = TransientIntegratorOptions(settings);
+  solvers::GeneralizedAlphaIntegrator integrator(problem, options);
+  if (progress) {
+    integrator.on_step = [&](const solvers::GeneralizedAlphaState& s) { progress(s.time, settings.duration); };
+  }
+  integrator.Initialize(0.0, q0, VecX::Zero(model.num_velocities()));
+  result.samples.push_back(Sample(built, stations, probes, 0.0, q0, integrator.state().v));
+  // Sample times k·Δt, the last one the duration itself (a shorter last interval if need be).
+  const long intervals = std::max(1L, static_cast<long>(std::ceil(settings.duration / settings.output_interval - 1e-9)));
+  for (long k = 1; k <= intervals; ++k) {
+    const double time = k == intervals ? settings.duration : static_cast<double>(k) * settings.output_interval;
+    integrator.AdvanceTo(time);
+    const auto& state = integrator.state();
+    result.samples.push_back(Sample(built, stations, probes, time, state.q, state.v));
+  }
+  result.final_q = integrator.state().q;
+  result.final_v = integrator.state().v;
+  result.statistics = integrator.statistics();
+  result.energy_drift = EnergyDrift(result.samples);
+  result.rho_infinity = settings.rho_infinity;
+  return result;
+}
+
+}  // namespace drillflex::analyses

@@ -1,0 +1,82 @@
+// Transient dynamics (method.md §9.4): the full nonlinear model integrated in time by the
+// generalized-α method (solvers/generalized_alpha.hpp), from the static equilibrium (or the
+// undeformed placement), sampled every output_interval: the surface and bit quantities and, at each
+// probe, the lateral displacement, whirl angle, contact force and bending moment.
+//
+// Signals (SI; string frame x up-hole, y right, z high side; case-format.md "Frames and signs"):
+//  * surface / bit speed: the spin rate ω_x of the top / bit node about the string axis, rad/s;
+//  * surface torque, hook load: the torque and axial force (tension positive) in the string at its
+//    top node; WOB: the compression at the bit node (−axial force), TOB: the torque there
+//    (model/internal_forces.hpp, the elastic section forces at the state);
+//  * at a probe (the string station nearest the given distance from the bit): the lateral
+//    displacement (u_y, u_z) from the undeformed placement, which in a well is the hole's axis; the
+//    whirl angle, the direction of the offset from the hole axis (with a well, wall_offsets.hpp) or
+//    of (u_y, u_z), measured from the high side toward the right, in [0, 2π); the wall contact's
+//    normal force at the node at (q, v) (damping included; 0 without a contact); the bending
+//    moment magnitude;
+//  * the energies of SystemModel::ComputeEnergies (kinetic; strain plus force-element potential).
+// The drives of the issue (a top-drive ramp, bit–rock interaction) are not modelled yet: the case's
+// loads and supports act as they do in statics, constant in time.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "analyses/analysis_settings.hpp"
+#include "cms/reduction_cache.hpp"
+#include "core/types.hpp"
+#include "model/builder.hpp"
+#include "solvers/generalized_alpha.hpp"
+
+namespace drillflex::analyses {
+
+struct ProbeSample {
+  double lateral_y = 0.0;       // m, string frame (right)
+  double lateral_z = 0.0;       // m, string frame (high side)
+  double whirl_angle = 0.0;     // rad, from the high side toward the right, [0, 2π)
+  double contact_force = 0.0;   // N, wall normal force
+  double bending_moment = 0.0;  // N·m, magnitude
+};
+
+struct TransientSample {
+  double time = 0.0;            // s
+  double surface_speed = 0.0;   // rad/s
+  double surface_torque = 0.0;  // N·m
+  double hook_load = 0.0;       // N, tension at the top
+  double bit_speed = 0.0;       // rad/s
+  double weight_on_bit = 0.0;   // N, compression at the bit
+  double torque_on_bit = 0.0;   // N·m
+  double kinetic_energy = 0.0;    // J
+  double potential_energy = 0.0;  // J, strain energy plus the force elements'
+  std::vector<ProbeSample> probes;  // in the order of TransientSettings::probes
+};
+
+struct TransientResult {
+  std::vector<double> probe_s;          // m, the stations the probes read (nearest to the asked s)
+  std::vector<TransientSample> samples;  // t = 0, output_interval, ..., duration
+  VecX final_q, final_v;                 // the state at t = duration
+  double energy_drift = 0.0;   // max |E(t) − E(0)| / max(|E(0)|, max T), over the samples
+  solvers::GeneralizedAlphaStatistics statistics;
+  double rho_infinity = 0.8;
+};
+
+// Called after every accepted step with the time reached and the duration (s).
+using TransientProgress = std::function<void(double time, double duration)>;
+
+// The start state q: the static equilibrium of the case's model with `initial_loads` added (solved
+// by RunStaticInWell on a model built from `input` plus those loads, which has the same coordinates),
+// or the reference placement (start: reference). Throws SolverError when the statics fail.
+VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,
+                             cms::ReductionCache& cache, const TransientSettings& settings,
+                             const StaticSettings& static_settings);
+
+// Integrates `built` from (q0, v = 0) over settings.duration. Throws SolverError (with the time and
+// reason) when a step cannot be completed.
+TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, const TransientSettings& settings,
+                             const TransientProgress& progress = {});
+
+// The integrator options a TransientSettings asks for: fixed steps of time_step, or adaptive steps
+// (starting at min(output_interval, 1e-4 s)) at the relative tolerance.
+solvers::GeneralizedAlphaOptions TransientIntegratorOptions(const TransientSettings& settings);
+
+}  // namespace drillflex::analyses

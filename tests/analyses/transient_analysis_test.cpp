@@ -1,0 +1,107 @@
+// The transient analysis (analyses/transient_analysis.hpp) on the V1 cantilever with 2 bodies:
+// the start from the equilibrium under initial loads, the samples and their times, the probe
+// signals (lateral displacement, whirl angle, bending moment), the energy and a rest that stays rest.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analyses/transient_analysis.hpp"
+#include "analyses_test_support.hpp"
+#include "cms/reduction_cache.hpp"
+#include "core/error.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+using testing::ClampAt;
+using testing::PointLoad;
+
+model::ModelInput Cantilever() {
+  model::ModelInput input = testing::RodInput(2, 2.1e11, 7800.0);
+  input.settings.structural_damping = 0.0;
+  input.supports = {ClampAt(0.0)};
+  return input;
+}
+
+double TipDeflection(double force) {
+  return force * std::pow(testing::kRodLength, 3) / (3.0 * 2.1e11 * testing::RodSecondMoment());
+}
+
+TEST(TransientAnalysis, ReleasedCantileverSwingsThroughZeroWithItsEnergy) {
+  const model::ModelInput input = Cantilever();
+  cms::ReductionCache cache;
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  TransientSettings settings;
+  settings.duration = 0.25;  // about half a period of 1/2.1434 Hz
+  settings.output_interval = 0.01;
+  settings.time_step = 5e-4;
+  settings.rho_infinity = 1.0;
+  settings.tolerance = 1e-8;
+  settings.probes = {testing::kRodLength, 0.0};
+  settings.initial_loads = {PointLoad(testing::kRodLength, Vec3(0.0, 100.0, 0.0))};  // toward +y, right
+  const VecX start = TransientStartPositions(input, built, cache, settings, StaticSettings{});
+  const TransientResult result = RunTransient(built, start, settings);
+  ASSERT_EQ(result.samples.size(), 26u);
+  EXPECT_NEAR(result.samples.back().time, 0.25, 1e-12);
+  EXPECT_NEAR(result.samples[7].time, 0.07, 1e-12);
+  EXPECT_NEAR(result.probe_s[0], testing::kRodLength, 1e-9);
+  const ProbeSample& released = result.samples.front().probes[0];
+  // Released from P L³/(3EI) to the right: whirl angle 90° (high side 0°, right 90°).
+  EXPECT_NEAR(released.lateral_y, TipDeflection(100.0), 1e-3 * TipDeflection(100.0));
+  EXPECT_NEAR(released.lateral_z, 0.0, 1e-9);
+  EXPECT_NEAR(released.whirl_angle, kPi / 2.0, 1e-6);
+  // At the root the moment is P L at the start, and the tip swings through zero to the left
+  // (270°) by half a period (0.233 s).
+  EXPECT_NEAR(result.samples.front().probes[1].bending_moment, 100.0 * testing::kRodLength, 5e-3 * 508.0);
+  const ProbeSample& swung = result.samples.back().probes[0];
+  EXPECT_LT(swung.lateral_y, -0.9 * TipDeflection(100.0));
+  EXPECT_NEAR(swung.whirl_angle, 1.5 * kPi, 1e-3);
+  // Energy: the strain energy ½ P δ at the start, all kinetic near the quarter period (0.117 s).
+  const double swing = 0.5 * 100.0 * TipDeflection(100.0);
+  EXPECT_NEAR(result.samples.front().potential_energy, swing, 2e-3 * swing);
+  EXPECT_GT(result.samples[12].kinetic_energy, 0.95 * swing);
+  EXPECT_LT(result.energy_drift, 1e-5);
+  EXPECT_EQ(result.statistics.steps, 500);
+  // No drive and no spin: the surface and bit speeds stay zero.
+  EXPECT_NEAR(result.samples.back().surface_speed, 0.0, 1e-6);
+}
+
+TEST(TransientAnalysis, RestAtTheEquilibriumStaysAtRest) {
+  const model::ModelInput input = Cantilever();
+  cms::ReductionCache cache;
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  TransientSettings settings;
+  settings.duration = 0.05;
+  settings.output_interval = 0.02;  // samples at 0, 0.02, 0.04 and the duration 0.05
+  settings.start = TransientStart::Reference;
+  settings.probes = {2.0};
+  const TransientResult result =
+      RunTransient(built, TransientStartPositions(input, built, cache, settings, StaticSettings{}), settings);
+  ASSERT_EQ(result.samples.size(), 4u);
+  EXPECT_NEAR(result.samples.back().time, 0.05, 1e-15);
+  for (const TransientSample& sample : result.samples) {
+    EXPECT_LT(std::abs(sample.probes[0].lateral_y) + std::abs(sample.probes[0].lateral_z), 1e-12);
+    EXPECT_LT(sample.kinetic_energy, 1e-20);
+  }
+  EXPECT_LT((result.final_q - built.system.ReferencePositions()).norm(), 1e-12);
+}
+
+TEST(TransientAnalysis, IntegratorOptionsFollowTheSettings) {
+  TransientSettings settings;
+  settings.tolerance = 1e-6;
+  settings.output_interval = 0.5;
+  const solvers::GeneralizedAlphaOptions adaptive = TransientIntegratorOptions(settings);
+  EXPECT_TRUE(adaptive.adaptive);
+  EXPECT_DOUBLE_EQ(adaptive.initial_step, 1e-4);
+  EXPECT_DOUBLE_EQ(adaptive.relative_tolerance, 1e-6);
+  EXPECT_DOUBLE_EQ(adaptive.absolute_tolerance, 1e-9);
+  settings.time_step = 2e-3;
+  settings.rho_infinity = 0.5;
+  const solvers::GeneralizedAlphaOptions fixed = TransientIntegratorOptions(settings);
+  EXPECT_FALSE(fixed.adaptive);
+  EXPECT_DOUBLE_EQ(fixed.initial_step, 2e-3);
+  EXPECT_DOUBLE_EQ(fixed.rho_infinity, 0.5);
+}
+
+}  // namespace
+}  // namespace drillflex::analyses
