@@ -93,8 +93,38 @@ void RotateTranslationalRows(const Mat3& A, MatX& rows) { rows.topRows<3>() = A 
 }  // namespace
 
 VecX BodyInertialForces(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration) {
-  VecX forces = BodyMassMatrix(body, pose) * acceleration;
-  forces += BodyVelocityForces(body, pose, velocity);
+  // The node sum of the header without forming M: with the body-frame accelerations
+  // α = (Aᵀ r̈, ω̇, η̈), per node f_k = M_k (α_t + α_ω × u_k + Φ_k α_η + c_k) mapped by [I; ũ_k; Φ_kᵀ],
+  // and m_k = J_k (α_ω + Ψ_k α_η) + Ω_k × J_k Ω_k mapped by [0; I; Ψ_kᵀ]; then C α and the
+  // translational rows rotated by A (R_in = Wᵀ G). O(nodes · n_f) instead of O(nodes · n²).
+  const cms::ReducedBody& reduced = *body.reduced;
+  const int nf = body.flexible_count;
+  const Vec3 alpha_t = pose.A.transpose() * acceleration.head<3>();
+  const Vec3 alpha_w = acceleration.segment<3>(3);
+  const auto alpha_eta = acceleration.tail(nf);
+  const Vec3 omega = velocity.segment<3>(3);
+  const auto eta_rate = velocity.tail(nf);
+  VecX forces = VecX::Zero(6 + nf);
+  Vec3 translational_sum = Vec3::Zero();
+  for (int k = 0; k < reduced.node_count(); ++k) {
+    const Vec3 offset = pose.NodeOffset(body, k);
+    const auto& phi = reduced.node_translation_modes[k];
+    const auto& psi = reduced.node_rotation_modes[k];
+    const Vec3 elastic_rate = phi * eta_rate;
+    const Vec3 node_acceleration = alpha_t + alpha_w.cross(offset) + phi * alpha_eta +
+                                   omega.cross(omega.cross(offset)) + 2.0 * omega.cross(elastic_rate);
+    const Vec3 force = reduced.NodeTranslationalMass(k) * node_acceleration;
+    translational_sum += force;
+    const Mat3& inertia = reduced.node_rotary_inertia[k];
+    const Vec3 node_omega = omega + psi * eta_rate;
+    const Vec3 moment = inertia * (alpha_w + psi * alpha_eta) + node_omega.cross(inertia * node_omega);
+    forces.segment<3>(3) += offset.cross(force) + moment;
+    forces.tail(nf).noalias() += phi.transpose() * force + psi.transpose() * moment;
+  }
+  VecX body_frame_acceleration(6 + nf);
+  body_frame_acceleration << alpha_t, alpha_w, alpha_eta;
+  forces.noalias() += body.mass_correction * body_frame_acceleration;
+  forces.head<3>() = pose.A * (translational_sum + forces.head<3>());
   return forces;
 }
 

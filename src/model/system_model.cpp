@@ -104,8 +104,7 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
     const int n = body.velocity_count();
     VecX local = VecX::Zero(n);
     const VecX velocity = v.segment(body.v_offset, n);
-    if (accelerating) local.noalias() += BodyMassMatrix(body, poses[b]) * a.segment(body.v_offset, n);
-    if (moving) local += BodyVelocityForces(body, poses[b], velocity);
+    if (accelerating || moving) local += BodyInertialForces(body, poses[b], velocity, a.segment(body.v_offset, n));
     AddElasticForces(body, poses[b], velocity, local);
     residual.segment(body.v_offset, n) += local;
   }

@@ -196,6 +196,25 @@ TEST_P(InertiaJacobianTest, AccelerationAndVelocityPartsSeparately) {
   EXPECT_EQ(at_rest.norm(), 0.0);
 }
 
+// BodyInertialForces sums the nodes' inertial forces without forming M(q): it must equal
+// M(q) a + Q_v(q, v) from BodyMassMatrix and BodyVelocityForces to round-off.
+TEST_P(InertiaJacobianTest, NodeSumEqualsMassMatrixTimesAccelerationPlusVelocityForces) {
+  cms::ReductionCache cache;
+  const BuiltModel built = BuildSystemModel(VariantInput(GetParam(), 3), cache);
+  const SystemModel model = BodiesWithLateralMass(built.system, GetParam().lateral_mass);
+  std::mt19937 rng(29);
+  for (int trial = 0; trial < 3; ++trial) {
+    const RandomState s = MakeRandomState(model, rng, StateSizes{});
+    for (const Body& body : model.bodies()) {
+      const int n = body.velocity_count();
+      const BodyPose pose = PoseOf(body, s.q);
+      const VecX v = s.v.segment(body.v_offset, n), a = s.a.segment(body.v_offset, n);
+      const VecX expected = BodyMassMatrix(body, pose) * a + BodyVelocityForces(body, pose, v);
+      EXPECT_LT((BodyInertialForces(body, pose, v, a) - expected).norm(), 1e-12 * expected.norm());
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Model, InertiaJacobianTest,
                          ::testing::Values(MassVariant{"consistent", MassKind::Consistent, 0.0},
                                            MassVariant{"lumped", MassKind::Lumped, 0.0},
