@@ -8,6 +8,7 @@
 #include "cms/reduced_body.hpp"
 #include "core/error.hpp"
 #include "core/so3.hpp"
+#include "model/contact_circles.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
@@ -153,36 +154,47 @@ double BuoyedWeightPerLength(const Body& body, const ModelInput& input) {
   return input.gravity * mass_per_length;
 }
 
-// The contact diameter at a distance s from the bit: the blade OD over a stabilizer's blades
-// (centred on the stabilizer when their length is given, else over all of it), the tool-joint OD
-// within half a joint length of a pipe connection, the body OD elsewhere. At a connection the
-// lower component's, except on top of the bit, where it is the upper one's.
-double ContactDiameterAt(const StringConfig& string, double s) {
+// The component at a distance s from the bit; at a connection the lower one, except on top of
+// the bit, where it is the upper one (the bit's gauge is at its bottom, where its support holds it
+// at the hole centre: a full-gauge contact at its top would be a false fulcrum).
+const Component& ComponentAt(const StringConfig& string, double s) {
   double start = 0.0;
   for (const Component& component : string.components) {
     const double span = component.length * component.count;
-    // At the top of the bit the component above touches: the bit's gauge is at its bottom, where
-    // its support holds it at the hole centre (a full-gauge contact there would be a false fulcrum).
     const bool above_bit = component.type == ComponentType::Bit && s >= start + span - 1e-9;
     if (s > start + span + 1e-9 || (above_bit && &component != &string.components.back())) {
       start += span;
       continue;
     }
-    const double local = std::clamp(s - start, 0.0, span);
-    const double within_item = std::fmod(local, component.length);
-    if (component.blade_diameter) {
-      const double blades = component.blade_length.value_or(component.length);
-      if (std::abs(within_item - 0.5 * component.length) <= 0.5 * blades + 1e-9) return *component.blade_diameter;
-    }
-    if (component.joint_diameter) {
-      const double spacing = component.joint_spacing.value_or(std::min(kDefaultJointSpacing, component.length));
-      const double half_joint = 0.5 * component.joint_length.value_or(kDefaultJointLength);
-      const double to_connection = std::fmod(local, spacing);
-      if (std::min(to_connection, spacing - to_connection) <= half_joint + 1e-9) return *component.joint_diameter;
-    }
-    return component.outer_diameter;
+    return component;
   }
-  return string.components.back().outer_diameter;
+  return string.components.back();
+}
+
+// The contact diameter at a distance s from the bit: the blade OD over a stabilizer's blades
+// (centred on the stabilizer when their length is given, else over all of it), the tool-joint OD
+// within half a joint length of a pipe connection, the body OD elsewhere (ComponentAt).
+double ContactDiameterAt(const StringConfig& string, double s) {
+  const Component& component = ComponentAt(string, s);
+  double start = 0.0;
+  for (const Component& c : string.components) {
+    if (&c == &component) break;
+    start += c.length * c.count;
+  }
+  const double span = component.length * component.count;
+  const double local = std::clamp(s - start, 0.0, span);
+  const double within_item = std::fmod(local, component.length);
+  if (component.blade_diameter) {
+    const double blades = component.blade_length.value_or(component.length);
+    if (std::abs(within_item - 0.5 * component.length) <= 0.5 * blades + 1e-9) return *component.blade_diameter;
+  }
+  if (component.joint_diameter) {
+    const double spacing = component.joint_spacing.value_or(std::min(kDefaultJointSpacing, component.length));
+    const double half_joint = 0.5 * component.joint_length.value_or(kDefaultJointLength);
+    const double to_connection = std::fmod(local, spacing);
+    if (std::min(to_connection, spacing - to_connection) <= half_joint + 1e-9) return *component.joint_diameter;
+  }
+  return component.outer_diameter;
 }
 
 Vec6 SectionCouplingStiffness(const Body& body, double factor) {
@@ -254,32 +266,40 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
                                                         SpringDamping(stiffness, ElementInertia(body))));
   }
 
-  // Wall contact at every node (a joint once, on the upper body's start node), with the diameter
-  // of the component there.
+  // Wall contact at every node (a joint once, on the upper body's start node): tool joints and
+  // blades as point contacts, each circle as stiff as the string length it stands for
+  // (model/contact_circles.hpp).
   std::vector<int> contact_elements;
   if (input.trajectory && !input.hole.empty()) {
     auto wellbore = std::make_shared<const Wellbore>(Wellbore{*input.trajectory, well::HoleProfile(input.hole)});
-    const ContactSettings& contact = input.settings.contact;
+    struct ContactNode { const Body* body; int node; double s; };
+    std::vector<ContactNode> nodes;
     for (std::size_t b = 0; b < placed.size(); ++b) {
       const Body& body = placed[b];
-      const bool top_body = b + 1 == placed.size();
-      const double node_mass = ElementInertia(body)[0];
+      // The bit cuts the hole it sits in (its support holds it at the hole centre): no contact.
+      if (input.string.components[body.component].type == ComponentType::Bit) continue;
       for (int k = 0; k < body.node_count(); ++k) {
-        if (k == body.node_count() - 1 && !top_body) continue;  // the next body's node 0 carries it
-        // The bit cuts the hole it sits in (its support holds it at the hole centre): no contact.
-        if (input.string.components[body.component].type == ComponentType::Bit) continue;
-        const double s = body.s_start + body.reduced->node_positions[k].x();
-        WallContactParameters parameters;
-        parameters.contact_radius = 0.5 * ContactDiameterAt(input.string, s);
-        parameters.normal_stiffness = contact.stiffness;
-        parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(contact.stiffness * node_mass);
-        parameters.tangential_friction = contact.friction;
-        parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
-        parameters.regularization_velocity = kFrictionRegularizationVelocity;
-        parameters.prescribed_sliding = input.static_sliding;
-        contact_elements.push_back(static_cast<int>(elements.size()));
-        elements.push_back(std::make_unique<WallContactElement>(&body, k, wellbore, parameters, input.bit_md - s));
+        if (k == body.node_count() - 1 && b + 1 != placed.size()) continue;  // the next body's node 0 carries it
+        nodes.push_back({&body, k, body.s_start + body.reduced->node_positions[k].x()});
       }
+    }
+    std::vector<double> positions;
+    for (const ContactNode& node : nodes) positions.push_back(node.s);
+    const std::vector<ContactCircle> circles = ContactCircles(input.string, positions);
+    const ContactSettings& contact = input.settings.contact;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const auto [body, k, s] = nodes[i];
+      const double stiffness = contact.stiffness * circles[i].length;  // N/m per metre × m
+      WallContactParameters parameters;
+      parameters.contact_radius = 0.5 * circles[i].diameter;
+      parameters.normal_stiffness = stiffness;
+      parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(stiffness * ElementInertia(*body)[0]);
+      parameters.tangential_friction = contact.friction;
+      parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
+      parameters.regularization_velocity = kFrictionRegularizationVelocity;
+      parameters.prescribed_sliding = input.static_sliding;
+      contact_elements.push_back(static_cast<int>(elements.size()));
+      elements.push_back(std::make_unique<WallContactElement>(body, k, wellbore, parameters, input.bit_md - s));
     }
   }
 

@@ -50,7 +50,12 @@ Vec6 SectionCouplingStiffness(const Body& body, double factor);
 // Buoyed weight per length of a body's section, N/m (method.md §7): g (ρ_s A − ρ_f A_o + ρ_f,i A_i).
 double BuoyedWeightPerLength(const Body& body, const ModelInput& input);
 
-// The diameter that touches the wall at a distance s (m) from the bit: blade, tool joint or body.
+// The component at a distance s (m) from the bit: at a connection the lower one, except on top of
+// the bit (the upper one).
+const Component& ComponentAt(const StringConfig& string, double s);
+
+// The diameter that touches the wall at a distance s (m) from the bit: blade, tool joint or body
+// (the geometry; the contact circles of the model are model/contact_circles.hpp).
 double ContactDiameterAt(const StringConfig& string, double s);
 
 // The built-in relative rotation of the coupling at `s` (m from the bit): a motor's bent housing

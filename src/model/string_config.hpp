@@ -64,7 +64,9 @@ struct FluidConfig {
 };
 
 struct ContactSettings {
-  double stiffness = 1.0e8;      // N/m
+  // The wall's stiffness per metre of string in contact, N/m per m: a contact circle standing for
+  // a length l of string (model/contact_lengths.hpp) has k_n = stiffness × l.
+  double stiffness = 1.0e8;
   double damping_ratio = 0.1;
   double friction = 0.25;        // tangential (rotating) Coulomb coefficient
   std::optional<double> axial_friction;  // sliding along the hole, default = friction

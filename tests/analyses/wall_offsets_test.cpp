@@ -5,6 +5,8 @@
 // contact law, the bit's build force against beam theory of a pendulum (a uniform string).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 
@@ -22,7 +24,7 @@ constexpr double kPipeOd = 0.127, kPipeId = 0.1086;  // m
 constexpr double kBitOd = kHoleDiameter, kBitId = 0.18;  // m: the bit fills the hole (thin-walled: moderate EI)
 constexpr double kBitLength = 1.0, kPipeLength = 30.0;  // m
 constexpr double kBitMd = 200.0;                // m
-constexpr double kContactStiffness = 1e8;       // N/m
+constexpr double kContactStiffness = 1e8;       // N/m per metre of pipe
 constexpr double kInclination = 90.0 * kDegree, kAzimuth = 30.0 * kDegree;
 
 // A 1 m bit (OD × ID) under 30 m of pipe (11 bodies × 10 elements) at MD 200 m of a straight
@@ -136,6 +138,17 @@ TEST(WallOffsets, MatchTheDisplacementInAStraightHole) {
 
 // A node pressed into the wall carries N = k_n δ (no damping at rest), so its clearance is −N/k_n;
 // every node the contact reports leave out is off the wall (clearance ≥ 0).
+// The spacing of the contact nodes around s (m): half-way to the neighbours on each side.
+double NodeSpacingAt(const Solved& solved, double s) {
+  std::vector<double> positions;
+  for (const auto& node : solved.result.nodes) {
+    if (node.wall_contact) positions.push_back(node.s);
+  }
+  const auto it = std::find_if(positions.begin(), positions.end(), [s](double p) { return std::abs(p - s) < 1e-9; });
+  if (it == positions.end() || it == positions.begin() || it + 1 == positions.end()) return 0.0;
+  return 0.5 * (*(it + 1) - *(it - 1));
+}
+
 TEST(WallOffsets, ClearanceOfAPressedNodeIsMinusForceOverStiffness) {
   const Solved& s = HorizontalHole();
   ASSERT_FALSE(s.result.contacts.empty());
@@ -153,7 +166,8 @@ TEST(WallOffsets, ClearanceOfAPressedNodeIsMinusForceOverStiffness) {
       continue;
     }
     ++pressed;
-    const double expected = -report->normal_force / kContactStiffness;
+    // The wall's stiffness per metre × the length of pipe the node stands for (its node spacing).
+    const double expected = -report->normal_force / (kContactStiffness * NodeSpacingAt(s, node.s));
     EXPECT_LT(node.clearance, 0.0) << node.s;
     EXPECT_NEAR(node.clearance / expected, 1.0, 1e-6) << node.s;
     worst = std::max(worst, std::abs(node.clearance / expected - 1.0));
