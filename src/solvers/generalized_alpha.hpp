@@ -24,9 +24,10 @@
 // ‖x‖ = sqrt(mean((x_i / (atol + rtol · s_i))²)), s_i the largest |q_i − q_i(start)| so far
 // (accumulated in the tangent space), capped at position_scale (so that a body spinning thousands
 // of radians is still integrated to rtol · 1 rad, not rtol times its total turn). Newton stops when
-// a correction is below newton_tolerance in this norm, or, from the second iteration on, when it
-// times θ/(1 − θ) of this step's measured contraction θ is (Hairer & Wanner, "Solving ODEs II",
-// §IV.8); a correction that stops shrinking below a tenth of the norm is taken as round-off.
+// a correction times θ/(1 − θ) is below newton_tolerance in this norm, θ the contraction measured
+// in this step (Hairer & Wanner, "Solving ODEs II", §IV.8); at the first iteration θ is the last
+// step's, inflated, when ρ∞ < 1 and the matrix is the same (else the correction itself must be
+// below the tolerance); a correction that stops shrinking below a tenth of the norm is round-off.
 // The local error estimate is Zienkiewicz & Xie's (Earthquake Eng.
 // Struct. Dyn. 20, 1991) for Newmark-type schemes, e = (β − 1/6) h² (a_{n+1} − a_n); adaptive steps
 // accept e ≤ 1 and take h ← h · clamp(0.9 e^(−1/3), 0.2, 2). A step whose Newton iterations fail
