@@ -71,6 +71,7 @@ void GeneralizedAlphaIntegrator::Initialize(const GeneralizedAlphaState& state) 
   state_ = state;
   accumulated_ = VecX::Zero(n);
   scale_ = VecX::Zero(n);
+  UpdateWeights();
   has_factorization_ = false;
   contraction_ = 1.0;
   previous_acceleration_.resize(0);
@@ -79,9 +80,11 @@ void GeneralizedAlphaIntegrator::Initialize(const GeneralizedAlphaState& state) 
 
 double GeneralizedAlphaIntegrator::WeightedNorm(const VecX& increment) const {
   if (increment.size() == 0) return 0.0;
-  const VecX weights =
-      (options_.absolute_tolerance + options_.relative_tolerance * scale_.array()).inverse().matrix();
-  return std::sqrt(increment.cwiseProduct(weights).squaredNorm() / static_cast<double>(increment.size()));
+  return std::sqrt(increment.cwiseProduct(weights_).squaredNorm() / static_cast<double>(increment.size()));
+}
+
+void GeneralizedAlphaIntegrator::UpdateWeights() {
+  weights_ = (options_.absolute_tolerance + options_.relative_tolerance * scale_.array()).inverse().matrix();
 }
 
 void GeneralizedAlphaIntegrator::PrepareStep(double h) {
@@ -250,6 +253,7 @@ void GeneralizedAlphaIntegrator::AcceptStep(double h) {
   std::swap(state_.pseudo_acceleration, trial_pseudo_);
   accumulated_ += increment_;
   scale_ = scale_.cwiseMax(accumulated_.cwiseAbs().cwiseMin(options_.position_scale));
+  UpdateWeights();
   state_.last_step = h;
   ++statistics_.steps;
   statistics_.smallest_step = std::min(statistics_.smallest_step, h);

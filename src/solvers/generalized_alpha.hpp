@@ -134,6 +134,7 @@ class GeneralizedAlphaIntegrator {
   void UpdateStepState(double h);
   bool Factorize(double h, std::string& reason);
   double WeightedNorm(const VecX& increment) const;
+  void UpdateWeights();  // weights_ from scale_
   double StepErrorEstimate(double h) const;
   void AcceptStep(double h);
 
@@ -155,7 +156,8 @@ class GeneralizedAlphaIntegrator {
   VecX step_pseudo_;  // a_n rescaled to the step being tried (PrepareStep)
   VecX previous_acceleration_;
   double contraction_ = 1.0;  // θ/(1 − θ) of the last converged Newton solve (Iterate)  // v̇_{n−1}, for the predictor (empty at a start)
-  VecX accumulated_, scale_;  // Σ increments since the start, and its running largest |·|
+  VecX accumulated_, scale_;
+  VecX weights_;  // 1/(atol + rtol s_i) of the error norm  // Σ increments since the start, and its running largest |·|
 };
 
 }  // namespace drillflex::solvers
