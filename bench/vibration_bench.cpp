@@ -9,7 +9,9 @@
 // 17 370 coordinates) under 10 s. The fluid of both cases is viscous (frequency-dependent annulus).
 // The 3 km string's static solve does not converge yet (docs/validation.md, "Static speed"): its
 // sweep is timed about the reference placement on the well's centreline (no contact closed), which
-// costs the same per frequency (the pattern and size do not depend on the state).
+// costs the same per frequency (the pattern and size do not depend on the state). The default
+// method is the reduced sweep (solvers/projected_harmonic.hpp); BM_Example_Sweep_Direct times the
+// full sparse solve at every frequency on the same case. OMP_NUM_THREADS sets the threads.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -21,6 +23,7 @@
 #include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
 #include "io/model_input.hpp"
+#include "vibration_sweep.hpp"
 
 namespace {
 
@@ -34,32 +37,8 @@ double PeakMemoryMb() {
 
 std::string SourcePath(const char* relative) { return std::string(DRILLFLEX_SOURCE_DIR) + "/" + relative; }
 
-analyses::VibrationSettings ThreeExcitations() {
-  constexpr double kRpm = kPi / 30.0, kFoot = 0.3048, kLbf = 4.4482216152605;
-  analyses::VibrationSettings settings;
-  settings.rpm_from = 20.0 * kRpm;
-  settings.rpm_to = 250.0 * kRpm;
-  settings.rpm_step = 1.0 * kRpm;
-  analyses::Excitation imbalance;
-  imbalance.type = analyses::ExcitationType::Imbalance;
-  imbalance.at = 40.0 * kFoot;
-  imbalance.imbalance = 0.02;
-  analyses::Excitation bit;
-  bit.type = analyses::ExcitationType::Bit;
-  bit.harmonic = 3;
-  bit.lateral = 500.0 * kLbf;
-  bit.axial = 1000.0 * kLbf;
-  analyses::Excitation motor;
-  motor.type = analyses::ExcitationType::Motor;
-  motor.lobes = 5;
-  motor.motor_speed = 150.0 * kRpm;
-  motor.lateral = 200.0 * kLbf;
-  motor.at = 20.0 * kFoot;
-  settings.excitations = {imbalance, bit, motor};
-  return settings;
-}
-
-void Sweep(benchmark::State& state, const std::string& path, bool static_equilibrium) {
+void Sweep(benchmark::State& state, const std::string& path, bool static_equilibrium,
+           analyses::VibrationMethod method = analyses::VibrationMethod::Reduced) {
   const io::Case c = io::ReadCase(path);
   cms::ReductionCache cache;
   const model::ModelInput input = io::MakeModelInput(c);
@@ -74,7 +53,7 @@ void Sweep(benchmark::State& state, const std::string& path, bool static_equilib
       return;
     }
   }
-  const analyses::VibrationSettings settings = ThreeExcitations();
+  const analyses::VibrationSettings settings = bench::ThreeExcitationSweep(method);
   analyses::VibrationResult result;
   for (auto _ : state) {
     result = analyses::RunVibration(built, input, fluid, q, settings);
@@ -85,12 +64,19 @@ void Sweep(benchmark::State& state, const std::string& path, bool static_equilib
   state.counters["closed_contacts"] = result.closed_contacts;
   state.counters["critical_rpms"] = static_cast<double>(result.critical_rpm.size());
   state.counters["peak_MB"] = PeakMemoryMb();
+  state.counters["basis_size"] = result.basis_size;
 }
 
 void BM_Example_Sweep(benchmark::State& state) { Sweep(state, SourcePath("examples/rotary-bha-build/case.yaml"), true); }
 void BM_ThreeKm3D_Sweep(benchmark::State& state) { Sweep(state, SourcePath("bench/cases/three-km-3d.yaml"), false); }
 
+// The reference: a sparse LU of the full system at every frequency (analyses.vibration.method: direct).
+void BM_Example_Sweep_Direct(benchmark::State& state) {
+  Sweep(state, SourcePath("examples/rotary-bha-build/case.yaml"), true, analyses::VibrationMethod::Direct);
+}
+
 BENCHMARK(BM_Example_Sweep)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_Example_Sweep_Direct)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_ThreeKm3D_Sweep)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

@@ -40,7 +40,17 @@ struct Excitation {
   int source_line = 0;
 };
 
+// How the sweep solves (K − ω²M(ω) + iωD(ω)) X = F (analyses/vibration_analysis.hpp): projected on a
+// basis of the response to its loads over the band (solvers/projected_harmonic.hpp), or on the
+// full sparse system at every frequency (the reference).
+enum class VibrationMethod { Reduced, Direct };
+
 struct VibrationSettings {
+  VibrationMethod method = VibrationMethod::Reduced;
+  // Reduced: the basis's expansion frequencies over the excitation band and block steps at each
+  // (solvers::KrylovBasisOptions).
+  int basis_shifts = 20;
+  int basis_depth = 2;
   double rpm_from = 20.0 * kPi / 30.0;   // rad/s
   double rpm_to = 250.0 * kPi / 30.0;    // rad/s
   double rpm_step = 1.0 * kPi / 30.0;    // rad/s

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "core/error.hpp"
@@ -131,14 +132,45 @@ void SetFrequencyAndDamping(const model::SystemModel& model, const VecX& q, cons
   }
 }
 
-// The `rigid` eigenvalues of smallest |ω²| are the rigid-body modes.
-std::vector<bool> RigidFlags(const VecX& eigenvalues, int rigid) {
-  std::vector<Eigen::Index> order(eigenvalues.size());
-  for (Eigen::Index i = 0; i < eigenvalues.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](Eigen::Index a, Eigen::Index b) { return std::abs(eigenvalues[a]) < std::abs(eigenvalues[b]); });
-  std::vector<bool> flags(eigenvalues.size(), false);
-  for (int i = 0; i < rigid && i < static_cast<int>(order.size()); ++i) flags[order[i]] = true;
+// The rigid motions of the whole string at q as columns (t_x, t_y, t_z, θ_x, θ_y, θ_z): translation t
+// and rotation θ about the centroid c, ṙ_b = t + θ × (r_b − c), ω_b = A_bᵀ θ, η̇ = 0.
+MatX RigidFields(const model::SystemModel& model, const VecX& q) {
+  const auto poses = model.Poses(q);
+  Vec3 centroid = Vec3::Zero();
+  for (const model::BodyPose& pose : poses) centroid += pose.r;
+  if (!poses.empty()) centroid /= static_cast<double>(poses.size());
+  MatX fields = MatX::Zero(model.num_velocities(), 6);
+  for (std::size_t b = 0; b < poses.size(); ++b) {
+    const int offset = model.bodies()[b].v_offset;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Vec3 unit = Vec3::Unit(axis);
+      fields.block<3, 1>(offset, axis) = unit;
+      fields.block<3, 1>(offset, 3 + axis) = unit.cross(poses[b].r - centroid);
+      fields.block<3, 1>(offset + 3, 3 + axis) = poses[b].A.transpose() * unit;
+    }
+  }
+  return fields;
+}
+
+// Of the computed modes, the (at most `rigid`) ones that are rigid motions: at least 90 % of the
+// mode's M-norm in the span of the rigid fields F, φᵀMF (FᵀMF)⁻¹ FᵀMφ ≥ 0.9 (φ M-normalised). Not
+// simply the `rigid` lowest |ω²|: when the free rigid motion is not among the modes computed, that
+// flagged an elastic mode (the bundled example's 1.86 Hz mode was reported as a 0 Hz rigid one).
+std::vector<bool> RigidFlags(const solvers::ModalResult& modal, const MatX& fields, const SparseMat& mass, int rigid) {
+  std::vector<bool> flags(static_cast<std::size_t>(modal.eigenvalues.size()), false);
+  if (rigid == 0) return flags;
+  const MatX mass_fields = mass * fields;
+  const Eigen::LDLT<MatX> field_mass(fields.transpose() * mass_fields);
+  std::vector<std::pair<double, Eigen::Index>> fractions;
+  for (Eigen::Index j = 0; j < modal.eigenvalues.size(); ++j) {
+    const VecX overlap = mass_fields.transpose() * modal.vectors.col(j);
+    const double fraction = overlap.dot(field_mass.solve(overlap));
+    if (fraction >= 0.9) fractions.emplace_back(fraction, j);
+  }
+  std::sort(fractions.rbegin(), fractions.rend());
+  for (std::size_t i = 0; i < fractions.size() && static_cast<int>(i) < rigid; ++i) {
+    flags[static_cast<std::size_t>(fractions[i].second)] = true;
+  }
   return flags;
 }
 
@@ -154,7 +186,7 @@ ModesResult SearchModes(const model::SystemModel& model, const VecX& q, const st
   if (all) solve_count = std::min(n, settings.count + rigid);
   while (true) {
     const solvers::ModalResult modal = LowestModes(solved, solve_count);
-    const std::vector<bool> rigid_flags = RigidFlags(modal.eigenvalues, rigid);
+    const std::vector<bool> rigid_flags = RigidFlags(modal, RigidFields(model, q), solved.mass, rigid);
     result.modes.clear();
     result.rigid_body_modes = 0;
     for (Eigen::Index j = 0; j < modal.eigenvalues.size(); ++j) {
@@ -222,20 +254,7 @@ std::optional<ModesResult> FamilyModesWithLateralHeld(const model::SystemModel& 
 }  // namespace
 
 int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system) {
-  const auto poses = model.Poses(q);
-  Vec3 centroid = Vec3::Zero();
-  for (const model::BodyPose& pose : poses) centroid += pose.r;
-  if (!poses.empty()) centroid /= static_cast<double>(poses.size());
-  MatX fields = MatX::Zero(model.num_velocities(), 6);  // columns: t_x, t_y, t_z, θ_x, θ_y, θ_z
-  for (std::size_t b = 0; b < poses.size(); ++b) {
-    const int offset = model.bodies()[b].v_offset;
-    for (int axis = 0; axis < 3; ++axis) {
-      const Vec3 unit = Vec3::Unit(axis);
-      fields.block<3, 1>(offset, axis) = unit;
-      fields.block<3, 1>(offset, 3 + axis) = unit.cross(poses[b].r - centroid);
-      fields.block<3, 1>(offset + 3, 3 + axis) = poses[b].A.transpose() * unit;
-    }
-  }
+  const MatX fields = RigidFields(model, q);
   const MatX stiffness = fields.transpose() * (system.stiffness * fields);
   const MatX mass = fields.transpose() * (system.mass * fields);
   Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(0.5 * (stiffness + stiffness.transpose()),
@@ -305,7 +324,21 @@ ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const M
   for (ModeResult& mode : result.modes) SetFrequencyAndDamping(model, q, system, fluid, mode);
   std::stable_sort(result.modes.begin(), result.modes.end(),
                    [](const ModeResult& a, const ModeResult& b) { return a.eigenvalue < b.eigenvalue; });
+  result.near_zero_modes = result.negative_stiffness_modes = 0;
+  for (ModeResult& mode : result.modes) {
+    mode.negative_stiffness = !mode.rigid_body && mode.eigenvalue < 0.0;
+    mode.near_zero = mode.rigid_body || (!mode.negative_stiffness && mode.frequency_hz < kNearZeroFrequencyHz);
+    if (mode.near_zero) ++result.near_zero_modes;
+    if (mode.negative_stiffness) ++result.negative_stiffness_modes;
+  }
   return result;
+}
+
+const ModeResult* FirstLateralMode(const ModesResult& result) {
+  for (const ModeResult& mode : result.modes) {
+    if (!mode.near_zero && !mode.negative_stiffness && mode.kind == ModeKind::Lateral) return &mode;
+  }
+  return nullptr;
 }
 
 ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesSettings& settings,

@@ -28,6 +28,13 @@ struct ModeResult {
   // Kinetic-energy fractions (sum 1): translation along the string axis, rotation about it, rest.
   double axial_fraction = 0.0, torsional_fraction = 0.0, lateral_fraction = 0.0;
   bool rigid_body = false;       // one of the CountRigidBodyModes lowest |ω²| (unsupported directions)
+  // ω² < 0 (reported with frequency 0): the linearized stiffness is negative along the mode. At a
+  // static equilibrium in a well these come from the wall friction's tangent (μ × the normal
+  // stiffness, non-symmetric, symmetrized by Linearize): the bundled example has 33, none with
+  // `friction: 0` (docs/validation.md, issue 5 modes). Not a vibration mode; no critical speed.
+  bool negative_stiffness = false;
+  // Rigid, or 0 ≤ f < kNearZeroFrequencyHz: a motion the linearized string barely resists.
+  bool near_zero = false;
   // Shape per station (ModesResult::s), string frame, scaled so that max |displacement| = 1
   // (rotations by the same factor; a purely torsional mode: max |rotation| = 1).
   std::vector<Vec3> displacement;
@@ -41,7 +48,17 @@ struct ModesResult {
   // includes the rigid-body modes (frequency 0, rigid_body set); a family excludes them.
   std::vector<ModeResult> modes;
   int rigid_body_modes = 0;       // how many of `modes` are rigid-body modes
+  int near_zero_modes = 0;        // how many are near zero (ModeResult::near_zero, rigid ones included)
+  int negative_stiffness_modes = 0;  // how many have ω² < 0
 };
+
+// A mode below this is near zero: no rotary speed of a drilling sweep meets it at any harmonic (0.6
+// rpm at 1×), so it is no critical speed; it is reported, flagged, not hidden.
+inline constexpr double kNearZeroFrequencyHz = 0.01;
+
+// The lowest lateral mode that is neither near zero nor of negative stiffness (the one a rotary speed meets first at 1×); null
+// without one.
+const ModeResult* FirstLateralMode(const ModesResult& result);
 
 const char* ModeKindName(ModeKind kind);
 

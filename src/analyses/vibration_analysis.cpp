@@ -14,13 +14,12 @@
 #include <fmt/format.h>
 
 #include "analyses/critical_speeds.hpp"
-#include "analyses/modes_analysis.hpp"
+#include "analyses/response_solver.hpp"
 #include "analyses/string_stations.hpp"
 #include "core/error.hpp"
 #include "core/so3.hpp"
-#include "fe/annulus_fluid.hpp"
 #include "model/wall_contact.hpp"
-#include "solvers/harmonic.hpp"
+#include "solvers/projected_harmonic.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -256,70 +255,24 @@ std::vector<ResolvedExcitation> Resolve(const VibrationSettings& settings, const
   return resolved;
 }
 
-// The structural damping ratio ζ_s of the case (model.structural_damping, the same on every body).
-double StructuralDampingRatio(const model::SystemModel& model) {
-  return model.bodies().empty() ? 0.0 : model.bodies().front().reduced->structural_damping;
-}
-
-// (K − ω² M(ω) + iω D(ω)) X = F at any ω: K, M (steel and bore fluid), D = ∂R/∂v factorized on one
-// pattern; per ω the annulus terms (model/lateral_fluid.hpp) and the structural damping as a loss
-// factor 2 ζ_s on K (hysteretic: iω (2ζ_s/ω) K = 2iζ_s K, so every mode gets ζ_s at its resonance;
-// the modal damping of the bodies' fixed-interface modes alone reaches the string's low modes only
-// weakly, e.g. ζ ≈ 2e-4 for ζ_s = 0.01 in V5's collar).
-class ResponseSolver {
- public:
-  ResponseSolver(const model::SystemModel& model, const model::LateralFluid& fluid, const VecX& q)
-      : loss_factor_(2.0 * StructuralDampingRatio(model)) {
-    const LinearizedSystem linear = Linearize(model, q, 1.0);
-    solvers::LinearSystem system{linear.mass, linear.damping, SparseMat(), linear.stiffness};
-    std::vector<SparseMat> terms;
-    if (!fluid.empty()) {
-      system.mass += model::CalcLateralFluidMatrices(model, fluid, q, 0.0, model::FluidPart::Internal).mass;
-      groups_ = model::CalcAnnulusGroups(model, fluid, q);
-      fluid_ = &fluid;
-      for (const model::AnnulusGroup& group : groups_) terms.push_back(group.unit_mass);
-    }
-    terms.push_back(linear.stiffness);  // the hysteretic term, last
-    solver_ = std::make_unique<solvers::HarmonicSolver>(std::move(system), std::move(terms));
-  }
-
-  solvers::ComplexMat Solve(double frequency, const solvers::ComplexMat& load) {
-    std::vector<solvers::FrequencyTermCoefficients> coefficients;
-    for (const model::AnnulusGroup& group : groups_) {
-      fe::AnnulusFluidCoefficients c;
-      if (fluid_->added_mass_override >= 0.0) {
-        c.added_mass = fluid_->added_mass_override;
-      } else {
-        const bool viscous = fluid_->frequency_dependent() && frequency > 0.0;
-        c = fe::CalcAnnulusFluidCoefficients(group.rod_radius, group.hole_radius, viscous ? frequency : 0.0,
-                                             viscous ? fluid_->kinematic_viscosity : 0.0);
-      }
-      // m_a = C_m U_g, c_a = C_v ω U_g (model/lateral_fluid.hpp).
-      coefficients.push_back({c.added_mass, c.damping * frequency});
-    }
-    coefficients.push_back({0.0, frequency > 0.0 ? loss_factor_ / frequency : 0.0});
-    return solver_->Solve(frequency, load, 0.0, coefficients);
-  }
-
- private:
-  double loss_factor_ = 0.0;
-  const model::LateralFluid* fluid_ = nullptr;
-  std::vector<model::AnnulusGroup> groups_;
-  std::unique_ptr<solvers::HarmonicSolver> solver_;
-};
-
 // Sums the amplitudes of one response X into the per-station, per-element, per-contact totals.
+// by_excitation: per excitation, the largest station displacement of the response at its frequency
+// (the one that drives a peak of the sum).
 struct Amplitudes {
-  std::vector<double> displacement, stress, contact;
+  std::vector<double> displacement, stress, contact, by_excitation;
 
-  void Add(const ComplexVec& x, const std::vector<StationMap>& stations, const std::vector<ElementMap>& elements,
-           const std::vector<ContactMap>& contacts) {
+  // Returns the largest station displacement of x alone.
+  double Add(const ComplexVec& x, const std::vector<StationMap>& stations, const std::vector<ElementMap>& elements,
+             const std::vector<ContactMap>& contacts) {
     const VecX re = x.real(), im = x.imag();
+    double largest = 0.0;
     for (std::size_t i = 0; i < stations.size(); ++i) {
       const StationMap& map = stations[i];
       const Eigen::Index n = map.lateral.cols();
-      displacement[i] += OrbitSemiMajorAxis(map.lateral * re.segment(map.v_offset, n),
-                                            map.lateral * im.segment(map.v_offset, n));
+      const double amplitude =
+          OrbitSemiMajorAxis(map.lateral * re.segment(map.v_offset, n), map.lateral * im.segment(map.v_offset, n));
+      displacement[i] += amplitude;
+      largest = std::max(largest, amplitude);
     }
     for (std::size_t e = 0; e < elements.size(); ++e) {
       const ElementMap& map = elements[e];
@@ -333,25 +286,54 @@ struct Amplitudes {
       const double a = map.radial.dot(re.segment(map.v_offset, n)), b = map.radial.dot(im.segment(map.v_offset, n));
       contact[c] += map.stiffness * std::sqrt(a * a + b * b);
     }
+    return largest;
   }
 
   void Accumulate(const Amplitudes& other) {
-    for (std::size_t i = 0; i < displacement.size(); ++i) displacement[i] += other.displacement[i];
-    for (std::size_t i = 0; i < stress.size(); ++i) stress[i] += other.stress[i];
-    for (std::size_t i = 0; i < contact.size(); ++i) contact[i] += other.contact[i];
+    for (auto [mine, theirs] : {std::pair{&displacement, &other.displacement}, std::pair{&stress, &other.stress},
+                                std::pair{&contact, &other.contact}, std::pair{&by_excitation, &other.by_excitation}}) {
+      for (std::size_t i = 0; i < mine->size(); ++i) (*mine)[i] += (*theirs)[i];
+    }
   }
 };
 
-void FindCriticalSpeeds(const VibrationSettings& settings, VibrationResult& result) {
+// The critical RPMs (the peaks of the severity curve), each with the excitation that drives it: the
+// one (following the rotary speed) whose response is largest there; ranked, most severe first.
+void FindCriticalSpeeds(const VibrationSettings& settings, const std::vector<ResolvedExcitation>& excitations,
+                        const std::vector<Amplitudes>& sums, VibrationResult& result) {
   const bool ratio = !result.max_clearance_ratio.empty();
   const std::vector<double>& curve = ratio ? result.max_clearance_ratio : result.max_lateral_displacement;
-  for (const std::size_t i : FindProminentPeaks(curve, kCriticalPeakProminence)) result.critical_rpm.push_back(result.rpm[i]);
+  for (const std::size_t i : FindProminentPeaks(curve, kCriticalPeakProminence)) {
+    result.critical_rpm.push_back(result.rpm[i]);
+    CriticalSpeed critical;
+    critical.rpm = result.rpm[i];
+    critical.severity = curve[i];
+    critical.displacement = result.max_lateral_displacement[i];
+    critical.bending_stress = result.max_bending_stress[i];
+    double driving = -1.0;
+    for (std::size_t e = 0; e < excitations.size(); ++e) {
+      if (excitations[e].excitation.type == ExcitationType::Motor || sums[i].by_excitation[e] <= driving) continue;
+      driving = sums[i].by_excitation[e];
+      critical.excitation = static_cast<int>(e);
+      critical.frequency = ExcitationFrequency(excitations[e].excitation, result.rpm[i], excitations[e].motor_speed);
+    }
+    result.critical_speeds.push_back(critical);
+  }
+  std::stable_sort(result.critical_speeds.begin(), result.critical_speeds.end(),
+                   [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.severity > b.severity; });
   std::vector<bool> ok(result.rpm.size());
   for (std::size_t i = 0; i < ok.size(); ++i) {
     ok[i] = result.max_bending_stress[i] <= settings.stress_limit &&
             (!ratio || result.max_clearance_ratio[i] <= settings.clearance_fraction);
   }
   for (const IndexRange& run : FindRuns(ok)) result.safe_windows.push_back({result.rpm[run.first], result.rpm[run.last]});
+  // The quietest ranges: severity within kQuietFactor of the sweep's least.
+  const double least = *std::min_element(curve.begin(), curve.end());
+  std::vector<bool> quiet(curve.size());
+  for (std::size_t i = 0; i < quiet.size(); ++i) quiet[i] = curve[i] <= kQuietFactor * least;
+  for (const IndexRange& run : FindRuns(quiet)) {
+    result.quietest_windows.push_back({result.rpm[run.first], result.rpm[run.last]});
+  }
 }
 
 // One excitation at one sweep point: its frequency there.
@@ -411,12 +393,14 @@ void SolveFrequency(const std::vector<SweepTask>& tasks, const FrequencyGroup& g
   const solvers::ComplexMat response = solver.Solve(tasks[group.begin].frequency, loads);
   for (std::size_t t = group.begin; t < group.end;) {
     const int point = tasks[t].point;
+    const std::size_t first = t;
     ComplexVec x = ComplexVec::Zero(response.rows());
     for (; t < group.end && tasks[t].point == point; ++t) {
       const int e = tasks[t].excitation;
       x += LoadScale(excitations[e].excitation, speeds[point]) * response.col(columns[e]);
     }
-    sums[point].Add(x, maps.stations, maps.elements, maps.contacts);
+    const double largest = sums[point].Add(x, maps.stations, maps.elements, maps.contacts);
+    for (std::size_t k = first; k < t; ++k) sums[point].by_excitation[tasks[k].excitation] = largest;
   }
 }
 
@@ -448,6 +432,43 @@ std::vector<Amplitudes> SolveSweep(std::vector<SweepTask> tasks, const std::vect
   return std::move(sums[0]);
 }
 
+// The solvers of the sweep, one a thread; reduced: one projection shared by all.
+std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemModel& model, const model::LateralFluid& fluid,
+                                                         const VecX& q, const VibrationSettings& settings,
+                                                         const std::vector<ComplexVec>& unit_loads,
+                                                         const std::vector<SweepTask>& tasks, int threads,
+                                                         VibrationResult& result) {
+  auto sweep = std::make_shared<const SweepSystem>(AssembleSweepSystem(model, fluid, q));
+  std::shared_ptr<const solvers::ProjectedHarmonicSolver> reduced;
+  result.method = settings.method;
+  if (settings.method == VibrationMethod::Reduced) {
+    double lowest = tasks.front().frequency, highest = lowest;
+    for (const SweepTask& task : tasks) lowest = std::min(lowest, task.frequency), highest = std::max(highest, task.frequency);
+    MatX patterns(model.num_velocities(), 2 * static_cast<Eigen::Index>(unit_loads.size()));
+    for (std::size_t e = 0; e < unit_loads.size(); ++e) {
+      patterns.col(2 * static_cast<Eigen::Index>(e)) = unit_loads[e].real();
+      patterns.col(2 * static_cast<Eigen::Index>(e) + 1) = unit_loads[e].imag();
+    }
+    solvers::KrylovBasisOptions options;
+    options.lowest_frequency = lowest;
+    options.highest_frequency = std::max(highest, 1e-3);
+    options.shifts = settings.basis_shifts;
+    options.depth = settings.basis_depth;
+    // The annulus of the basis at the geometric mean of the band (the solve takes each ω's own).
+    const double reference = std::sqrt(std::max(lowest, 1e-3 * options.highest_frequency) * options.highest_frequency);
+    solvers::KrylovBasis basis =
+        solvers::BuildKrylovBasis(sweep->system.stiffness, ReferenceMass(*sweep, reference), patterns, options);
+    result.basis_size = static_cast<int>(basis.vectors.cols());
+    reduced = std::make_shared<const solvers::ProjectedHarmonicSolver>(sweep->system, sweep->terms, std::move(basis.vectors),
+                                                                        SweepTermCoefficients(*sweep, reference));
+  }
+  std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(threads));
+  for (auto& solver : solvers) {
+    solver = reduced ? std::make_unique<ResponseSolver>(sweep, reduced) : std::make_unique<ResponseSolver>(sweep);
+  }
+  return solvers;
+}
+
 }  // namespace
 
 VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelInput& input,
@@ -459,10 +480,7 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
   const WallState wall = ReadWall(built, poses);
   const std::vector<StationMap> stations = MapStations(model, poses, wall);
   const std::vector<ElementMap> elements = MapElements(model);
-  // One solver a thread (a factorization each), at most one per RPM value.
   const int count = static_cast<int>(std::floor((settings.rpm_to - settings.rpm_from) / settings.rpm_step + 1e-9)) + 1;
-  std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(std::clamp(MaxThreads(), 1, count)));
-  for (auto& solver : solvers) solver = std::make_unique<ResponseSolver>(model, fluid, q);
   VibrationResult result;
   result.clearance_fraction = settings.clearance_fraction;
   result.stress_limit = settings.stress_limit;
@@ -480,8 +498,11 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
       tasks.push_back({frequency, j, static_cast<int>(e)});
     }
   }
+  // One solver a thread, at most one per RPM value.
+  std::vector<std::unique_ptr<ResponseSolver>> solvers =
+      MakeSolvers(model, fluid, q, settings, unit_loads, tasks, std::clamp(MaxThreads(), 1, count), result);
   const Amplitudes zero{std::vector<double>(stations.size(), 0.0), std::vector<double>(elements.size(), 0.0),
-                        std::vector<double>(wall.closed.size(), 0.0)};
+                        std::vector<double>(wall.closed.size(), 0.0), std::vector<double>(excitations.size(), 0.0)};
   const std::vector<Amplitudes> sums =
       SolveSweep(std::move(tasks), unit_loads, excitations, result.rpm, solvers, zero, {stations, elements, wall.closed});
   const bool with_clearance = std::any_of(stations.begin(), stations.end(), [](const StationMap& m) { return m.clearance > 0.0; });
@@ -499,7 +520,7 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
     result.max_bending_stress.push_back(point.stress.empty() ? 0.0 : *std::max_element(point.stress.begin(), point.stress.end()));
     result.max_contact_force.push_back(point.contact.empty() ? 0.0 : *std::max_element(point.contact.begin(), point.contact.end()));
   }
-  FindCriticalSpeeds(settings, result);
+  FindCriticalSpeeds(settings, excitations, sums, result);
   return result;
 }
 

@@ -5,9 +5,11 @@
 // the wall: the paper's rule), M(q) with the fluid (model/lateral_fluid.hpp), D = ∂R/∂v plus the
 // fluid damping. For every rotary speed Ω of the sweep and every excitation at its frequency ω
 //   (K − ω² M(ω) + iω D(ω)) X = F,       x(t) = Re(X e^{iωt})
-// is solved with solvers/harmonic (one factorization per distinct frequency and RPM, every
-// excitation at that frequency a right-hand side; the annulus terms at each ω when the fluid is
-// viscous). Excitations (case-format.md, analyses/analysis_settings.hpp Excitation):
+// is solved once per distinct frequency (every excitation at that frequency a right-hand side; the
+// annulus terms at each ω when the fluid is viscous), analyses/response_solver.hpp: by default
+// (method reduced) projected on a rational Krylov basis of the response to the excitations' loads
+// over the band of excitation frequencies (solvers/projected_harmonic.hpp); with method direct, a
+// sparse LU of the full system per frequency (the reference). Excitations (case-format.md, analyses/analysis_settings.hpp Excitation):
 //  * imbalance `me` at `at`: the force m e Ω² rotating with the string at 1× (forward), i.e. the
 //    lateral pair F = m e Ω² (e_y − i e_z) in the string frame at the node: Re(F e^{iΩt}) =
 //    m e Ω² (cos Ωt e_y + sin Ωt e_z);
@@ -43,6 +45,18 @@ struct RpmWindow {
   double from = 0.0, to = 0.0;  // rad/s
 };
 
+inline constexpr double kQuietFactor = 1.5;
+
+// A critical RPM with what makes it one.
+struct CriticalSpeed {
+  double rpm = 0.0;             // rad/s
+  double severity = 0.0;        // the clearance ratio there (without clearances: the displacement, m)
+  double displacement = 0.0;    // the largest lateral displacement amplitude there, m
+  double bending_stress = 0.0;  // the largest bending-stress amplitude there, Pa
+  int excitation = -1;          // the excitation that drives it (its response is the largest there)
+  double frequency = 0.0;       // that excitation's frequency there, rad/s: the natural frequency met
+};
+
 struct VibrationResult {
   std::vector<double> rpm;                       // rotary speeds Ω, rad/s
   std::vector<double> max_lateral_displacement;  // m
@@ -52,12 +66,18 @@ struct VibrationResult {
   std::vector<double> s_max_displacement;        // where the displacement peaks, m from the bit
   // The critical-speed map (analyses/critical_speeds.hpp): the peaks of the clearance ratio (of the
   // displacement without clearances), and the windows that stay below the limits.
-  std::vector<double> critical_rpm;  // rad/s
+  std::vector<double> critical_rpm;  // rad/s, ascending
+  std::vector<CriticalSpeed> critical_speeds;  // the same peaks, most severe first
   std::vector<RpmWindow> safe_windows;
+  // The RPM ranges whose severity (clearance ratio, else displacement) stays within kQuietFactor of
+  // the least of the sweep: where to drill when no window is safe.
+  std::vector<RpmWindow> quietest_windows;
   double clearance_fraction = 0.0;   // the limits used (VibrationSettings)
   double stress_limit = 0.0;         // Pa
   int closed_contacts = 0;           // wall contacts closed at q (springs of the linear model)
   std::vector<double> excitation_frequencies;  // ω of each excitation at the first RPM, rad/s
+  VibrationMethod method = VibrationMethod::Reduced;  // how the sweep was solved
+  int basis_size = 0;  // reduced: the columns of the basis
 };
 
 // The excitation frequency ω (rad/s) of an excitation at rotary speed Ω; `motor_speed` is the

@@ -98,42 +98,99 @@ void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
 }
 
 void PrintModes(const analyses::ModesResult& result) {
-  std::cout << fmt::format("modes: {} computed\n", result.modes.size());
+  std::cout << fmt::format("modes: {} computed", result.modes.size());
+  if (result.near_zero_modes > 0) {
+    std::cout << fmt::format("; {} near zero (below {} Hz: no critical speed)", result.near_zero_modes,
+                             analyses::kNearZeroFrequencyHz);
+  }
+  if (result.negative_stiffness_modes > 0) {
+    std::cout << fmt::format("; {} with ω² < 0 (negative stiffness: not vibration modes)", result.negative_stiffness_modes);
+  }
+  std::cout << "\n";
   std::cout << fmt::format("  {:>4} {:>12} {:>9}  {:<10} {:>6} {:>6} {:>6}\n", "#", "f (Hz)", "damping", "kind", "axial",
                            "tors", "lat");
   for (std::size_t m = 0; m < result.modes.size(); ++m) {
     const auto& mode = result.modes[m];
     std::cout << fmt::format("  {:>4} {:>12.6g} {:>9.3g}  {:<10} {:>6.3f} {:>6.3f} {:>6.3f}{}\n", m + 1,
                              mode.frequency_hz, mode.damping_ratio, analyses::ModeKindName(mode.kind), mode.axial_fraction, mode.torsional_fraction,
-                             mode.lateral_fraction, mode.rigid_body ? "  (rigid body)" : "");
+                             mode.lateral_fraction,
+                             mode.rigid_body           ? "  (rigid body)"
+                             : mode.negative_stiffness ? fmt::format("  (ω² = {:.4g} rad²/s² < 0: negative stiffness)",
+                                                                     mode.eigenvalue)
+                             : mode.near_zero          ? "  (near zero: barely resisted)"
+                                                       : "");
   }
 }
 
 void PrintCriticalRpm(const io::Case& c, const analyses::ModesResult& result) {
   const io::RuleOfThumbRpm rule = io::CalcRuleOfThumbCriticalRpm(c);
-  for (const auto& mode : result.modes) {
-    if (mode.rigid_body || mode.kind != analyses::ModeKind::Lateral || mode.frequency_hz <= 0.0) continue;
+  if (const analyses::ModeResult* mode = analyses::FirstLateralMode(result)) {
     std::cout << fmt::format("  critical RPM of the first lateral mode {:.5g} rpm; rule of thumb 33055 sqrt(OD²+ID²)/L² "
                              "{:.5g} rpm (span {}, ±15 %)\n",
-                             60.0 * mode.frequency_hz, rule.rpm * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
+                             60.0 * mode->frequency_hz, rule.rpm * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
     return;
   }
   std::cout << fmt::format("  rule-of-thumb critical RPM 33055 sqrt(OD²+ID²)/L² {:.5g} rpm (span {})\n",
                            rule.rpm * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
 }
 
+// "bit 3×", "imbalance 1×", "motor 5 lobes": what drives a critical RPM.
+std::string ExcitationName(const io::Case& c, int index) {
+  if (!c.analyses.vibration || index < 0 || index >= static_cast<int>(c.analyses.vibration->excitations.size())) return "?";
+  const analyses::Excitation& excitation = c.analyses.vibration->excitations[static_cast<std::size_t>(index)];
+  switch (excitation.type) {
+    case analyses::ExcitationType::Imbalance: return "imbalance 1×";
+    case analyses::ExcitationType::Bit: return fmt::format("bit {}×", excitation.harmonic);
+    case analyses::ExcitationType::Motor: return "motor";
+  }
+  return "?";
+}
+
+// The critical RPMs most severe first (at most kListed; the rest by RPM on one line).
+void PrintCriticalSpeeds(const io::Case& c, const analyses::VibrationResult& result) {
+  constexpr std::size_t kListed = 8;
+  if (result.critical_speeds.empty()) {
+    std::cout << "  critical RPMs: none in the sweep\n";
+    return;
+  }
+  const bool ratio = !result.max_clearance_ratio.empty();
+  std::cout << fmt::format("  critical RPMs, most severe first ({}):\n",
+                           ratio ? "lateral amplitude / radial clearance" : "lateral amplitude");
+  for (std::size_t k = 0; k < result.critical_speeds.size() && k < kListed; ++k) {
+    const analyses::CriticalSpeed& critical = result.critical_speeds[k];
+    const std::string severity = ratio ? fmt::format("{:.3g} of the clearance, ", critical.severity) : "";
+    std::cout << fmt::format("    {}: {}largest amplitude {}, bending {}; {} at {:.3g} Hz\n",
+                             Show(c, critical.rpm, Quantity::RotarySpeed), severity,
+                             Show(c, critical.displacement, Quantity::Diameter),
+                             Show(c, critical.bending_stress, Quantity::Stress), ExcitationName(c, critical.excitation),
+                             critical.frequency / (2.0 * kPi));
+  }
+  if (result.critical_speeds.size() > kListed) {
+    std::vector<double> rest;
+    for (std::size_t k = kListed; k < result.critical_speeds.size(); ++k) rest.push_back(result.critical_speeds[k].rpm);
+    std::sort(rest.begin(), rest.end());
+    std::string list;
+    for (const double rpm : rest) list += (list.empty() ? "" : ", ") + Show(c, rpm, Quantity::RotarySpeed);
+    std::cout << fmt::format("    {} milder peaks: {}\n", rest.size(), list);
+  }
+}
+
 void PrintVibration(const io::Case& c, const analyses::VibrationResult& result) {
   std::cout << fmt::format("vibration: {} rotary speeds, {} to {}; {} wall contacts closed at equilibrium\n",
                            result.rpm.size(), Show(c, result.rpm.front(), Quantity::RotarySpeed),
                            Show(c, result.rpm.back(), Quantity::RotarySpeed), result.closed_contacts);
+  if (result.method == analyses::VibrationMethod::Reduced) {
+    std::cout << fmt::format("  solved on a reduced basis of {} vectors (method: direct for the full system)\n",
+                             result.basis_size);
+  } else {
+    std::cout << "  solved on the full system (a sparse LU per frequency)\n";
+  }
   const auto peak = std::max_element(result.max_lateral_displacement.begin(), result.max_lateral_displacement.end());
   const std::size_t i = static_cast<std::size_t>(peak - result.max_lateral_displacement.begin());
   std::cout << fmt::format("  largest lateral displacement amplitude {} at {} ({} from the bit)\n",
                            Show(c, *peak, Quantity::Diameter), Show(c, result.rpm[i], Quantity::RotarySpeed),
                            Show(c, result.s_max_displacement[i], Quantity::Length));
-  std::string critical;
-  for (const double rpm : result.critical_rpm) critical += (critical.empty() ? "" : ", ") + Show(c, rpm, Quantity::RotarySpeed);
-  std::cout << "  critical RPMs: " << (critical.empty() ? "none in the sweep" : critical) << "\n";
+  PrintCriticalSpeeds(c, result);
   std::string windows;
   for (const auto& w : result.safe_windows) {
     windows += (windows.empty() ? "" : ", ") + fmt::format("{} to {}", Show(c, w.from, Quantity::RotarySpeed),
@@ -143,6 +200,13 @@ void PrintVibration(const io::Case& c, const analyses::VibrationResult& result) 
                            "below {}): {}\n",
                            result.clearance_fraction, Show(c, result.stress_limit, Quantity::Stress),
                            windows.empty() ? "none" : windows);
+  std::string quiet;
+  for (const auto& w : result.quietest_windows) {
+    quiet += (quiet.empty() ? "" : ", ") + fmt::format("{} to {}", Show(c, w.from, Quantity::RotarySpeed),
+                                                       Show(c, w.to, Quantity::RotarySpeed));
+  }
+  std::cout << fmt::format("  quietest ranges (within {}× of the sweep's least {}): {}\n", analyses::kQuietFactor,
+                           result.max_clearance_ratio.empty() ? "amplitude" : "clearance ratio", quiet);
 }
 
 void PrintBuckling(const io::Case& c, const analyses::BucklingResult& result) {

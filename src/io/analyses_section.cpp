@@ -75,8 +75,22 @@ analyses::Excitation ReadExcitation(const YamlView& item) {
 
 analyses::VibrationSettings ReadVibration(const YamlView& node) {
   node.ExpectMap("the vibration settings {rpm, excitations}");
-  node.AllowOnlyKeys({"rpm", "excitations", "clearance_fraction", "stress_limit"});
+  node.AllowOnlyKeys({"rpm", "excitations", "clearance_fraction", "stress_limit", "method", "basis"});
   analyses::VibrationSettings settings;
+  if (const auto method = node.OptionalChild("method")) {
+    const std::string name = method->AsString();
+    if (name == "reduced") settings.method = analyses::VibrationMethod::Reduced;
+    else if (name == "direct") settings.method = analyses::VibrationMethod::Direct;
+    else method->Fail(fmt::format("expected 'reduced' or 'direct', got '{}'", name));
+  }
+  if (const auto basis = node.OptionalChild("basis")) {
+    basis->ExpectMap("the reduced basis {shifts, depth}", false);
+    basis->AllowOnlyKeys({"shifts", "depth"});
+    settings.basis_shifts = basis->IntegerOr("shifts", settings.basis_shifts);
+    settings.basis_depth = basis->IntegerOr("depth", settings.basis_depth);
+    if (settings.basis_shifts < 1 || settings.basis_shifts > 1000) basis->Child("shifts").Fail("expected 1 to 1000 shifts");
+    if (settings.basis_depth < 1 || settings.basis_depth > 20) basis->Child("depth").Fail("expected a depth of 1 to 20");
+  }
   if (const auto rpm = node.OptionalChild("rpm")) {
     rpm->ExpectMap("an RPM sweep {from, to, step}", false);
     rpm->AllowOnlyKeys({"from", "to", "step"});

@@ -190,6 +190,8 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
                      {"damping_ratio", mode.damping_ratio},
                      {"kind", analyses::ModeKindName(mode.kind)},
                      {"rigid_body", mode.rigid_body},
+                     {"near_zero", mode.near_zero},
+                     {"negative_stiffness", mode.negative_stiffness},
                      {"axial_fraction", mode.axial_fraction},
                      {"torsional_fraction", mode.torsional_fraction},
                      {"lateral_fraction", mode.lateral_fraction}});
@@ -201,10 +203,9 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
   const RuleOfThumbRpm rule = CalcRuleOfThumbCriticalRpm(c);
   json critical = {{"rule_of_thumb", out(rule.rpm, Quantity::RotarySpeed)},
                    {"rule_of_thumb_span", out(rule.span, Quantity::Length)}};
-  const auto lateral = std::find_if(result.modes.begin(), result.modes.end(), [](const auto& mode) {
-    return !mode.rigid_body && mode.kind == analyses::ModeKind::Lateral && mode.frequency_hz > 0.0;
-  });
-  if (lateral != result.modes.end()) critical["first_lateral"] = 60.0 * lateral->frequency_hz;
+  if (const analyses::ModeResult* lateral = analyses::FirstLateralMode(result)) {
+    critical["first_lateral"] = 60.0 * lateral->frequency_hz;
+  }
   files.json()["critical_rpm"] = critical;
 }
 

@@ -70,8 +70,20 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
     contact.push_back(row[4]);
     if (ratio) clearance.push_back(result.max_clearance_ratio[i]);
   }
-  json critical = json::array(), windows = json::array();
+  json critical = json::array(), windows = json::array(), quiet = json::array();
+  for (const auto& window : result.quietest_windows) {
+    quiet.push_back({{"from", out(window.from, Quantity::RotarySpeed)}, {"to", out(window.to, Quantity::RotarySpeed)}});
+  }
   for (const double value : result.critical_rpm) critical.push_back(out(value, Quantity::RotarySpeed));
+  json ranked = json::array();
+  for (const analyses::CriticalSpeed& speed : result.critical_speeds) {
+    ranked.push_back({{"rpm", out(speed.rpm, Quantity::RotarySpeed)},
+                      {"severity", ratio ? speed.severity : out(speed.severity, Quantity::Diameter)},
+                      {"max_lateral_displacement", out(speed.displacement, Quantity::Diameter)},
+                      {"max_bending_stress", out(speed.bending_stress, Quantity::Stress)},
+                      {"excitation", speed.excitation},
+                      {"frequency_hz", speed.frequency / (2.0 * kPi)}});
+  }
   for (const auto& window : result.safe_windows) {
     windows.push_back({{"from", out(window.from, Quantity::RotarySpeed)}, {"to", out(window.to, Quantity::RotarySpeed)}});
   }
@@ -81,10 +93,14 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
                 {"max_bending_stress", stress},
                 {"max_contact_force", contact},
                 {"critical_rpm", critical},
+                {"critical_speeds", ranked},
                 {"safe_windows", windows},
+                {"quietest_windows", quiet},
                 {"clearance_fraction", result.clearance_fraction},
                 {"stress_limit", out(result.stress_limit, Quantity::Stress)},
-                {"closed_contacts", result.closed_contacts}};
+                {"closed_contacts", result.closed_contacts},
+                {"method", result.method == analyses::VibrationMethod::Reduced ? "reduced" : "direct"}};
+  if (result.method == analyses::VibrationMethod::Reduced) block["basis_size"] = result.basis_size;
   if (ratio) block["max_clearance_ratio"] = clearance;
   files.Add("vibration.csv", table.ToString());
   files.json()["vibration"] = block;

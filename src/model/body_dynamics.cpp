@@ -1,6 +1,7 @@
 #include "model/body_dynamics.hpp"
 
 #include "core/so3.hpp"
+#include "model/body_inertia_jacobian.hpp"
 
 namespace drillflex::model {
 
@@ -115,7 +116,8 @@ double BodyElasticEnergy(const Body& body, const BodyPose& pose) {
 }
 
 double BodyKineticEnergy(const Body& body, const BodyPose& pose, const VecX& velocity) {
-  return 0.5 * velocity.dot(BodyMassMatrix(body, pose) * velocity);
+  // ½ vᵀ M v with M v from the node sum (BodyInertialForces at zero velocity and acceleration v).
+  return 0.5 * velocity.dot(BodyInertialForces(body, pose, VecX::Zero(velocity.size()), velocity));
 }
 
 }  // namespace drillflex::model

@@ -1,5 +1,6 @@
 #include "model/body_inertia_jacobian.hpp"
 
+#include "core/error.hpp"
 #include "core/so3.hpp"
 #include "model/body_dynamics.hpp"
 
@@ -96,35 +97,44 @@ VecX BodyInertialForces(const Body& body, const BodyPose& pose, const VecX& velo
   // The node sum of the header without forming M: with the body-frame accelerations
   // α = (Aᵀ r̈, ω̇, η̈), per node f_k = M_k (α_t + α_ω × u_k + Φ_k α_η + c_k) mapped by [I; ũ_k; Φ_kᵀ],
   // and m_k = J_k (α_ω + Ψ_k α_η) + Ω_k × J_k Ω_k mapped by [0; I; Ψ_kᵀ]; then C α and the
-  // translational rows rotated by A (R_in = Wᵀ G). O(nodes · n_f) instead of O(nodes · n²).
+  // translational rows rotated by A (R_in = Wᵀ G). The nodes' Φ_k and Ψ_k are the rows of the mode
+  // shapes U (6 per node), so the modal parts of all nodes are three products U x and one Uᵀ g:
+  // O(nodes · n_f) instead of the O(nodes · n²) of forming M.
   const cms::ReducedBody& reduced = *body.reduced;
   const int nf = body.flexible_count;
+  const int nodes = reduced.node_count();
+  const MatX& shapes = reduced.mode_shapes;
+  if (shapes.rows() != 6 * nodes || shapes.cols() != nf) {
+    throw LogicError("BodyInertialForces: the mode shapes do not have 6 rows a node and n_f columns");
+  }
   const Vec3 alpha_t = pose.A.transpose() * acceleration.head<3>();
   const Vec3 alpha_w = acceleration.segment<3>(3);
-  const auto alpha_eta = acceleration.tail(nf);
   const Vec3 omega = velocity.segment<3>(3);
-  const auto eta_rate = velocity.tail(nf);
-  VecX forces = VecX::Zero(6 + nf);
-  Vec3 translational_sum = Vec3::Zero();
-  for (int k = 0; k < reduced.node_count(); ++k) {
-    const Vec3 offset = pose.NodeOffset(body, k);
-    const auto& phi = reduced.node_translation_modes[k];
-    const auto& psi = reduced.node_rotation_modes[k];
-    const Vec3 elastic_rate = phi * eta_rate;
-    const Vec3 node_acceleration = alpha_t + alpha_w.cross(offset) + phi * alpha_eta +
-                                   omega.cross(omega.cross(offset)) + 2.0 * omega.cross(elastic_rate);
+  const VecX displacement = shapes * pose.eta;
+  const VecX rate = shapes * velocity.tail(nf);
+  const VecX elastic_acceleration = shapes * acceleration.tail(nf);
+  VecX nodal = VecX::Zero(6 * nodes);  // (f_k, m_k) per node, body frame
+  Vec3 translational_sum = Vec3::Zero(), rotational_sum = Vec3::Zero();
+  for (int k = 0; k < nodes; ++k) {
+    const Vec3 offset = reduced.node_positions[k] + displacement.segment<3>(6 * k);
+    const Vec3 node_acceleration = alpha_t + alpha_w.cross(offset) + elastic_acceleration.segment<3>(6 * k) +
+                                   omega.cross(omega.cross(offset)) + 2.0 * omega.cross(rate.segment<3>(6 * k));
     const Vec3 force = reduced.NodeTranslationalMass(k) * node_acceleration;
-    translational_sum += force;
     const Mat3& inertia = reduced.node_rotary_inertia[k];
-    const Vec3 node_omega = omega + psi * eta_rate;
-    const Vec3 moment = inertia * (alpha_w + psi * alpha_eta) + node_omega.cross(inertia * node_omega);
-    forces.segment<3>(3) += offset.cross(force) + moment;
-    forces.tail(nf).noalias() += phi.transpose() * force + psi.transpose() * moment;
+    const Vec3 node_omega = omega + rate.segment<3>(6 * k + 3);
+    const Vec3 moment =
+        inertia * (alpha_w + elastic_acceleration.segment<3>(6 * k + 3)) + node_omega.cross(inertia * node_omega);
+    translational_sum += force;
+    rotational_sum += offset.cross(force) + moment;
+    nodal.segment<3>(6 * k) = force;
+    nodal.segment<3>(6 * k + 3) = moment;
   }
+  VecX forces(6 + nf);
+  forces << translational_sum, rotational_sum, shapes.transpose() * nodal;
   VecX body_frame_acceleration(6 + nf);
-  body_frame_acceleration << alpha_t, alpha_w, alpha_eta;
+  body_frame_acceleration << alpha_t, alpha_w, acceleration.tail(nf);
   forces.noalias() += body.mass_correction * body_frame_acceleration;
-  forces.head<3>() = pose.A * (translational_sum + forces.head<3>());
+  forces.head<3>() = pose.A * Vec3(forces.head<3>());
   return forces;
 }
 

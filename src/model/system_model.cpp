@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 
 #include "core/error.hpp"
@@ -94,27 +95,65 @@ ElementState SystemModel::StateOf(const ForceElement& element, const std::vector
   return state;
 }
 
+namespace {
+
+// Models of at least this many bodies evaluate their bodies and elements on OpenMP threads; below
+// it the threads cost more than they save (the V1 cantilever's residual takes ~12 µs).
+constexpr std::size_t kParallelBodies = 32;
+
+// Runs task(i) for i in [0, count), on OpenMP threads when `parallel`. An exception in a task is
+// rethrown here (the first one caught) instead of escaping the parallel region.
+template <typename Task>
+void ForEachIndex(std::size_t count, bool parallel, const Task& task) {
+  std::exception_ptr failure;
+  const long n = static_cast<long>(count);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (long i = 0; i < n; ++i) {
+    try {
+      task(static_cast<std::size_t>(i));
+    } catch (...) {
+#pragma omp critical(drillflex_model_failure)
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace
+
+// Each body's and element's contribution is computed on its own (in parallel for large models) and
+// stored, then added in the fixed order of bodies and elements: the sum is bit for bit the same for
+// any number of threads.
 VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor) const {
   VecX residual = VecX::Zero(num_velocities_);
   const auto poses = Poses(q);
   const bool moving = !v.isZero(0.0);
   const bool accelerating = !a.isZero(0.0);
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+  const bool parallel = bodies_.size() >= kParallelBodies;
+  std::vector<VecX> body_forces(bodies_.size());
+  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
     const Body& body = bodies_[b];
     const int n = body.velocity_count();
     VecX local = VecX::Zero(n);
     const VecX velocity = v.segment(body.v_offset, n);
     if (accelerating || moving) local += BodyInertialForces(body, poses[b], velocity, a.segment(body.v_offset, n));
     AddElasticForces(body, poses[b], velocity, local);
-    residual.segment(body.v_offset, n) += local;
+    body_forces[b] = std::move(local);
+  });
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    residual.segment(bodies_[b].v_offset, bodies_[b].velocity_count()) += body_forces[b];
   }
-  ElementContribution contribution;
-  for (const auto& element : elements_) {
-    element->Evaluate(StateOf(*element, poses, v, t, load_factor), false, contribution);
+  std::vector<VecX> element_forces(elements_.size());
+  ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
+    ElementContribution contribution;
+    elements_[e]->Evaluate(StateOf(*elements_[e], poses, v, t, load_factor), false, contribution);
+    element_forces[e] = std::move(contribution.force);
+  });
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
     int offset = 0;
-    for (const Body* body : element->bodies()) {
+    for (const Body* body : elements_[e]->bodies()) {
       residual.segment(body->v_offset, body->velocity_count()) +=
-          contribution.force.segment(offset, body->velocity_count());
+          element_forces[e].segment(offset, body->velocity_count());
       offset += body->velocity_count();
     }
   }
@@ -124,25 +163,29 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
 SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor,
                                        double cK, double cD, double cM) const {
   const auto poses = Poses(q);
-  SparseMat matrix = iteration_pattern_.Zero();
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+  const bool parallel = bodies_.size() >= kParallelBodies;
+  std::vector<MatX> body_blocks(bodies_.size());
+  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
     const Body& body = bodies_[b];
     const int n = body.velocity_count();
     MatX local = MatX::Zero(n, n);
     // cK K_in + cD D_in + cM M of the inertia (exact, model/body_inertia_jacobian.hpp).
     AddInertiaMatrices(body, poses[b], v.segment(body.v_offset, n), a.segment(body.v_offset, n), cK, cD, cM, local);
     AddElasticMatrices(body, poses[b], cK, cD, local);
-    iteration_pattern_.Add(local, {static_cast<int>(b)}, matrix);
-  }
-  ElementContribution contribution;
-  MatX local;
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    body_blocks[b] = std::move(local);
+  });
+  std::vector<MatX> element_blocks(elements_.size());
+  ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
     const ForceElement& element = *elements_[e];
+    ElementContribution contribution;
     element.Evaluate(StateOf(element, poses, v, t, load_factor), true, contribution);
-    local.noalias() = cK * contribution.stiffness;
+    MatX local = cK * contribution.stiffness;
     if (cD != 0.0) local.noalias() += cD * contribution.damping;
-    iteration_pattern_.Add(local, element_bodies_[e], matrix);
-  }
+    element_blocks[e] = std::move(local);
+  });
+  SparseMat matrix = iteration_pattern_.Zero();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) iteration_pattern_.Add(body_blocks[b], {static_cast<int>(b)}, matrix);
+  for (std::size_t e = 0; e < elements_.size(); ++e) iteration_pattern_.Add(element_blocks[e], element_bodies_[e], matrix);
   return matrix;
 }
 

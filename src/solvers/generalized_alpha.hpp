@@ -23,9 +23,12 @@
 // Convergence and error are measured in a weighted RMS norm of position increments:
 // ‖x‖ = sqrt(mean((x_i / (atol + rtol · s_i))²)), s_i the largest |q_i − q_i(start)| so far
 // (accumulated in the tangent space), capped at position_scale (so that a body spinning thousands
-// of radians is still integrated to rtol · 1 rad, not rtol times its total turn). Newton stops when the last position correction, times the
-// estimated θ/(1 − θ) of its contraction, is below newton_tolerance in this norm (Hairer & Wanner,
-// "Solving ODEs II", §IV.8). The local error estimate is Zienkiewicz & Xie's (Earthquake Eng.
+// of radians is still integrated to rtol · 1 rad, not rtol times its total turn). Newton stops when
+// a correction times θ/(1 − θ) is below newton_tolerance in this norm, θ the contraction measured
+// in this step (Hairer & Wanner, "Solving ODEs II", §IV.8); at the first iteration θ is the last
+// step's, inflated, when ρ∞ < 1 and the matrix is the same (else the correction itself must be
+// below the tolerance); a correction that stops shrinking below a tenth of the norm is round-off.
+// The local error estimate is Zienkiewicz & Xie's (Earthquake Eng.
 // Struct. Dyn. 20, 1991) for Newmark-type schemes, e = (β − 1/6) h² (a_{n+1} − a_n); adaptive steps
 // accept e ≤ 1 and take h ← h · clamp(0.9 e^(−1/3), 0.2, 2). A step whose Newton iterations fail
 // (too many iterations, divergence, a non-finite residual, a singular matrix) is rejected and
@@ -35,6 +38,8 @@
 #include <functional>
 #include <limits>
 #include <string>
+
+#include <Eigen/LU>
 
 #include "core/types.hpp"
 #include "solvers/linear_solver.hpp"
@@ -64,6 +69,10 @@ struct GeneralizedAlphaOptions {
   double newton_tolerance = 1e-3;   // fraction of the error norm at which Newton stops
   int max_newton_iterations = 12;   // per attempt (a stale matrix gets one more attempt, fresh)
   bool reuse_iteration_matrix = true;
+  bool extrapolate_acceleration = true;  // predictor v̇_{n+1} from v̇_n and v̇_{n−1} (else v̇_n)
+  // Up to this many velocity coordinates the iteration matrix is factorized dense (partial-pivot
+  // LU): for a 72-coordinate cantilever a solve takes ~2 µs against ~12 µs sparse.
+  int dense_limit = 200;
   double reuse_contraction = 0.3;   // an iteration contracting less than this refactorizes
   double refactor_step_ratio = 0.25;  // |h/h_factorized − 1| above this refactorizes
   long max_steps = 100'000'000;     // accepted plus rejected steps per AdvanceTo
@@ -125,6 +134,7 @@ class GeneralizedAlphaIntegrator {
   void UpdateStepState(double h);
   bool Factorize(double h, std::string& reason);
   double WeightedNorm(const VecX& increment) const;
+  void UpdateWeights();  // weights_ from scale_
   double StepErrorEstimate(double h) const;
   void AcceptStep(double h);
 
@@ -133,17 +143,21 @@ class GeneralizedAlphaIntegrator {
   GeneralizedAlphaParameters parameters_;
   GeneralizedAlphaState state_;
   GeneralizedAlphaStatistics statistics_;
-  SparseLinearSolver solver_;
+  SparseLinearSolver solver_;           // above dense_limit coordinates
+  Eigen::PartialPivLU<MatX> dense_lu_;  // up to dense_limit coordinates
+  bool dense_ = false;
   bool has_factorization_ = false;
   double factorized_step_ = 0.0;
   double step_ = 0.0;
   double last_error_ = 0.0;
-  double contraction_ = 1.0;  // θ/(1 − θ) of the last converged Newton solve, for the next one's first test
   bool initialized_ = false;
   // Workspace of the step being attempted (the trial state at t_{n+1}).
   VecX trial_q_, trial_v_, trial_acceleration_, trial_pseudo_, increment_, base_increment_;
   VecX step_pseudo_;  // a_n rescaled to the step being tried (PrepareStep)
-  VecX accumulated_, scale_;  // Σ increments since the start, and its running largest |·|
+  VecX previous_acceleration_;
+  double contraction_ = 1.0;  // θ/(1 − θ) of the last converged Newton solve (Iterate)  // v̇_{n−1}, for the predictor (empty at a start)
+  VecX accumulated_, scale_;
+  VecX weights_;  // 1/(atol + rtol s_i) of the error norm  // Σ increments since the start, and its running largest |·|
 };
 
 }  // namespace drillflex::solvers

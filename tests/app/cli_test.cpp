@@ -220,8 +220,11 @@ TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
   const fs::path out = FreshDirectory("vibration");
   const RunResult result = RunDrillflex("vibration " + kImbalanceCase + " -o " + out.string());
   ASSERT_EQ(result.status, 0) << result.output;
-  EXPECT_THAT(result.output, HasSubstr("critical RPMs: 311.7 rpm"));
+  EXPECT_THAT(result.output, HasSubstr("critical RPMs, most severe first"));
+  EXPECT_THAT(result.output, HasSubstr("311.7 rpm: largest amplitude"));
+  EXPECT_THAT(result.output, HasSubstr("imbalance 1×"));
   EXPECT_THAT(result.output, HasSubstr("safe windows"));
+  EXPECT_THAT(result.output, HasSubstr("reduced basis"));
   std::ifstream csv(out / "vibration.csv");
   std::string header;
   std::getline(csv, header);
@@ -234,7 +237,7 @@ TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
   ASSERT_TRUE(json.contains("vibration"));
   const auto& vibration = json["vibration"];
   for (const char* key : {"rpm", "max_lateral_displacement", "max_bending_stress", "max_contact_force", "critical_rpm",
-                          "safe_windows"}) {
+                          "safe_windows", "critical_speeds", "quietest_windows", "method", "basis_size"}) {
     EXPECT_TRUE(vibration.contains(key)) << key;
   }
   EXPECT_EQ(vibration["rpm"].size(), 1201u);
@@ -243,6 +246,9 @@ TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
   EXPECT_FALSE(vibration.contains("max_clearance_ratio"));
   ASSERT_EQ(vibration["safe_windows"].size(), 1u);
   EXPECT_NEAR(vibration["safe_windows"][0]["from"].get<double>(), 280.0, 1e-9);
+  ASSERT_EQ(vibration["critical_speeds"].size(), 1u);
+  EXPECT_EQ(vibration["critical_speeds"][0]["excitation"].get<int>(), 0);
+  EXPECT_EQ(vibration["method"].get<std::string>(), "reduced");
   EXPECT_FALSE(json.contains("modes"));
 }
 
