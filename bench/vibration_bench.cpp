@@ -65,6 +65,8 @@ void Sweep(benchmark::State& state, const std::string& path, bool static_equilib
   state.counters["critical_rpms"] = static_cast<double>(result.critical_rpm.size());
   state.counters["peak_MB"] = PeakMemoryMb();
   state.counters["basis_size"] = result.basis_size;
+  state.counters["check_error"] = result.reduced_check_error;
+  state.counters["reduced"] = result.method == analyses::VibrationMethod::Reduced ? 1.0 : 0.0;
 }
 
 void BM_Example_Sweep(benchmark::State& state) { Sweep(state, SourcePath("examples/rotary-bha-build/case.yaml"), true); }

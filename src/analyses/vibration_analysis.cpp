@@ -432,7 +432,32 @@ std::vector<Amplitudes> SolveSweep(std::vector<SweepTask> tasks, const std::vect
   return std::move(sums[0]);
 }
 
-// The solvers of the sweep, one a thread; reduced: one projection shared by all.
+// The largest relative error ‖X_r − X‖/‖X‖ of the reduced solve against the direct one, over the load
+// patterns at kReducedCheckPoints frequencies spread evenly over the sweep's sorted frequencies.
+double CheckReducedSolver(const SweepSystem& sweep, const solvers::ProjectedHarmonicSolver& reduced,
+                          const std::vector<SweepTask>& tasks, const MatX& patterns) {
+  std::vector<double> frequencies;
+  for (const SweepTask& task : tasks) frequencies.push_back(task.frequency);
+  std::sort(frequencies.begin(), frequencies.end());
+  solvers::HarmonicSolver direct(sweep.system, sweep.terms);
+  const solvers::ComplexMat loads = patterns.cast<std::complex<double>>();
+  double largest = 0.0;
+  for (int k = 0; k < kReducedCheckPoints; ++k) {
+    const auto at = static_cast<std::size_t>((k + 0.5) / kReducedCheckPoints * static_cast<double>(frequencies.size()));
+    const double frequency = frequencies[std::min(at, frequencies.size() - 1)];
+    const std::vector<solvers::FrequencyTermCoefficients> coefficients = SweepTermCoefficients(sweep, frequency);
+    const solvers::ComplexMat reference = direct.Solve(frequency, loads, 0.0, coefficients);
+    const solvers::ComplexMat approximation = reduced.Solve(frequency, loads, 0.0, coefficients);
+    for (Eigen::Index c = 0; c < loads.cols(); ++c) {
+      const double size = reference.col(c).norm();
+      if (size > 0.0) largest = std::max(largest, (approximation.col(c) - reference.col(c)).norm() / size);
+    }
+  }
+  return largest;
+}
+
+// The solvers of the sweep, one a thread; reduced: one projection shared by all, checked against
+// the direct solve at a few frequencies (the sweep is solved directly when it misses).
 std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemModel& model, const model::LateralFluid& fluid,
                                                          const VecX& q, const VibrationSettings& settings,
                                                          const std::vector<ComplexVec>& unit_loads,
@@ -461,6 +486,14 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
     result.basis_size = static_cast<int>(basis.vectors.cols());
     reduced = std::make_shared<const solvers::ProjectedHarmonicSolver>(sweep->system, sweep->terms, std::move(basis.vectors),
                                                                         SweepTermCoefficients(*sweep, reference));
+    result.reduced_check_error = CheckReducedSolver(*sweep, *reduced, tasks, patterns);
+    if (result.reduced_check_error > kReducedCheckTolerance) {
+      reduced.reset();
+      result.method = VibrationMethod::Direct;
+      result.method_note = fmt::format("the reduced basis missed the direct solve by {:.3g} % at a check frequency "
+                                       "(tolerance {:.3g} %): solved directly",
+                                       100.0 * result.reduced_check_error, 100.0 * kReducedCheckTolerance);
+    }
   }
   std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(threads));
   for (auto& solver : solvers) {

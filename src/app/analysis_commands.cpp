@@ -183,7 +183,8 @@ void PrintVibration(const io::Case& c, const analyses::VibrationResult& result) 
     std::cout << fmt::format("  solved on a reduced basis of {} vectors (method: direct for the full system)\n",
                              result.basis_size);
   } else {
-    std::cout << "  solved on the full system (a sparse LU per frequency)\n";
+    std::cout << "  solved on the full system (a sparse LU per frequency)"
+              << (result.method_note.empty() ? "" : ": " + result.method_note) << "\n";
   }
   const auto peak = std::max_element(result.max_lateral_displacement.begin(), result.max_lateral_displacement.end());
   const std::size_t i = static_cast<std::size_t>(peak - result.max_lateral_displacement.begin());

@@ -101,6 +101,8 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
                 {"closed_contacts", result.closed_contacts},
                 {"method", result.method == analyses::VibrationMethod::Reduced ? "reduced" : "direct"}};
   if (result.method == analyses::VibrationMethod::Reduced) block["basis_size"] = result.basis_size;
+  if (result.basis_size > 0) block["reduced_check_error"] = result.reduced_check_error;
+  if (!result.method_note.empty()) block["method_note"] = result.method_note;
   if (ratio) block["max_clearance_ratio"] = clearance;
   files.Add("vibration.csv", table.ToString());
   files.json()["vibration"] = block;

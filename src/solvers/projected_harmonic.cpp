@@ -16,6 +16,21 @@ namespace {
 
 using Complex = std::complex<double>;
 
+// Eigen's own OpenMP matrix products for the duration of a scope: off. The setup's products (n × r
+// blocks) are split evenly over the threads and wait for the slowest: with the other core busy the
+// bundled example's setup took 4 s on two threads against 0.3 s on one (measured); the sweep
+// shares its frequencies among threads itself (analyses/vibration_analysis.cpp).
+class SerialEigenProducts {
+ public:
+  SerialEigenProducts() : threads_(Eigen::nbThreads()) { Eigen::setNbThreads(1); }
+  ~SerialEigenProducts() { Eigen::setNbThreads(threads_); }
+  SerialEigenProducts(const SerialEigenProducts&) = delete;
+  SerialEigenProducts& operator=(const SerialEigenProducts&) = delete;
+
+ private:
+  int threads_;
+};
+
 // Removes from `column` its M-projection on the first `filled` columns of `basis` (classical
 // Gram–Schmidt, twice: Kahan's "twice is enough", Parlett, The Symmetric Eigenvalue Problem,
 // §6.9) and returns its M-norm after that.
@@ -79,6 +94,7 @@ KrylovBasis BuildKrylovBasis(const SparseMat& K, const SparseMat& M, const MatX&
       options.lowest_frequency > options.highest_frequency || options.shifts < 1 || options.depth < 1) {
     throw LogicError("BuildKrylovBasis: needs 0 <= lowest <= highest frequency, highest > 0, shifts and depth >= 1");
   }
+  const SerialEigenProducts serial;
   KrylovBasis basis;
   basis.vectors.resize(n, 0);
   Eigen::Index filled = 0;
@@ -129,6 +145,7 @@ ProjectedHarmonicSolver::ProjectedHarmonicSolver(const LinearSystem& system, con
   if (!reference.empty() && reference.size() != terms.size()) {
     throw LogicError("ProjectedHarmonicSolver: one reference coefficient pair per term");
   }
+  const SerialEigenProducts serial;
   stiffness_ = Project(system.stiffness, basis_);
   mass_ = Project(system.mass, basis_);
   damping_ = Project(system.damping, basis_);

@@ -7,7 +7,8 @@
 // Tolerances (issue 5's line of the reduced sweep): the critical RPMs within 0.5 %, the amplitudes at
 // the direct sweep's peaks within 2 %, and over the whole sweep the largest lateral displacement,
 // clearance ratio and bending stress within 1 % (measured: 0.002 %, 0.08 %, 0.012 % with the
-// default basis of 20 shifts × 2 steps).
+// default basis of 20 shifts × 2 steps). A basis far too small is caught by the check against the
+// direct solve and the sweep runs directly.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -65,6 +66,15 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
     EXPECT_NEAR(reduced.max_clearance_ratio[at], direct.max_clearance_ratio[at], 0.02 * direct.max_clearance_ratio[at])
         << direct.critical_rpm[k] / kRpm << " rpm";
   }
+  EXPECT_LT(reduced.reduced_check_error, analyses::kReducedCheckTolerance);
+  // A basis far too small (the static block and one shift) misses the check: the sweep runs directly.
+  analyses::VibrationSettings poor = bench::ThreeExcitationSweep(analyses::VibrationMethod::Reduced);
+  poor.basis_shifts = poor.basis_depth = 1;
+  const auto fallback = analyses::RunVibration(built, input, fluid, q, poor);
+  EXPECT_GT(fallback.reduced_check_error, analyses::kReducedCheckTolerance);
+  EXPECT_EQ(fallback.method, analyses::VibrationMethod::Direct);
+  EXPECT_FALSE(fallback.method_note.empty());
+  EXPECT_LT(LargestRelativeError(fallback.max_lateral_displacement, direct.max_lateral_displacement), 1e-9);
 }
 
 }  // namespace
