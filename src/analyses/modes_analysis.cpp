@@ -5,8 +5,8 @@
 #include <optional>
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 
+#include "core/dense_eigen.hpp"
 #include "core/error.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
@@ -257,16 +257,16 @@ int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const Li
   const MatX fields = RigidFields(model, q);
   const MatX stiffness = fields.transpose() * (system.stiffness * fields);
   const MatX mass = fields.transpose() * (system.mass * fields);
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(0.5 * (stiffness + stiffness.transpose()),
-                                                        0.5 * (mass + mass.transpose()));
+  const DenseEigenpairs solver = GeneralizedSymmetricEigen(0.5 * (stiffness + stiffness.transpose()),
+                                                           0.5 * (mass + mass.transpose()), false);
   double scale = 0.0;
   for (Eigen::Index i = 0; i < system.stiffness.rows(); ++i) {
     const double m = system.mass.coeff(i, i);
     if (m > 0.0) scale = std::max(scale, std::abs(system.stiffness.coeff(i, i)) / m);
   }
   int rigid = 0;
-  for (Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i) {
-    if (std::abs(solver.eigenvalues()[i]) < 1e-9 * scale) ++rigid;
+  for (Eigen::Index i = 0; i < solver.values.size(); ++i) {
+    if (std::abs(solver.values[i]) < 1e-9 * scale) ++rigid;
   }
   return rigid;
 }

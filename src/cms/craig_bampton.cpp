@@ -1,12 +1,12 @@
 #include "cms/craig_bampton.hpp"
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "core/dense_eigen.hpp"
 #include "core/error.hpp"
 
 namespace drillflex::cms {
@@ -36,8 +36,8 @@ Eigenpairs LowestModes(const Eigen::LLT<MatX>& llt, const MatX& mass, int count)
   const MatX l_inv_m = llt.matrixL().solve(mass);
   MatX c = llt.matrixL().solve(l_inv_m.transpose());
   c = 0.5 * (c + c.transpose());
-  const Eigen::SelfAdjointEigenSolver<MatX> solver(c);
-  const VecX& mu = solver.eigenvalues();  // ascending: the largest μ = 1/λ is the lowest λ
+  const DenseEigenpairs solver = SymmetricEigen(c);
+  const VecX& mu = solver.values;  // ascending: the largest μ = 1/λ is the lowest λ
   const int n = static_cast<int>(mu.size());
   const double mu_max = n > 0 ? mu(n - 1) : 0.0;
   int massive = 0;
@@ -47,7 +47,7 @@ Eigenpairs LowestModes(const Eigen::LLT<MatX>& llt, const MatX& mass, int count)
     const double m = mu(n - 1 - j);
     out.eigenvalues(j) = 1.0 / m;
     // x = L⁻ᵀ y has xᵀ K x = 1 and xᵀ M x = μ: divide by sqrt(μ).
-    out.vectors.col(j) = llt.matrixU().solve(solver.eigenvectors().col(n - 1 - j)) / std::sqrt(m);
+    out.vectors.col(j) = llt.matrixU().solve(solver.vectors.col(n - 1 - j)) / std::sqrt(m);
   }
   return out;
 }
@@ -169,9 +169,9 @@ void AlignModes(const VecX& eigenvalues, MatX& x, MatX& u) {
     if (!pair || triple) continue;
     MatX v(u.rows() / 6, 2);  // the v (y) displacement of every node in both modes
     for (int k = 0; k < v.rows(); ++k) v.row(k) = u.block(6 * k + 1, j, 1, 2);
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> split(v.transpose() * v);
+    const DenseEigenpairs split = SymmetricEigen(v.transpose() * v);
     Eigen::Matrix2d rotation;  // columns: most v-content first
-    rotation << split.eigenvectors().col(1), split.eigenvectors().col(0);
+    rotation << split.vectors.col(1), split.vectors.col(0);
     x.middleCols(j, 2) = x.middleCols(j, 2) * rotation;
     u.middleCols(j, 2) = u.middleCols(j, 2) * rotation;
     ++j;

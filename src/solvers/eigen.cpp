@@ -1,7 +1,6 @@
 #include "solvers/eigen.hpp"
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -9,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/dense_eigen.hpp"
 #include "core/error.hpp"
 #include "solvers/eigen_detail.hpp"
 
@@ -40,12 +40,12 @@ bool SolveDenseDefinite(const MatX& a, const MatX& b, DenseDefinitePairs& pairs)
   // C = L⁻¹ A L⁻ᵀ from two triangular solves.
   MatX c = cholesky.matrixL().solve(a);
   c = cholesky.matrixL().solve(c.transpose()).transpose();
-  Eigen::SelfAdjointEigenSolver<MatX> solver(c, Eigen::ComputeEigenvectors);
-  if (solver.info() != Eigen::Success) {
+  const DenseEigenpairs solved = SymmetricEigen(c);
+  if (!solved.converged) {
     throw SolverError(fmt::format("dense eigen solver ({} DOF): no convergence", a.rows()));
   }
-  pairs.values = solver.eigenvalues();
-  pairs.vectors = cholesky.matrixU().solve(solver.eigenvectors());
+  pairs.values = solved.values;
+  pairs.vectors = cholesky.matrixU().solve(solved.vectors);
   return true;
 }
 
@@ -131,12 +131,12 @@ ComplexModes SolveDampedModes(const SparseMat& K, const SparseMat& D, const Spar
     throw LogicError("SolveDampedModes: K, D and M must be square and of the same size");
   }
   detail::CheckSymmetric(M, n, "M");
-  Eigen::EigenSolver<MatX> solver(StateSpaceMatrix(K, D, M), true);
-  if (solver.info() != Eigen::Success) {
+  const GeneralEigenpairs solver = GeneralEigen(StateSpaceMatrix(K, D, M));
+  if (!solver.converged) {
     throw SolverError(fmt::format("damped modal solver ({} DOF): the eigen solver did not converge",
                                   n));
   }
-  const Eigen::VectorXcd all_values = solver.eigenvalues();
+  const Eigen::VectorXcd all_values = solver.values;
   std::vector<Eigen::Index> kept;
   for (Eigen::Index i = 0; i < all_values.size(); ++i) {
     if (all_values[i].imag() >= 0.0) kept.push_back(i);  // one of each conjugate pair
@@ -154,7 +154,7 @@ ComplexModes SolveDampedModes(const SparseMat& K, const SparseMat& D, const Spar
   modes.damping_ratios.resize(m);
   for (Eigen::Index j = 0; j < m; ++j) {
     const std::complex<double> s = all_values[kept[static_cast<size_t>(j)]];
-    Eigen::VectorXcd x = solver.eigenvectors().col(kept[static_cast<size_t>(j)]).head(n);
+    Eigen::VectorXcd x = solver.vectors.col(kept[static_cast<size_t>(j)]).head(n);
     Eigen::Index largest = 0;
     x.cwiseAbs().maxCoeff(&largest);
     x *= std::abs(x[largest]) / x[largest];  // largest entry real and positive

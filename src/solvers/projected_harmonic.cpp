@@ -1,6 +1,5 @@
 #include "solvers/projected_harmonic.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/dense_eigen.hpp"
 #include "core/error.hpp"
 #include "solvers/linear_solver.hpp"
 
@@ -158,13 +158,13 @@ ProjectedHarmonicSolver::ProjectedHarmonicSolver(const LinearSystem& system, con
   // The Ritz modes of (K_r, M_ref,r).
   MatX reference_mass = mass_;
   for (std::size_t t = 0; t < reference.size(); ++t) reference_mass += reference[t].mass * terms_[t];
-  const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> ritz(0.5 * (stiffness_ + stiffness_.transpose()),
-                                                             0.5 * (reference_mass + reference_mass.transpose()));
-  if (ritz.info() != Eigen::Success) {
+  const DenseEigenpairs ritz = GeneralizedSymmetricEigen(0.5 * (stiffness_ + stiffness_.transpose()),
+                                                         0.5 * (reference_mass + reference_mass.transpose()));
+  if (!ritz.converged) {
     throw SolverError("reduced harmonic response: the projected mass is not positive definite");
   }
-  const MatX& psi = ritz.eigenvectors();
-  ritz_eigenvalues_ = ritz.eigenvalues();
+  const MatX& psi = ritz.vectors;
+  ritz_eigenvalues_ = ritz.values;
   basis_ = basis_ * psi;
   for (MatX* matrix : {&stiffness_, &mass_, &damping_, &gyroscopic_}) {
     if (matrix->size() > 0) *matrix = psi.transpose() * (*matrix) * psi;

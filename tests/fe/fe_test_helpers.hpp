@@ -4,11 +4,11 @@
 #pragma once
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <vector>
 
 #include "core/types.hpp"
+#include "core/dense_eigen.hpp"
 
 namespace drillflex::fe::testing {
 
@@ -35,9 +35,7 @@ inline VecX LowestEigenvalues(const MatX& stiffness, const MatX& b, int count) {
   const Eigen::LLT<MatX> llt(stiffness);
   const MatX l_inv_b = llt.matrixL().solve(b);
   const MatX c = llt.matrixL().solve(l_inv_b.transpose());
-  const Eigen::SelfAdjointEigenSolver<MatX> solver(0.5 * (c + c.transpose()),
-                                                   Eigen::EigenvaluesOnly);
-  const VecX mu = solver.eigenvalues();  // ascending: the largest μ is the lowest λ
+  const VecX mu = SymmetricEigen(0.5 * (c + c.transpose()), false).values;  // ascending: the largest μ is the lowest λ
   VecX lambda(count);
   for (int j = 0; j < count; ++j) lambda(j) = 1.0 / mu(mu.size() - 1 - j);
   return lambda;

@@ -4,7 +4,6 @@
 // supports and loads, and nothing of K, M or the static deflection in its own frame may change).
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -18,6 +17,7 @@
 #include "rigid_rotation.hpp"
 #include "solvers/eigen.hpp"
 #include "solvers/newton.hpp"
+#include "core/dense_eigen.hpp"
 
 namespace drillflex::model {
 namespace {
@@ -165,7 +165,7 @@ double MaxRelativeDifference(const VecX& a, const VecX& b, double scale) {
 
 // The sorted eigenvalues of a symmetric matrix.
 VecX SymmetricEigenvalues(const SparseMat& matrix) {
-  return Eigen::SelfAdjointEigenSolver<MatX>(MatX(matrix), Eigen::EigenvaluesOnly).eigenvalues();
+  return SymmetricEigen(MatX(matrix), false).values;
 }
 
 TEST(Rotation, CantileverStiffnessAndMassInvariantUnderPlacement) {

@@ -6,7 +6,6 @@
 // failures that stop with a SolverError.
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -16,6 +15,7 @@
 #include "dynamic_toy_problems.hpp"
 #include "solvers/generalized_alpha.hpp"
 #include "toy_problems.hpp"
+#include "core/dense_eigen.hpp"
 
 namespace drillflex::solvers {
 namespace {
@@ -33,12 +33,12 @@ Eigen::Matrix3d AmplificationMatrix(const GeneralizedAlphaParameters& p, double 
   return lhs.inverse() * rhs;
 }
 
-double SpectralRadius(const Eigen::Matrix3d& a) { return a.eigenvalues().cwiseAbs().maxCoeff(); }
+double SpectralRadius(const Eigen::Matrix3d& a) { return GeneralEigen(a, false).values.cwiseAbs().maxCoeff(); }
 
 // The principal (complex) roots' phase per step, rad (the spurious root is real).
 double PrincipalPhase(const Eigen::Matrix3d& a) {
   double phase = 0.0;
-  for (const auto& lambda : a.eigenvalues()) {
+  for (const auto& lambda : GeneralEigen(a, false).values) {
     if (std::abs(lambda.imag()) > 1e-12) phase = std::abs(std::arg(lambda));
   }
   return phase;
@@ -58,8 +58,8 @@ struct Modes {
 };
 
 Modes ModesOf(const LinearOscillator& problem) {
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> eigen(problem.stiffness(), problem.mass());
-  return {eigen.eigenvalues().cwiseSqrt(), eigen.eigenvectors()};
+  const DenseEigenpairs eigen = GeneralizedSymmetricEigen(problem.stiffness(), problem.mass());
+  return {eigen.values.cwiseSqrt(), eigen.vectors};
 }
 
 // Mean period (s) of a modal coordinate y(t) over its upward zero crossings, each located by the
@@ -221,7 +221,7 @@ TEST(GeneralizedAlpha, NumericalDampingMatchesTheSpectralRadius) {
     const double slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
     // The principal roots: the complex pair (or, should they be real, the largest root).
     double principal = 0.0;
-    for (const auto& lambda : a.eigenvalues()) {
+    for (const auto& lambda : GeneralEigen(a, false).values) {
       if (std::abs(lambda.imag()) > 1e-12) principal = std::max(principal, std::abs(lambda));
     }
     if (principal == 0.0) principal = SpectralRadius(a);
