@@ -12,3 +12,12 @@ function(drillflex_layer layer)
     target_link_libraries(drillflex_${layer} INTERFACE ${ARG_DEPENDS})
   endif()
 endfunction()
+
+# drillflex_test_code(<target>)
+# A test or validation executable: with DRILLFLEX_SANITIZE and DRILLFLEX_SANITIZE_TESTS off, its own
+# sources compile without the sanitizers' instrumentation (the engine it links stays instrumented).
+function(drillflex_test_code target)
+  if(DRILLFLEX_SANITIZE AND NOT DRILLFLEX_SANITIZE_TESTS)
+    set_property(TARGET ${target} PROPERTY DRILLFLEX_TEST_CODE ON)
+  endif()
+endfunction()
