@@ -65,9 +65,18 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   const StaticNodeResult& top = nodes.back();
   sample.surface_speed = SpinRate(model, poses, v, stations.back());
   sample.bit_speed = SpinRate(model, poses, v, stations.front());
-  sample.surface_torque = top.torque;
+  // The section torque M_x is what the string above exerts about +x (up-hole): the torque turning
+  // the string below clockwise (looking down-hole) is −M_x.
+  sample.surface_torque = -top.torque;
   sample.hook_load = top.axial_force;
-  // What the drives deliver, when they hold the top.
+  sample.weight_on_bit = -bit.axial_force;
+  sample.torque_on_bit = -bit.torque;
+  // What the drives deliver, when they hold the top: the force on the top node itself (the top
+  // element's elastic force is that of the section half an element in, and with a few modes a body
+  // its end strain is off by tens of % under distributed inertia loads). The springs are stiff (a
+  // support's), so their force carries k times the positions' Newton error: ~1e-3 × tolerance × 1e-3
+  // rad or m (transient_analysis.cpp, TransientIntegratorOptions), e.g. 3 N·m for 5 in pipe at the
+  // default tolerance.
   if (built.top_drive_element >= 0) {
     const auto& drive = static_cast<const model::TopDriveElement&>(*model.elements()[built.top_drive_element]);
     sample.surface_torque = drive.Torque(model.StateOf(drive, poses, v, time, 1.0));
@@ -76,8 +85,6 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
     const auto& block = static_cast<const model::BlockElement&>(*model.elements()[built.block_element]);
     sample.hook_load = block.HookLoad(model.StateOf(block, poses, v, time, 1.0));
   }
-  sample.weight_on_bit = -bit.axial_force;
-  sample.torque_on_bit = bit.torque;
   const model::Energies energies = model.ComputeEnergies(q, v, 1.0);
   sample.kinetic_energy = energies.kinetic;
   sample.potential_energy = energies.elastic + energies.potential;

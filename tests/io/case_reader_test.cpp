@@ -298,8 +298,8 @@ INSTANTIATE_TEST_SUITE_P(
                      4, "analyses.transient.top_drive.ramp", "must not be negative"},
         RejectedCase{"block without a setting", std::string(kGoodString) + "analyses:\n  transient: {block: {}}\n",
                      4, "analyses.transient.block", "neither 'velocity' nor 'hook_load'"},
-        RejectedCase{"unknown drive key", std::string(kGoodString) + "analyses:\n  transient: {top_drive: {rmp: 60}}\n",
-                     4, "analyses.transient.top_drive.rmp", "did you mean 'rpm'"},
+        RejectedCase{"unknown drive key", std::string(kGoodString) + "analyses:\n  transient: {top_drive: {rpms: 60}}\n",
+                     4, "analyses.transient.top_drive.rpms", "did you mean 'rpm'"},
         RejectedCase{"string longer than well", kWellHead + "  hole: 12.25\nstring:\n  - {type: pipe, od: 5, id: 4, length: 2000}\n",
                      8, "string", "longer than the well"}),
     [](const ::testing::TestParamInfo<RejectedCase>& info) {
