@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/drives.hpp"
 #include "model/string_config.hpp"
 
 namespace drillflex::analyses {
@@ -84,6 +85,9 @@ struct TransientSettings {
   // Loads (string frame, as `loads`) that act in the start equilibrium only and are removed at
   // t = 0: a string released from a deflected shape (free vibration).
   std::vector<model::Load> initial_loads;
+  // The drives at the top (model/drives.hpp); none: the supports hold the top as in statics.
+  std::optional<model::TopDrive> top_drive;
+  std::optional<model::BlockDrive> block;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

@@ -321,18 +321,21 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
   if (requested.transient) {
     const analyses::TransientSettings settings = c.analyses.transient.value_or(analyses::TransientSettings{});
     // The equilibrium already solved for the other analyses, when the start is that equilibrium.
+    // (That one is at rest: not with a rotating string's prescribed friction.)
     const bool reuse_equilibrium = (requested.static_analysis || requested.modes || requested.vibration) &&
                                    settings.start == analyses::TransientStart::Equilibrium &&
-                                   settings.initial_loads.empty();
+                                   settings.initial_loads.empty() && !input.static_sliding;
     analyses::StaticSettings static_settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
     if (options.verbose) static_settings.log = [](const std::string& line) { std::cerr << line << '\n'; };
     const VecX start_q = reuse_equilibrium
                              ? equilibrium
                              : analyses::TransientStartPositions(input, built, cache, settings, static_settings);
+    // The model in motion: with the drives, the friction following the motion (same coordinates).
+    const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache);
     analyses::TransientResult result;
     {
       ProgressBar bar;
-      result = analyses::RunTransient(built, start_q, settings,
+      result = analyses::RunTransient(moving, start_q, settings,
                                       [&bar](double time, double duration) { bar.Update(time, duration); });
     }
     PrintTransient(c, result);

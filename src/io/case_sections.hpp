@@ -19,7 +19,10 @@ model::ModelSettings ReadModelSection(const YamlView& node);
 std::vector<model::Support> ReadSupportsSection(const YamlView& node);
 std::vector<model::Load> ReadLoadsSection(const YamlView& node);
 model::Operation ReadOperationSection(const YamlView& node);
-analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node);
+// `operation` gives the drives' defaults (its rpm and hook load).
+analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation);
+model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& operation);
+model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operation);
 
 // Checks that need more than one section: the string fits the hole at every MD, the string does
 // not reach above the surface, supports and loads lie on the string. `root` locates messages.
