@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,7 @@
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
+#include "analyses/transient_model.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "app/commands.hpp"
 #include "cms/reduction_cache.hpp"
@@ -329,10 +331,14 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     const VecX start_q = reuse_equilibrium
                              ? equilibrium
                              : analyses::TransientStartPositions(input, built, cache, settings, static_settings);
+    // With a bit-rock law the transient integrates its own model (the same coordinates).
+    std::optional<model::BuiltModel> rebuilt;
+    if (settings.bit_rock) rebuilt.emplace(model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache));
+    const model::BuiltModel& transient_model = rebuilt ? *rebuilt : built;
     analyses::TransientResult result;
     {
       ProgressBar bar;
-      result = analyses::RunTransient(built, start_q, settings,
+      result = analyses::RunTransient(transient_model, start_q, settings,
                                       [&bar](double time, double duration) { bar.Update(time, duration); });
     }
     PrintTransient(c, result);

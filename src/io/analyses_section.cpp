@@ -114,7 +114,7 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
 analyses::TransientSettings ReadTransient(const YamlView& node) {
   node.ExpectMap("the transient settings {duration, output_interval, probes}");
   node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step", "rho_infinity", "tolerance", "start",
-                      "initial_loads"});
+                      "initial_loads", "bit_rock"});
   analyses::TransientSettings settings;
   settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
   settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
@@ -140,6 +140,7 @@ analyses::TransientSettings ReadTransient(const YamlView& node) {
       loads->Fail("initial loads need the start from the equilibrium (start: equilibrium), not the reference");
     }
   }
+  if (const auto bit_rock = node.OptionalChild("bit_rock")) settings.bit_rock = ReadBitRockSection(*bit_rock);
   if (const auto probes = node.OptionalChild("probes")) {
     probes->ExpectSequence("probe distances from the bit");
     for (std::size_t i = 0; i < probes->size(); ++i) {

@@ -20,6 +20,8 @@ std::vector<model::Support> ReadSupportsSection(const YamlView& node);
 std::vector<model::Load> ReadLoadsSection(const YamlView& node);
 model::Operation ReadOperationSection(const YamlView& node);
 analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node);
+// `analyses.transient.bit_rock` (io/bit_rock_section.cpp).
+model::BitRockParameters ReadBitRockSection(const YamlView& node);
 
 // Checks that need more than one section: the string fits the hole at every MD, the string does
 // not reach above the surface, supports and loads lie on the string. `root` locates messages.

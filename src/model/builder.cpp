@@ -360,11 +360,19 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
     elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
   }
+  int bit_rock_element = -1;
+  if (input.bit_rock) {
+    BitRockParameters parameters = *input.bit_rock;
+    if (parameters.radius == 0.0) parameters.radius = 0.5 * input.string.components.front().outer_diameter;
+    bit_rock_element = static_cast<int>(elements.size());
+    elements.push_back(std::make_unique<BitRockElement>(&placed.front(), parameters));
+  }
   if (force_scale == 0.0) force_scale = placed.front().bending_rigidity / (length * length);
 
   SystemModel system(std::move(bodies), std::move(elements), length);
   system.set_force_scale(force_scale);
-  return BuiltModel{std::move(system), std::move(support_elements), std::move(contact_elements), force_scale};
+  return BuiltModel{std::move(system), std::move(support_elements), std::move(contact_elements), force_scale,
+                    bit_rock_element};
 }
 
 }  // namespace drillflex::model

@@ -11,6 +11,7 @@
 
 #include "cms/reduction_cache.hpp"
 #include "fe/material.hpp"
+#include "model/bit_rock.hpp"
 #include "model/spring_elements.hpp"
 #include "model/string_config.hpp"
 #include "model/wall_contact.hpp"
@@ -36,6 +37,9 @@ struct ModelInput {
   // wall contact's friction follows this prescribed sliding (model/wall_contact.hpp); without it,
   // the friction follows the state's velocities (none at rest).
   std::optional<PrescribedSliding> static_sliding;
+  // The rock's reaction on the bit node as a law of its motion (model/bit_rock.hpp; a transient's
+  // `bit_rock`); a radius of 0 is taken as half the OD of the first component.
+  std::optional<BitRockParameters> bit_rock;
 };
 
 // The supports a string in a well gets when the case gives none (method.md §8, the static BHA
@@ -69,6 +73,7 @@ struct BuiltModel {
   std::vector<int> support_elements;  // element index of each case support
   std::vector<int> contact_elements;  // element index of each wall contact, from the bit upward
   double force_scale = 0.0;           // a typical applied force, N (Newton tolerance)
+  int bit_rock_element = -1;          // element index of the bit-rock interaction (−1: none)
 };
 
 // Friction regularization velocity v_ε of the wall contacts, m/s (method.md §6): below it the
