@@ -4,10 +4,7 @@ namespace drillflex::analyses {
 
 model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings) {
   model::ModelInput out = input;
-  if (!settings.bit_rock) return out;
-  out.bit_rock = settings.bit_rock;
-  out.operation.torque_on_bit = 0.0;
-  if (settings.bit_rock->law == model::BitRockLaw::Detournay) out.operation.weight_on_bit = 0.0;
+  out.bit_rock = settings.bit_rock;  // the builder then leaves out the bit loads the law replaces
   return out;
 }
 

@@ -341,12 +341,16 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   }
   // Point loads on the nearest node (at a joint, the upper body's start node). The formation
   // pushes the bit up-hole with the WOB and resists its rotation with the torque on bit.
+  // A bit-rock law gives the rock's reaction from the bit's motion instead (model/bit_rock.hpp):
+  // the torque on bit, and under Detournay's law the WOB too.
   std::vector<Load> point_loads = input.loads;
-  if (input.operation.weight_on_bit != 0.0 || input.operation.torque_on_bit != 0.0) {
+  const double wob = input.bit_rock && input.bit_rock->law == BitRockLaw::Detournay ? 0.0 : input.operation.weight_on_bit;
+  const double tob = input.bit_rock ? 0.0 : input.operation.torque_on_bit;
+  if (wob != 0.0 || tob != 0.0) {
     Load bit;
     bit.at = 0.0;
-    bit.force = Vec3(input.operation.weight_on_bit, 0.0, 0.0);
-    bit.moment = Vec3(input.operation.torque_on_bit, 0.0, 0.0);
+    bit.force = Vec3(wob, 0.0, 0.0);
+    bit.moment = Vec3(tob, 0.0, 0.0);
     point_loads.push_back(bit);
   }
   for (const Load& load : point_loads) {

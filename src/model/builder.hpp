@@ -38,7 +38,8 @@ struct ModelInput {
   // the friction follows the state's velocities (none at rest).
   std::optional<PrescribedSliding> static_sliding;
   // The rock's reaction on the bit node as a law of its motion (model/bit_rock.hpp; a transient's
-  // `bit_rock`); a radius of 0 is taken as half the OD of the first component.
+  // `bit_rock`); a radius of 0 is taken as half the OD of the first component. It replaces the
+  // operation's torque on bit, and under Detournay's law its WOB.
   std::optional<BitRockParameters> bit_rock;
 };
 

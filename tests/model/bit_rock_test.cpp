@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <random>
 
 #include "core/error.hpp"
@@ -254,6 +256,31 @@ TEST(BitRockElementTest, BuilderTakesTheRadiusFromTheBitOd) {
   ModelInput none = RodInput(1, 4, 5);
   cms::ReductionCache cache;
   EXPECT_EQ(BuildSystemModel(none, cache).bit_rock_element, -1);
+}
+
+// At rest the law puts nothing on the bit; what remains of the operation's bit loads shows in the
+// residual's bit entries (−f_ext: −WOB along x, −TOB about x).
+TEST(BitRockElementTest, ReplacesTheOperationsBitLoads) {
+  const auto bit_entries = [](const std::optional<BitRockParameters>& law) {
+    ModelInput input = RodInput(1, 4, 5);
+    input.operation.weight_on_bit = 1000.0;
+    input.operation.torque_on_bit = 300.0;
+    input.bit_rock = law;
+    cms::ReductionCache cache;
+    const BuiltModel built = BuildSystemModel(input, cache);
+    const VecX zero = VecX::Zero(built.system.num_velocities());
+    const VecX r = built.system.Residual(0.0, built.system.ReferencePositions(), zero, zero, 1.0);
+    return std::pair<double, double>(r[0], r[3]);
+  };
+  const auto [plain_wob, plain_tob] = bit_entries(std::nullopt);
+  EXPECT_NEAR(plain_wob, -1000.0, 1e-9);
+  EXPECT_NEAR(plain_tob, -300.0, 1e-9);
+  const auto [friction_wob, friction_tob] = bit_entries(FrictionParameters());
+  EXPECT_NEAR(friction_wob, -1000.0, 1e-9);  // the friction law leaves the WOB applied
+  EXPECT_NEAR(friction_tob, 0.0, 1e-9);
+  const auto [detournay_wob, detournay_tob] = bit_entries(DetournayParameters());
+  EXPECT_NEAR(detournay_wob, 0.0, 1e-9);
+  EXPECT_NEAR(detournay_tob, 0.0, 1e-9);
 }
 
 }  // namespace
