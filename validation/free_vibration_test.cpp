@@ -4,8 +4,6 @@
 // 0.2 %; the total energy over 100 periods with no numerical damping (ρ∞ = 1) within 1e-3 of the
 // energy of the swing.
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,35 +19,6 @@ double FirstCantileverFrequency() {
   const double inertia = kPi * std::pow(kDiameter, 4) / 64.0, area = kPi * kDiameter * kDiameter / 4.0;
   const double beta_l = 1.8751041;
   return beta_l * beta_l / (2.0 * kPi * kLength * kLength) * std::sqrt(kE * inertia / (kRho * area));
-}
-
-// The columns of a CSV file with a header line, by name.
-struct CsvColumns {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> values;
-  const std::vector<double>& operator[](const std::string& name) const {
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      if (names[i] == name) return values[i];
-    }
-    throw std::runtime_error("no column " + name);
-  }
-};
-
-CsvColumns ReadCsv(const std::string& path) {
-  std::ifstream file(path);
-  CsvColumns table;
-  std::string line, cell;
-  std::getline(file, line);
-  std::stringstream header(line);
-  while (std::getline(header, cell, ',')) table.names.push_back(cell);
-  table.values.resize(table.names.size());
-  while (std::getline(file, line)) {
-    std::stringstream row(line);
-    for (std::size_t i = 0; i < table.names.size() && std::getline(row, cell, ','); ++i) {
-      table.values[i].push_back(std::stod(cell));
-    }
-  }
-  return table;
 }
 
 TEST(V8FreeVibration, PeriodWithin02PercentAndEnergyWithin1e3Over100Periods) {

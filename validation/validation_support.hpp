@@ -4,7 +4,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -37,5 +40,34 @@ inline nlohmann::json RunCase(const std::string& command, const std::string& rel
 }
 
 inline double RelativeError(double value, double reference) { return value / reference - 1.0; }
+
+// The columns of a CSV file with a header line, by name.
+struct CsvColumns {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> values;
+  const std::vector<double>& operator[](const std::string& name) const {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (names[i] == name) return values[i];
+    }
+    throw std::runtime_error("no column " + name);
+  }
+};
+
+inline CsvColumns ReadCsv(const std::string& path) {
+  std::ifstream file(path);
+  CsvColumns table;
+  std::string line, cell;
+  std::getline(file, line);
+  std::stringstream header(line);
+  while (std::getline(header, cell, ',')) table.names.push_back(cell);
+  table.values.resize(table.names.size());
+  while (std::getline(file, line)) {
+    std::stringstream row(line);
+    for (std::size_t i = 0; i < table.names.size() && std::getline(row, cell, ','); ++i) {
+      table.values[i].push_back(std::stod(cell));
+    }
+  }
+  return table;
+}
 
 }  // namespace drillflex::validation

@@ -8,6 +8,7 @@
 
 #include "core/types.hpp"
 #include "model/bit_rock.hpp"
+#include "model/drives.hpp"
 #include "model/string_config.hpp"
 
 namespace drillflex::analyses {
@@ -87,8 +88,11 @@ struct TransientSettings {
   std::vector<model::Load> initial_loads;
   // The rock's reaction on the bit as a law of its motion (model/bit_rock.hpp); it takes over from
   // the case's torque on bit (and, for Detournay's law, the WOB), which then act in the start
-  // equilibrium only (TransientModelInput).
+  // equilibrium only (analyses/transient_analysis.hpp, TransientModelInput).
   std::optional<model::BitRockParameters> bit_rock;
+  // The drives at the top (model/drives.hpp); none: the supports hold the top as in statics.
+  std::optional<model::TopDrive> top_drive;
+  std::optional<model::BlockDrive> block;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

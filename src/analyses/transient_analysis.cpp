@@ -10,6 +10,7 @@
 #include "analyses/string_stations.hpp"
 #include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
+#include "model/drive_elements.hpp"
 #include "model/dynamic_problem.hpp"
 
 namespace drillflex::analyses {
@@ -38,11 +39,11 @@ int ContactElementAt(const model::BuiltModel& built, const Station& station) {
   return -1;
 }
 
-// ω_x of a station's node about the string axis (string frame), rad/s.
+// The spin rate of a station's node, clockwise looking down-hole (−ω_x of the string frame), rad/s.
 double SpinRate(const model::SystemModel& model, const std::vector<model::BodyPose>& poses, const VecX& v,
                 const Station& station) {
   const model::Body& body = model.bodies()[station.body];
-  return MapToNode(body, poses[station.body], v, station.node).rotation.x();
+  return -MapToNode(body, poses[station.body], v, station.node).rotation.x();
 }
 
 // The direction of a lateral offset (y right, z high side) from the high side toward the right, [0, 2π).
@@ -64,10 +65,26 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   const StaticNodeResult& top = nodes.back();
   sample.surface_speed = SpinRate(model, poses, v, stations.back());
   sample.bit_speed = SpinRate(model, poses, v, stations.front());
-  sample.surface_torque = top.torque;
+  // The section torque M_x is what the string above exerts about +x (up-hole): the torque turning
+  // the string below clockwise (looking down-hole) is −M_x.
+  sample.surface_torque = -top.torque;
   sample.hook_load = top.axial_force;
   sample.weight_on_bit = -bit.axial_force;
-  sample.torque_on_bit = bit.torque;
+  sample.torque_on_bit = -bit.torque;
+  // What the drives deliver, when they hold the top: the force on the top node itself (the top
+  // element's elastic force is that of the section half an element in, and with a few modes a body
+  // its end strain is off by tens of % under distributed inertia loads). The springs are stiff (a
+  // support's), so their force carries k times the positions' Newton error: ~1e-3 × tolerance × 1e-3
+  // rad or m (transient_analysis.cpp, TransientIntegratorOptions), e.g. 3 N·m for 5 in pipe at the
+  // default tolerance.
+  if (built.top_drive_element >= 0) {
+    const auto& drive = static_cast<const model::TopDriveElement&>(*model.elements()[built.top_drive_element]);
+    sample.surface_torque = drive.Torque(model.StateOf(drive, poses, v, time, 1.0));
+  }
+  if (built.block_element >= 0) {
+    const auto& block = static_cast<const model::BlockElement&>(*model.elements()[built.block_element]);
+    sample.hook_load = block.HookLoad(model.StateOf(block, poses, v, time, 1.0));
+  }
   const model::Energies energies = model.ComputeEnergies(q, v, 1.0);
   sample.kinetic_energy = energies.kinetic;
   sample.potential_energy = energies.elastic + energies.potential;
@@ -119,13 +136,29 @@ solvers::GeneralizedAlphaOptions TransientIntegratorOptions(const TransientSetti
   return options;
 }
 
+model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings) {
+  model::ModelInput transient = input;
+  transient.static_sliding.reset();
+  transient.top_drive = settings.top_drive;
+  transient.block = settings.block;
+  transient.bit_rock = settings.bit_rock;  // the builder then leaves out the bit loads the law replaces
+  return transient;
+}
+
 VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,
                              cms::ReductionCache& cache, const TransientSettings& settings,
                              const StaticSettings& static_settings) {
   if (settings.start == TransientStart::Reference) return built.system.ReferencePositions();
-  if (settings.initial_loads.empty()) return RunStaticInWell(input, built, cache, static_settings).q;
-  // The same string with the initial loads added: the same bodies, so the same coordinates.
+  if (settings.initial_loads.empty() && !input.static_sliding && !input.top_drive && !input.block &&
+      !input.bit_rock) {
+    return RunStaticInWell(input, built, cache, static_settings).q;
+  }
+  // The same string at rest with the initial loads added: the same bodies, so the same coordinates.
   model::ModelInput loaded = input;
+  loaded.static_sliding.reset();
+  loaded.top_drive.reset();
+  loaded.block.reset();
+  loaded.bit_rock.reset();  // at rest on bottom under the case's WOB and TOB
   loaded.loads.insert(loaded.loads.end(), settings.initial_loads.begin(), settings.initial_loads.end());
   const model::BuiltModel start_model = model::BuildSystemModel(loaded, cache);
   if (start_model.system.num_positions() != built.system.num_positions()) {

@@ -4,10 +4,13 @@
 // probe, the lateral displacement, whirl angle, contact force and bending moment.
 //
 // Signals (SI; string frame x up-hole, y right, z high side; case-format.md "Frames and signs"):
-//  * surface / bit speed: the spin rate ω_x of the top / bit node about the string axis, rad/s;
-//  * surface torque, hook load: the torque and axial force (tension positive) in the string at its
-//    top node; WOB: the compression at the bit node (−axial force), TOB: the torque there
-//    (model/internal_forces.hpp, the elastic section forces at the state);
+//  * surface / bit speed: the spin rate −ω_x of the top / bit node about the string axis, rad/s
+//    (clockwise looking down-hole positive, as a drilling engineer reads RPM);
+//  * surface torque, hook load: the torque (−M_x: clockwise positive) and axial force (tension
+//    positive) in the string at its top node; WOB: the compression at the bit node (−axial force),
+//    TOB: the torque there (−M_x) (model/internal_forces.hpp, the elastic section forces at the
+//    state: at an end node those of its element, i.e. the section half an element in); with a top
+//    drive the surface torque is the drive's, with a block the hook load is the block's force;
 //  * at a probe (the string station nearest the given distance from the bit): the lateral
 //    displacement (u_y, u_z) from the undeformed placement, which in a well is the hole's axis; the
 //    whirl angle, the direction of the offset from the hole axis (with a well, wall_offsets.hpp) or
@@ -15,8 +18,12 @@
 //    normal force at the node at (q, v) (damping included; 0 without a contact); the bending
 //    moment magnitude;
 //  * the energies of SystemModel::ComputeEnergies (kinetic; strain plus force-element potential).
-// The drives of the issue (a top-drive ramp, bit–rock interaction) are not modelled yet: the case's
-// loads and supports act as they do in statics, constant in time.
+// The drives (model/drives.hpp, TransientSettings::top_drive and ::block) act at the top node; the
+// case's other loads and supports act as they do in statics, constant in time. The wall friction
+// follows the state's sliding velocity (never a static analysis's prescribed sliding). Speeds and
+// torques are positive clockwise looking down-hole (model/drives.hpp): the surface torque turns the
+// string clockwise while drilling, the TOB is the torque the string delivers to the bit (the
+// formation's resistance, `operation.torque_on_bit`, at rest).
 #pragma once
 
 #include <functional>
@@ -40,12 +47,12 @@ struct ProbeSample {
 
 struct TransientSample {
   double time = 0.0;            // s
-  double surface_speed = 0.0;   // rad/s
-  double surface_torque = 0.0;  // N·m
-  double hook_load = 0.0;       // N, tension at the top
-  double bit_speed = 0.0;       // rad/s
+  double surface_speed = 0.0;   // rad/s, clockwise looking down-hole
+  double surface_torque = 0.0;  // N·m, clockwise looking down-hole (the top drive's, if any)
+  double hook_load = 0.0;       // N, tension at the top (the block's force, if any)
+  double bit_speed = 0.0;       // rad/s, clockwise looking down-hole
   double weight_on_bit = 0.0;   // N, compression at the bit
-  double torque_on_bit = 0.0;   // N·m
+  double torque_on_bit = 0.0;   // N·m, the torque the string delivers to the bit (clockwise)
   double kinetic_energy = 0.0;    // J
   double potential_energy = 0.0;  // J, strain energy plus the force elements'
   std::vector<ProbeSample> probes;  // in the order of TransientSettings::probes
@@ -63,7 +70,14 @@ struct TransientResult {
 // Called after every accepted step with the time reached and the duration (s).
 using TransientProgress = std::function<void(double time, double duration)>;
 
-// The start state q: the static equilibrium of the case's model with `initial_loads` added (solved
+// The model a transient run integrates: the case's `input` with the settings' drives and bit-rock
+// law, and without a static analysis's prescribed sliding (the friction follows the motion). Same
+// coordinates. The bit-rock law (model/bit_rock.hpp) takes over from the operation's torque on bit
+// (and under Detournay's law its WOB), which then act in the start equilibrium only.
+model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings);
+
+// The start state q: the static equilibrium of the case's model at rest (without prescribed
+// sliding; the supports hold the top, the drives start from it) with `initial_loads` added (solved
 // by RunStaticInWell on a model built from `input` plus those loads, which has the same coordinates),
 // or the reference placement (start: reference). Throws SolverError when the statics fail.
 VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,

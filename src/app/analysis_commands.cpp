@@ -15,7 +15,6 @@
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
-#include "analyses/transient_model.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "app/commands.hpp"
 #include "cms/reduction_cache.hpp"
@@ -323,22 +322,21 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
   if (requested.transient) {
     const analyses::TransientSettings settings = c.analyses.transient.value_or(analyses::TransientSettings{});
     // The equilibrium already solved for the other analyses, when the start is that equilibrium.
+    // (That one is at rest: not with a rotating string's prescribed friction.)
     const bool reuse_equilibrium = (requested.static_analysis || requested.modes || requested.vibration) &&
                                    settings.start == analyses::TransientStart::Equilibrium &&
-                                   settings.initial_loads.empty();
+                                   settings.initial_loads.empty() && !input.static_sliding;
     analyses::StaticSettings static_settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
     if (options.verbose) static_settings.log = [](const std::string& line) { std::cerr << line << '\n'; };
     const VecX start_q = reuse_equilibrium
                              ? equilibrium
                              : analyses::TransientStartPositions(input, built, cache, settings, static_settings);
-    // With a bit-rock law the transient integrates its own model (the same coordinates).
-    std::optional<model::BuiltModel> rebuilt;
-    if (settings.bit_rock) rebuilt.emplace(model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache));
-    const model::BuiltModel& transient_model = rebuilt ? *rebuilt : built;
+    // The model in motion: with the drives, the friction following the motion (same coordinates).
+    const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache);
     analyses::TransientResult result;
     {
       ProgressBar bar;
-      result = analyses::RunTransient(transient_model, start_q, settings,
+      result = analyses::RunTransient(moving, start_q, settings,
                                       [&bar](double time, double duration) { bar.Update(time, duration); });
     }
     PrintTransient(c, result);

@@ -111,10 +111,10 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
   return settings;
 }
 
-analyses::TransientSettings ReadTransient(const YamlView& node) {
+analyses::TransientSettings ReadTransient(const YamlView& node, const model::Operation& operation) {
   node.ExpectMap("the transient settings {duration, output_interval, probes}");
   node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step", "rho_infinity", "tolerance", "start",
-                      "initial_loads", "bit_rock"});
+                      "initial_loads", "top_drive", "block", "bit_rock"});
   analyses::TransientSettings settings;
   settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
   settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
@@ -141,6 +141,13 @@ analyses::TransientSettings ReadTransient(const YamlView& node) {
     }
   }
   if (const auto bit_rock = node.OptionalChild("bit_rock")) settings.bit_rock = ReadBitRockSection(*bit_rock);
+  // A rotating operation turns the top in a transient too (model/drives.hpp, io/drives_section.cpp).
+  if (const auto drive = node.PresentChild("top_drive")) {
+    settings.top_drive = ReadTopDrive(*drive, operation);
+  } else if (operation.rpm != 0.0) {
+    settings.top_drive = model::TopDrive{model::TopDriveMode::Speed, {operation.rpm, model::kDefaultTopDriveRamp}};
+  }
+  if (const auto block = node.PresentChild("block")) settings.block = ReadBlock(*block, operation);
   if (const auto probes = node.OptionalChild("probes")) {
     probes->ExpectSequence("probe distances from the bit");
     for (std::size_t i = 0; i < probes->size(); ++i) {
@@ -152,7 +159,7 @@ analyses::TransientSettings ReadTransient(const YamlView& node) {
 
 }  // namespace
 
-analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node) {
+analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation) {
   node.ExpectMap("the analyses to run (static, modes, vibration, buckling, transient)");
   node.AllowOnlyKeys({"static", "modes", "vibration", "buckling", "transient"});
   analyses::AnalysesConfig config;
@@ -167,7 +174,7 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node) {
     config.buckling->modes = item->IntegerOr("modes", 1);
     if (config.buckling->modes < 1) item->Child("modes").Fail("expected at least 1 buckling mode");
   }
-  if (const auto item = node.PresentChild("transient")) config.transient = ReadTransient(*item);
+  if (const auto item = node.PresentChild("transient")) config.transient = ReadTransient(*item, operation);
   return config;
 }
 

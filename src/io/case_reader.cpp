@@ -55,7 +55,7 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
   if (const auto supports = top.OptionalChild("supports")) c.supports = ReadSupportsSection(*supports);
   if (const auto loads = top.OptionalChild("loads")) c.loads = ReadLoadsSection(*loads);
   if (const auto operation = top.PresentChild("operation")) c.operation = ReadOperationSection(*operation);
-  if (const auto analyses = top.PresentChild("analyses")) c.analyses = ReadAnalysesSection(*analyses);
+  if (const auto analyses = top.PresentChild("analyses")) c.analyses = ReadAnalysesSection(*analyses, c.operation);
   CheckCaseConsistency(c, top);
   return c;
 }

@@ -19,7 +19,10 @@ model::ModelSettings ReadModelSection(const YamlView& node);
 std::vector<model::Support> ReadSupportsSection(const YamlView& node);
 std::vector<model::Load> ReadLoadsSection(const YamlView& node);
 model::Operation ReadOperationSection(const YamlView& node);
-analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node);
+// `operation` gives the drives' defaults (its rpm and hook load).
+analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation);
+model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& operation);
+model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operation);
 // `analyses.transient.bit_rock` (io/bit_rock_section.cpp).
 model::BitRockParameters ReadBitRockSection(const YamlView& node);
 

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/so3.hpp"
 #include "model/contact_circles.hpp"
+#include "model/drive_elements.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
@@ -252,8 +253,14 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   }
 
   std::vector<int> support_elements;
-  const std::vector<Support> supports =
+  std::vector<Support> supports =
       input.trajectory && input.supports.empty() ? DefaultWellSupports(length) : input.supports;
+  const auto top = FindNodeAt(placed, length);
+  for (Support& support : supports) {
+    if (FindNodeAt(placed, support.at) != top) continue;
+    if (input.top_drive) support.fixed[kRx] = false;  // the top drive holds the top's rotation
+    if (input.block) support.fixed[kX] = false;       // the block holds its axial place
+  }
   for (const Support& support : supports) {
     const auto [b, node] = FindNodeAt(placed, support.at);
     const Body& body = placed[b];
@@ -264,6 +271,26 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     support_elements.push_back(static_cast<int>(elements.size()));
     elements.push_back(std::make_unique<SupportElement>(&body, node, position, frame, stiffness,
                                                         SpringDamping(stiffness, ElementInertia(body))));
+  }
+
+  int top_drive_element = -1, block_element = -1;
+  if (input.top_drive || input.block) {
+    const Body& body = placed[top.first];
+    const Mat3 frame = body.reference_orientation.toRotationMatrix();
+    const Vec3 position = body.reference_position + frame * body.reduced->node_positions[top.second];
+    // As stiff as the support it replaces, so the start equilibrium holds at t = 0 (drives.hpp).
+    const Vec6 stiffness = kSupportStiffnessFactor * SectionCouplingStiffness(body, factor);
+    const Vec6 damping = SpringDamping(stiffness, ElementInertia(body));
+    if (input.top_drive) {
+      top_drive_element = static_cast<int>(elements.size());
+      elements.push_back(std::make_unique<TopDriveElement>(&body, top.second, frame, *input.top_drive,
+                                                           stiffness[kRx], damping[kRx]));
+    }
+    if (input.block) {
+      block_element = static_cast<int>(elements.size());
+      elements.push_back(std::make_unique<BlockElement>(&body, top.second, position, frame, *input.block,
+                                                        stiffness[kX], damping[kX]));
+    }
   }
 
   // Wall contact at every node (a joint once, on the upper body's start node): tool joints and
@@ -375,7 +402,8 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
 
   SystemModel system(std::move(bodies), std::move(elements), length);
   system.set_force_scale(force_scale);
-  return BuiltModel{std::move(system), std::move(support_elements), std::move(contact_elements), force_scale,
+  return BuiltModel{std::move(system),   std::move(support_elements), std::move(contact_elements),
+                    top_drive_element,   block_element,               force_scale,
                     bit_rock_element};
 }
 

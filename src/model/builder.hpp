@@ -12,6 +12,7 @@
 #include "cms/reduction_cache.hpp"
 #include "fe/material.hpp"
 #include "model/bit_rock.hpp"
+#include "model/drives.hpp"
 #include "model/spring_elements.hpp"
 #include "model/string_config.hpp"
 #include "model/wall_contact.hpp"
@@ -41,6 +42,11 @@ struct ModelInput {
   // `bit_rock`); a radius of 0 is taken as half the OD of the first component. It replaces the
   // operation's torque on bit, and under Detournay's law its WOB.
   std::optional<BitRockParameters> bit_rock;
+  // The drives at the top node (s = the string length) of a transient run (model/drives.hpp):
+  // each replaces the hold of the supports at the top in its direction (the top drive: rx; the
+  // block: x), with a spring as stiff as that support (kSupportStiffnessFactor).
+  std::optional<TopDrive> top_drive;
+  std::optional<BlockDrive> block;
 };
 
 // The supports a string in a well gets when the case gives none (method.md §8, the static BHA
@@ -73,6 +79,8 @@ struct BuiltModel {
   SystemModel system;
   std::vector<int> support_elements;  // element index of each case support
   std::vector<int> contact_elements;  // element index of each wall contact, from the bit upward
+  int top_drive_element = -1;         // element index of the top drive (-1: none)
+  int block_element = -1;             // element index of the block (-1: none)
   double force_scale = 0.0;           // a typical applied force, N (Newton tolerance)
   int bit_rock_element = -1;          // element index of the bit-rock interaction (−1: none)
 };

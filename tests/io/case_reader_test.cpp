@@ -187,6 +187,37 @@ analyses:
   EXPECT_DOUBLE_EQ(f.stribeck_speed, f.stick_speed);  // default: the drop over the stick speed
 }
 
+TEST(CaseReader, TransientDrives) {
+  // Field units: rpm, ft·lbf, ft/s; the speed drive defaults to operation.rpm with a 2 s ramp.
+  const char* head = "units: field\nstring:\n  - {type: collar, od: 8, id: 2.8125, length: 90}\n"
+                     "operation: {rpm: 100, hook_load: 50}\n";
+  const auto transient = [&](const std::string& keys) {
+    return *ParseCase(std::string(head) + "analyses:\n  transient: " + keys + "\n", "drives.yaml").analyses.transient;
+  };
+  const auto by_default = transient("{}");
+  ASSERT_TRUE(by_default.top_drive);
+  EXPECT_EQ(by_default.top_drive->mode, model::TopDriveMode::Speed);
+  EXPECT_NEAR(by_default.top_drive->setting.target, 100 * kPi / 30, 1e-12);
+  EXPECT_DOUBLE_EQ(by_default.top_drive->setting.ramp_time, model::kDefaultTopDriveRamp);
+  EXPECT_FALSE(by_default.block);
+  const auto speed = transient("{top_drive: {rpm: 120, ramp: 0.5 s}, block: {velocity: -1.5, ramp: 1 s}}");
+  EXPECT_NEAR(speed.top_drive->setting.target, 4 * kPi, 1e-12);
+  EXPECT_DOUBLE_EQ(speed.top_drive->setting.ramp_time, 0.5);
+  ASSERT_TRUE(speed.block);
+  EXPECT_EQ(speed.block->mode, model::BlockMode::Velocity);
+  EXPECT_NEAR(speed.block->setting.target, -1.5 * kFt, 1e-12);  // running in at 1.5 ft/s
+  const auto torque = transient("{top_drive: {torque: 15000}, block: {}}");
+  EXPECT_EQ(torque.top_drive->mode, model::TopDriveMode::Torque);
+  EXPECT_NEAR(torque.top_drive->setting.target, 15000 * kFt * kLbf, 1e-9);
+  EXPECT_DOUBLE_EQ(torque.top_drive->setting.ramp_time, 0.0);
+  EXPECT_EQ(torque.block->mode, model::BlockMode::HookLoad);
+  EXPECT_NEAR(torque.block->setting.target, 50 * kLbf, 1e-9);  // operation.hook_load (lbf)
+  // No rpm anywhere: no drive.
+  const Case resting = ParseCase("string:\n  - {type: collar, od: 0.2, id: 0.07, length: 30}\n"
+                                 "analyses:\n  transient: {}\n", "rest.yaml");
+  EXPECT_FALSE(resting.analyses.transient->top_drive);
+}
+
 TEST(CaseReader, DefaultsWithoutAWell) {
   const Case c = ParseCase(R"(
 string:
@@ -309,6 +340,17 @@ INSTANTIATE_TEST_SUITE_P(
                      std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {law: detournay, specific_energy: 9000,\n"
                                                 "               cutting_ratio: 0.6, static_torque: 1}\n",
                      6, "analyses.transient.bit_rock.static_torque", "unknown key 'static_torque'"},
+        RejectedCase{"top drive with speed and torque",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    top_drive: {rpm: 100, torque: 5000}\n",
+                     5, "analyses.transient.top_drive", "not both"},
+        RejectedCase{"top drive without a speed", std::string(kGoodString) + "analyses:\n  transient: {top_drive: {ramp: 2}}\n",
+                     4, "analyses.transient.top_drive", "no speed"},
+        RejectedCase{"negative ramp", std::string(kGoodString) + "analyses:\n  transient: {top_drive: {rpm: 60, ramp: -1}}\n",
+                     4, "analyses.transient.top_drive.ramp", "must not be negative"},
+        RejectedCase{"block without a setting", std::string(kGoodString) + "analyses:\n  transient: {block: {}}\n",
+                     4, "analyses.transient.block", "neither 'velocity' nor 'hook_load'"},
+        RejectedCase{"unknown drive key", std::string(kGoodString) + "analyses:\n  transient: {top_drive: {rpms: 60}}\n",
+                     4, "analyses.transient.top_drive.rpms", "did you mean 'rpm'"},
         RejectedCase{"string longer than well", kWellHead + "  hole: 12.25\nstring:\n  - {type: pipe, od: 5, id: 4, length: 2000}\n",
                      8, "string", "longer than the well"}),
     [](const ::testing::TestParamInfo<RejectedCase>& info) {

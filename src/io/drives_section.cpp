@@ -1,0 +1,76 @@
+// Reads the drives of `analyses.transient` (model/drives.hpp):
+//   top_drive: {rpm: 120, ramp: 2 s}   or   {torque: 15000 ft*lbf, ramp: 1 s}
+//   block:     {velocity: 0.5 m/s, ramp: 1 s}   or   {hook_load: 250 klbf}
+// A top drive without rpm or torque turns at operation.rpm; without `top_drive` a transient whose
+// operation has rpm > 0 gets that speed drive with the default ramp. A block without velocity or
+// hook_load holds operation.hook_load.
+#include <fmt/format.h>
+
+#include "io/case_sections.hpp"
+
+namespace drillflex::io {
+
+using units::Quantity;
+
+namespace {
+
+double RampTime(const YamlView& node, double default_ramp) {
+  const double ramp = node.QuantityOr("ramp", Quantity::Time, default_ramp);
+  if (ramp < 0.0) node.Child("ramp").Fail("the ramp time must not be negative (0: a step at t = 0)");
+  return ramp;
+}
+
+}  // namespace
+
+model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& operation) {
+  node.ExpectMap("a top drive {rpm, ramp} or {torque, ramp}");
+  node.AllowOnlyKeys({"rpm", "torque", "ramp"});
+  if (node.Has("rpm") && node.Has("torque")) {
+    node.Fail("give the top drive either 'rpm' (a speed it ramps to) or 'torque' (a torque it applies), not both");
+  }
+  model::TopDrive drive;
+  if (node.Has("torque")) {
+    drive.mode = model::TopDriveMode::Torque;
+    drive.setting.target = node.Quantity("torque", Quantity::Moment);
+    drive.setting.ramp_time = RampTime(node, 0.0);
+    return drive;
+  }
+  drive.mode = model::TopDriveMode::Speed;
+  if (node.Has("rpm")) {
+    drive.setting.target = node.Quantity("rpm", Quantity::RotarySpeed);
+  } else if (operation.rpm != 0.0) {
+    drive.setting.target = operation.rpm;
+  } else {
+    node.Fail("the top drive has no speed: give 'rpm' (or 'torque') here, or 'rpm' under 'operation'");
+  }
+  drive.setting.ramp_time = RampTime(node, model::kDefaultTopDriveRamp);
+  return drive;
+}
+
+model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operation) {
+  node.ExpectMap("the block {velocity, ramp} or {hook_load}");
+  node.AllowOnlyKeys({"velocity", "hook_load", "ramp"});
+  if (node.Has("velocity") && node.Has("hook_load")) {
+    node.Fail("give the block either 'velocity' (+ pulling out, - running in) or 'hook_load', not both");
+  }
+  model::BlockDrive block;
+  if (node.Has("velocity")) {
+    block.mode = model::BlockMode::Velocity;
+    block.setting.target = node.Quantity("velocity", Quantity::Velocity);
+    block.setting.ramp_time = RampTime(node, model::kDefaultTopDriveRamp);
+    return block;
+  }
+  block.mode = model::BlockMode::HookLoad;
+  if (node.Has("hook_load")) {
+    block.setting.target = node.Quantity("hook_load", Quantity::Force);
+  } else if (operation.hook_load) {
+    block.setting.target = *operation.hook_load;
+  } else {
+    node.Fail("the block has neither 'velocity' nor 'hook_load' (nor is there 'hook_load' under 'operation')");
+  }
+  if (block.setting.target < 0.0) node.Child("hook_load").Fail("the hook load must not be negative (it is the tension the hook holds)");
+  block.setting.ramp_time = RampTime(node, 0.0);
+  return block;
+}
+
+}  // namespace drillflex::io

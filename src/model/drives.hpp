@@ -1,0 +1,56 @@
+// The drives at the top of the string in a transient run (method.md §8, surface conditions): the
+// top drive turns the top at a set speed (ramped up from rest) or applies a set torque; the block
+// moves the top axially at a set velocity (ramped) or holds it by a set hook load. Plain data, SI.
+//
+// Signs, as a drilling engineer reads them: a speed or torque is positive clockwise looking
+// down-hole (right-hand about the down-hole axis, i.e. about −x of the string frame); the block
+// velocity is positive pulling out (up-hole, +x of the string frame); the hook load is the tension
+// the hook holds (pulling up-hole).
+#pragma once
+
+#include <algorithm>
+
+namespace drillflex::model {
+
+// A quantity ramped linearly from 0 at t = 0 to `target` at t = ramp_time, then held:
+//   value(t) = target · min(t / ramp_time, 1),
+//   integral(t) = ∫₀ᵗ value = target t² / (2 ramp_time) for t < ramp_time, else target (t − ramp_time/2).
+// ramp_time = 0 is a step at t = 0.
+struct LinearRamp {
+  double target = 0.0;
+  double ramp_time = 0.0;  // s, ≥ 0
+
+  double Value(double t) const {
+    if (t <= 0.0) return ramp_time > 0.0 ? 0.0 : target;
+    return t < ramp_time ? target * t / ramp_time : target;
+  }
+  double Integral(double t) const {
+    if (t <= 0.0) return 0.0;
+    return t < ramp_time ? 0.5 * target * t * t / ramp_time : target * (t - 0.5 * ramp_time);
+  }
+};
+
+enum class TopDriveMode {
+  Speed,   // the top's spin follows the angle ∫ speed dt through a stiff torsional spring
+  Torque,  // a set torque on the top
+};
+
+struct TopDrive {
+  TopDriveMode mode = TopDriveMode::Speed;
+  LinearRamp setting;  // rad/s (Speed) or N·m (Torque), clockwise looking down-hole
+};
+
+enum class BlockMode {
+  Velocity,  // the top's axial position follows ∫ velocity dt through a stiff axial spring
+  HookLoad,  // a set axial force at the top (tension)
+};
+
+struct BlockDrive {
+  BlockMode mode = BlockMode::Velocity;
+  LinearRamp setting;  // m/s up-hole (Velocity) or N (HookLoad)
+};
+
+// The default ramp of a top-drive speed when the case gives none, s.
+inline constexpr double kDefaultTopDriveRamp = 2.0;
+
+}  // namespace drillflex::model

@@ -1,0 +1,100 @@
+// The drives in a transient run (model/drives.hpp): the V1 rod (D = 3 in, L = 200 in, steel of
+// ρ = 7800 kg/m³) held laterally at both ends and otherwise free, spun up, pulled and pushed by the
+// drives at its top. Rigid-body references: the drive's torque J α and the block's force m a, with
+// J = ρ (π D⁴/32) L = 0.1312 kg·m² and m = ρ (π D²/4) L = 180.9 kg. The corners of a ramp (a step
+// in the acceleration) set the rod's first torsional or axial mode held at the top (158 Hz, 255 Hz)
+// swinging by about J α or m a; with 5 % structural damping it has decayed to 1e-4 of that by the
+// samples compared (0.3 s or more after a corner). The tolerance is 1e-6: the drive springs (4e9
+// N·m/rad, 1.5e13 N/m) read the positions' Newton error (~1e-3 × tolerance × 1e-3 rad or m) as
+// force, about 0.4 N·m and 1.5 kN at the default 1e-4.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analyses/transient_analysis.hpp"
+#include "analyses_test_support.hpp"
+#include "cms/reduction_cache.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+using testing::kRodDiameter;
+using testing::kRodLength;
+using testing::SupportAt;
+
+constexpr double kDensity = 7800.0;
+constexpr double kRpm = kPi / 30.0;
+
+double PolarInertia() { return kDensity * kPi * std::pow(kRodDiameter, 4) / 32.0 * kRodLength; }
+double Mass() { return kDensity * testing::RodArea() * kRodLength; }
+
+struct DrivenRun {
+  TransientResult result;
+  const TransientSample& At(double t) const {
+    for (const TransientSample& s : result.samples) {
+      if (std::abs(s.time - t) < 1e-9) return s;
+    }
+    throw std::runtime_error("no sample at that time");
+  }
+};
+
+DrivenRun RunDriven(std::optional<model::TopDrive> drive, std::optional<model::BlockDrive> block, double duration) {
+  model::ModelInput input = testing::RodInput(2, 2.1e11, kDensity, 4, 4);
+  input.settings.structural_damping = 0.05;
+  input.supports = {SupportAt(0.0, {model::kY, model::kZ}), SupportAt(kRodLength, {model::kY, model::kZ})};
+  TransientSettings settings;
+  settings.duration = duration;
+  settings.output_interval = 0.05;
+  settings.start = TransientStart::Reference;
+  settings.tolerance = 1e-6;
+  settings.top_drive = drive;
+  settings.block = block;
+  cms::ReductionCache cache;
+  const model::BuiltModel built = model::BuildSystemModel(TransientModelInput(input, settings), cache);
+  return {RunTransient(built, built.system.ReferencePositions(), settings)};
+}
+
+// 60 rpm in 0.5 s: the torque J α during the ramp, none after it, bit and top at 60 rpm, clockwise.
+TEST(TransientDrive, TopDriveSpinsTheRodUpToItsSpeed) {
+  const double speed = 60.0 * kRpm, ramp = 0.5;
+  const DrivenRun run = RunDriven(model::TopDrive{model::TopDriveMode::Speed, {speed, ramp}}, std::nullopt, 1.0);
+  const double torque = PolarInertia() * speed / ramp;
+  EXPECT_NEAR(run.At(0.4).surface_torque, torque, 0.03 * torque);
+  EXPECT_NEAR(run.At(0.4).bit_speed, speed * 0.4 / ramp, 0.01 * speed);
+  EXPECT_NEAR(run.At(1.0).surface_torque, 0.0, 0.03 * torque);
+  EXPECT_NEAR(run.At(1.0).surface_speed, speed, 1e-3 * speed);
+  EXPECT_NEAR(run.At(1.0).bit_speed, speed, 1e-3 * speed);
+}
+
+// A set torque of 1 N·m from t = 0 on the free rod: ω = T t / J.
+TEST(TransientDrive, TorqueDriveAcceleratesTheRodAtTOverJ) {
+  const DrivenRun run = RunDriven(model::TopDrive{model::TopDriveMode::Torque, {1.0, 0.0}}, std::nullopt, 0.5);
+  const double expected = 1.0 * 0.5 / PolarInertia();
+  EXPECT_NEAR(run.At(0.5).bit_speed, expected, 0.01 * expected);
+  EXPECT_DOUBLE_EQ(run.At(0.5).surface_torque, 1.0);
+}
+
+// Pulling out at 0.2 m/s reached in 0.4 s: the hook load m a during the ramp, the rod moving with
+// the block after it, its bit travelled ∫ v dt.
+TEST(TransientDrive, BlockVelocityPullsTheRodOut) {
+  const double velocity = 0.2, ramp = 0.4;
+  const DrivenRun run = RunDriven(std::nullopt, model::BlockDrive{model::BlockMode::Velocity, {velocity, ramp}}, 0.8);
+  const double force = Mass() * velocity / ramp;
+  EXPECT_NEAR(run.At(0.3).hook_load, force, 0.03 * force);
+  EXPECT_NEAR(run.At(0.8).hook_load, 0.0, 0.03 * force);
+  // The bit body's frame origin moved up-hole (+x) by the block's travel 0.2 (0.8 − 0.2) m.
+  const VecX& q = run.result.final_q;
+  EXPECT_NEAR(q[0], velocity * (0.8 - 0.5 * ramp), 1e-3 * velocity);
+  EXPECT_NEAR(run.result.final_v[0], velocity, 1e-3 * velocity);
+}
+
+// A hook load of 1000 N on the free rod: it accelerates up-hole at H/m.
+TEST(TransientDrive, HookLoadAcceleratesTheRodAtHOverM) {
+  const DrivenRun run = RunDriven(std::nullopt, model::BlockDrive{model::BlockMode::HookLoad, {1000.0, 0.0}}, 0.2);
+  const double travel = 0.5 * 1000.0 / Mass() * 0.2 * 0.2;
+  EXPECT_NEAR(run.result.final_q[0], travel, 0.01 * travel);
+  EXPECT_DOUBLE_EQ(run.At(0.2).hook_load, 1000.0);
+}
+
+}  // namespace
+}  // namespace drillflex::analyses

@@ -1,0 +1,228 @@
+// The drives (model/drive_elements.hpp): the ramp, the top drive's twist after thousands of turns,
+// and every drive's analytic stiffness and damping against central differences of its own residual
+// at a spun, bent and moving state.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "model/drive_elements.hpp"
+#include "model_test_support.hpp"
+#include "solvers/problem.hpp"
+
+namespace drillflex::model {
+namespace {
+
+constexpr double kRpm = kPi / 30.0;  // rad/s per rpm
+
+// One element of a model as a problem: its residual and matrices over the whole velocity vector.
+class ElementProblem : public solvers::Problem {
+ public:
+  ElementProblem(const SystemModel& model, int element) : model_(model), element_(*model.elements()[element]) {}
+  int num_positions() const override { return model_.num_positions(); }
+  int num_velocities() const override { return model_.num_velocities(); }
+  VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
+  VecX Residual(double t, const VecX& q, const VecX& v, const VecX&) const override {
+    ElementContribution c;
+    element_.Evaluate(State(t, q, v), false, c);
+    VecX residual = VecX::Zero(num_velocities());
+    residual.segment(Body().v_offset, Body().velocity_count()) = c.force;
+    return residual;
+  }
+  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX&, double cK, double cD,
+                            double) const override {
+    ElementContribution c;
+    element_.Evaluate(State(t, q, v), true, c);
+    MatX dense = MatX::Zero(num_velocities(), num_velocities());
+    const int o = Body().v_offset, n = Body().velocity_count();
+    dense.block(o, o, n, n) = cK * c.stiffness + cD * c.damping;
+    return dense.sparseView();
+  }
+  ElementState State(double t, const VecX& q, const VecX& v) const {
+    poses_ = model_.Poses(q);
+    return model_.StateOf(element_, poses_, v, t, 1.0);
+  }
+
+ private:
+  const model::Body& Body() const { return *element_.bodies()[0]; }
+  const SystemModel& model_;
+  const ForceElement& element_;
+  mutable std::vector<BodyPose> poses_;
+};
+
+struct Errors {
+  double stiffness, damping;
+};
+
+Errors JacobianErrors(const ElementProblem& problem, double t, const VecX& q, const VecX& v) {
+  const VecX a = VecX::Zero(v.size());
+  return {solvers::RelativeMatrixError(MatX(problem.IterationMatrix(t, q, v, a, 1.0, 0.0, 0.0)),
+                                       MatX(solvers::FiniteDifferenceIterationMatrix(problem, t, q, v, a, 1.0, 0.0, 0.0))),
+          solvers::RelativeMatrixError(MatX(problem.IterationMatrix(t, q, v, a, 0.0, 1.0, 0.0)),
+                                       MatX(solvers::FiniteDifferenceIterationMatrix(problem, t, q, v, a, 0.0, 1.0, 0.0)))};
+}
+
+BuiltModel DrivenRod(cms::ReductionCache& cache, std::optional<TopDrive> drive, std::optional<BlockDrive> block) {
+  ModelInput input = testing::RodInput(2, 4, 5);
+  input.top_drive = drive;
+  input.block = block;
+  return BuildSystemModel(input, cache);
+}
+
+// Every body turned about the string axis (x) by `spin` (rad), then perturbed at random (bending
+// rotations and translations of `size`, modal coordinates 1e-3 of it).
+VecX SpunPositions(const SystemModel& model, double spin, double size, std::mt19937& rng) {
+  VecX dv = VecX::Zero(model.num_velocities());
+  for (const Body& body : model.bodies()) dv[body.v_offset + 3] = spin;
+  const VecX spun = model.Increment(model.ReferencePositions(), dv);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < dv.size(); ++i) dv[i] = size * u(rng);
+  for (const Body& body : model.bodies()) dv.segment(body.v_offset + 6, body.flexible_count) *= 1e-3;
+  return model.Increment(spun, dv);
+}
+
+// Random velocities of `size` about a spin at `rate` (rad/s about x).
+VecX SpinningVelocities(const SystemModel& model, double rate, double size, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  VecX v(model.num_velocities());
+  for (int i = 0; i < v.size(); ++i) v[i] = size * u(rng);
+  for (const Body& body : model.bodies()) v[body.v_offset + 3] += rate;
+  return v;
+}
+
+TEST(LinearRamp, ValueAndIntegralThroughTheRamp) {
+  const LinearRamp ramp{10.0, 2.0};
+  EXPECT_DOUBLE_EQ(ramp.Value(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(ramp.Value(1.0), 5.0);
+  EXPECT_DOUBLE_EQ(ramp.Value(3.0), 10.0);
+  EXPECT_DOUBLE_EQ(ramp.Integral(1.0), 2.5);         // ½ · 10 · 1² / 2
+  EXPECT_DOUBLE_EQ(ramp.Integral(2.0), 10.0);        // continuous at the end of the ramp
+  EXPECT_DOUBLE_EQ(ramp.Integral(5.0), 10.0 * 4.0);  // 10 (5 − 1)
+  const LinearRamp step{3.0, 0.0};
+  EXPECT_DOUBLE_EQ(step.Value(0.0), 3.0);
+  EXPECT_DOUBLE_EQ(step.Integral(2.0), 6.0);
+}
+
+// After 2000 turns at 120 rpm the drive frame is still exact: a top exactly at the drive's angle
+// carries no twist, and a top 1e-4 rad behind it carries that twist and the torque k·1e-4.
+TEST(TopDriveElement, FollowsTheDriveAngleOverThousandsOfTurns) {
+  cms::ReductionCache cache;
+  const TopDrive drive{TopDriveMode::Speed, {120.0 * kRpm, 2.0}};
+  const BuiltModel built = DrivenRod(cache, drive, std::nullopt);
+  ASSERT_GE(built.top_drive_element, 0);
+  const auto& element = static_cast<const TopDriveElement&>(*built.system.elements()[built.top_drive_element]);
+  const double t = 1000.0;
+  const double angle = element.DriveAngle(t);
+  EXPECT_NEAR(angle, 120.0 * kRpm * (t - 1.0), 1e-9 * angle);
+  ASSERT_GT(angle / (2.0 * kPi), 1990.0);
+  const ElementProblem problem(built.system, built.top_drive_element);
+  for (const double lag : {0.0, 1e-4}) {
+    VecX dv = VecX::Zero(built.system.num_velocities());
+    // Clockwise looking down-hole is about −x; the top behind the drive by `lag`.
+    for (const Body& body : built.system.bodies()) dv[body.v_offset + 3] = -angle + lag;
+    const VecX q = built.system.Increment(built.system.ReferencePositions(), dv);
+    VecX v = VecX::Zero(built.system.num_velocities());
+    for (const Body& body : built.system.bodies()) v[body.v_offset + 3] = -120.0 * kRpm;  // turning with it
+    const ElementState state = problem.State(t, q, v);
+    EXPECT_NEAR(element.Lag(state), lag, 1e-9);
+    if (lag > 0.0) {
+      const double stiffness = element.Torque(state) / lag;
+      // The support stiffness it replaces: 10 · c · GJ/ℓ (c = 100, ℓ = 5.08/2/4 m, GJ of the V1 rod).
+      const double polar = kPi * std::pow(0.0762, 4) / 32.0, shear = 2.1e11 / 2.6;
+      const double expected = kSupportStiffnessFactor * 100.0 * shear * polar / (5.08 / 8.0);
+      EXPECT_NEAR(stiffness, expected, 1e-6 * expected);
+    } else {
+      EXPECT_NEAR(element.Torque(state), 0.0, 1.0);  // N·m: k (~4e9 N·m/rad) times 2.5e-10 rad
+    }
+  }
+}
+
+TEST(TopDriveElement, SpeedDriveJacobiansMatchCentralDifferences) {
+  cms::ReductionCache cache;
+  const TopDrive drive{TopDriveMode::Speed, {120.0 * kRpm, 2.0}};
+  const BuiltModel built = DrivenRod(cache, drive, std::nullopt);
+  const auto& element = static_cast<const TopDriveElement&>(*built.system.elements()[built.top_drive_element]);
+  const ElementProblem problem(built.system, built.top_drive_element);
+  std::mt19937 rng(17);
+  // During the ramp and 72 turns later; the top bent and twisted off the drive by ~0.05 rad so that
+  // every term (the frame's curvature, the torque's geometric part) is visible.
+  for (const double t : {0.7, 37.3}) {
+    const double angle = element.DriveAngle(t);
+    const VecX q = SpunPositions(built.system, -angle, 0.05, rng);
+    const VecX v = SpinningVelocities(built.system, -drive.setting.Value(t), 0.5, rng);
+    const Errors errors = JacobianErrors(problem, t, q, v);
+    std::printf("[ measure  ] speed drive at t = %.1f s (%.1f turns): stiffness %.2e, damping %.2e\n", t,
+                angle / (2.0 * kPi), errors.stiffness, errors.damping);
+    EXPECT_LT(errors.stiffness, 1e-6);
+    EXPECT_LT(errors.damping, 1e-6);
+  }
+}
+
+TEST(TopDriveElement, TorqueDriveAppliesItsTorqueWithAnExactTangent) {
+  cms::ReductionCache cache;
+  const TopDrive drive{TopDriveMode::Torque, {5000.0, 1.0}};
+  const BuiltModel built = DrivenRod(cache, drive, std::nullopt);
+  const auto& element = static_cast<const TopDriveElement&>(*built.system.elements()[built.top_drive_element]);
+  const ElementProblem problem(built.system, built.top_drive_element);
+  std::mt19937 rng(5);
+  const VecX q = SpunPositions(built.system, 300.0, 0.05, rng);
+  const VecX v = SpinningVelocities(built.system, -10.0, 0.5, rng);
+  EXPECT_DOUBLE_EQ(element.Torque(problem.State(0.5, q, v)), 2500.0);  // halfway up its ramp
+  // At rest in the reference placement the generalized moment about x is the torque, clockwise
+  // looking down-hole (about −x): the residual (−f_ext) is +T in the top body's ω_x row.
+  const VecX rest = built.system.ReferencePositions();
+  const VecX zero = VecX::Zero(built.system.num_velocities());
+  const VecX residual = problem.Residual(2.0, rest, zero, zero);
+  const Body& top = built.system.bodies().back();
+  EXPECT_NEAR(residual[top.v_offset + 3], 5000.0, 1e-9);
+  const Errors errors = JacobianErrors(problem, 0.5, q, v);
+  std::printf("[ measure  ] torque drive: stiffness %.2e, damping %.2e\n", errors.stiffness, errors.damping);
+  EXPECT_LT(errors.stiffness, 1e-6);
+  EXPECT_EQ(errors.damping, 0.0);
+}
+
+TEST(BlockElement, VelocityAndHookLoadJacobiansMatchCentralDifferences) {
+  cms::ReductionCache cache;
+  for (const BlockDrive block : {BlockDrive{BlockMode::Velocity, {0.5, 1.0}}, BlockDrive{BlockMode::HookLoad, {2e5, 0.0}}}) {
+    const BuiltModel built = DrivenRod(cache, std::nullopt, block);
+    ASSERT_GE(built.block_element, 0);
+    const ElementProblem problem(built.system, built.block_element);
+    std::mt19937 rng(23);
+    // Within mm of the block (the ramp has pulled 2.5 mm at t = 0.1 s): the spring force k e
+    // (k ~ 1e10 N/m) stays small enough for central differences in v to keep 1e-6 of the damping.
+    const VecX q = SpunPositions(built.system, 40.0, 0.005, rng);
+    const VecX v = SpinningVelocities(built.system, 12.0, 0.5, rng);
+    const Errors errors = JacobianErrors(problem, 0.1, q, v);
+    std::printf("[ measure  ] block (%s): stiffness %.2e, damping %.2e\n",
+                block.mode == BlockMode::Velocity ? "velocity" : "hook load", errors.stiffness, errors.damping);
+    EXPECT_LT(errors.stiffness, 1e-6);
+    if (block.mode == BlockMode::Velocity) {
+      EXPECT_LT(errors.damping, 1e-6);
+    } else {
+      EXPECT_EQ(errors.damping, 0.0);
+    }
+  }
+}
+
+// A top exactly where the block has pulled it carries no force; 1 mm below it, k · 1 mm of tension.
+TEST(BlockElement, HookLoadOfATopBehindTheBlock) {
+  cms::ReductionCache cache;
+  const BuiltModel built = DrivenRod(cache, std::nullopt, BlockDrive{BlockMode::Velocity, {0.5, 1.0}});
+  const auto& element = static_cast<const BlockElement&>(*built.system.elements()[built.block_element]);
+  const ElementProblem problem(built.system, built.block_element);
+  const double t = 3.0, travel = 0.5 * (t - 0.5);
+  for (const double behind : {0.0, 1e-3}) {
+    VecX dv = VecX::Zero(built.system.num_velocities());
+    for (const Body& body : built.system.bodies()) dv[body.v_offset] = travel - behind;  // up-hole: +x
+    const VecX q = built.system.Increment(built.system.ReferencePositions(), dv);
+    VecX v = VecX::Zero(built.system.num_velocities());
+    for (const Body& body : built.system.bodies()) v[body.v_offset] = 0.5;
+    const double axial = 2.1e11 * kPi * 0.0762 * 0.0762 / 4.0 / (5.08 / 8.0);
+    const double expected = kSupportStiffnessFactor * 100.0 * axial * behind;
+    EXPECT_NEAR(element.HookLoad(problem.State(t, q, v)), expected, 1e-6 * std::max(expected, 1.0));
+  }
+}
+
+}  // namespace
+}  // namespace drillflex::model
