@@ -110,14 +110,36 @@ void PrintModel(const io::Case& c) {
                            settings.elements_per_body, settings.modes_per_body, settings.coupling_factor);
 }
 
-void PrintAnalyses(const io::Case& c) {
+// "; top drive 100 rpm in 1 s, block 0.5 ft/s in 2 s": the transient's drives (model/drives.hpp).
+std::string DrivesText(const analyses::TransientSettings& t, const Printer& show) {
+  std::string text;
+  const auto ramp = [&](const model::LinearRamp& r) {
+    return r.ramp_time > 0.0 ? fmt::format(" in {}", show(r.ramp_time, Quantity::Time)) : std::string();
+  };
+  if (t.top_drive) {
+    const bool speed = t.top_drive->mode == model::TopDriveMode::Speed;
+    text += fmt::format("; top drive {}{}", show(t.top_drive->setting.target, speed ? Quantity::RotarySpeed : Quantity::Moment),
+                        ramp(t.top_drive->setting));
+  }
+  if (t.block) {
+    const bool velocity = t.block->mode == model::BlockMode::Velocity;
+    text += fmt::format("; block {}{}{}", velocity ? "" : "hook load ",
+                        show(t.block->setting.target, velocity ? Quantity::Velocity : Quantity::Force),
+                        ramp(t.block->setting));
+  }
+  return text;
+}
+
+void PrintAnalyses(const io::Case& c, const Printer& show) {
   std::vector<std::string> names;
   const auto& a = c.analyses;
   if (a.static_analysis) names.push_back("static");
   if (a.modes) names.push_back(fmt::format("modes ({})", a.modes->count));
   if (a.vibration) names.push_back(fmt::format("vibration ({} excitations)", a.vibration->excitations.size()));
   if (a.buckling) names.push_back("buckling");
-  if (a.transient) names.push_back(fmt::format("transient ({:.4g} s)", a.transient->duration));
+  if (a.transient) {
+    names.push_back(fmt::format("transient ({:.4g} s{})", a.transient->duration, DrivesText(*a.transient, show)));
+  }
   std::string list;
   for (const auto& name : names) list.append(list.empty() ? "" : ", ").append(name);
   std::cout << "analyses: " << (list.empty() ? "none listed" : list) << "\n";
@@ -137,7 +159,7 @@ int RunCheck(const CommandOptions& options) {
   }
   PrintString(c, show);
   PrintModel(c);
-  PrintAnalyses(c);
+  PrintAnalyses(c, show);
   std::cout << "the case is valid\n";
   return kExitOk;
 }

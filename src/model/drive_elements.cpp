@@ -15,7 +15,7 @@ using so3::Skew;
 
 namespace {
 
-// The node's global position at rest.
+// The node's distance from the bit end, m.
 double NodeS(const Body& body, int node) { return body.s_start + body.reduced->node_positions[node].x(); }
 
 void CheckNode(const Body* body, int node, const char* what) {
@@ -148,9 +148,7 @@ void BlockElement::DoEvaluate(const ElementState& state, bool with_matrices, Ele
     AddNodeForce(body, pose, node_, motion, force, Vec3::Zero(), nullptr, with_matrices, out);
     return;
   }
-  const double strain = axis_.dot(motion.position - position_) - drive_.setting.Integral(state.time);
-  const double rate = axis_.dot(motion.velocity) - drive_.setting.Value(state.time);
-  const Vec3 force = -(stiffness_ * strain + damping_ * rate) * axis_;
+  const Vec3 force = -SpringForce(motion, state.time) * axis_;
   NodeForceJacobian jacobian;
   const Mat3 projector = axis_ * axis_.transpose();
   jacobian.force_position = -stiffness_ * projector;
@@ -160,11 +158,13 @@ void BlockElement::DoEvaluate(const ElementState& state, bool with_matrices, Ele
 
 double BlockElement::HookLoad(const ElementState& state) const {
   if (drive_.mode == BlockMode::HookLoad) return state.load_factor * drive_.setting.Value(state.time);
-  const Body& body = *bodies()[0];
-  const NodeMotion motion = ComputeNodeMotion(body, *state.poses[0], node_, state.velocity);
-  const double strain = axis_.dot(motion.position - position_) - drive_.setting.Integral(state.time);
-  const double rate = axis_.dot(motion.velocity) - drive_.setting.Value(state.time);
-  return -(stiffness_ * strain + damping_ * rate);
+  return -SpringForce(ComputeNodeMotion(*bodies()[0], *state.poses[0], node_, state.velocity), state.time);
+}
+
+double BlockElement::SpringForce(const NodeMotion& motion, double t) const {
+  const double strain = axis_.dot(motion.position - position_) - drive_.setting.Integral(t);
+  const double rate = axis_.dot(motion.velocity) - drive_.setting.Value(t);
+  return stiffness_ * strain + damping_ * rate;
 }
 
 double BlockElement::DoPotentialEnergy(const ElementState& state) const {

@@ -32,6 +32,7 @@
 
 #include "model/drives.hpp"
 #include "model/force_element.hpp"
+#include "model/node_force.hpp"
 
 namespace drillflex::model {
 
@@ -80,6 +81,8 @@ class BlockElement : public ForceElement {
   double DoPotentialEnergy(const ElementState& state) const override;
 
  private:
+  // k e + c ė of the velocity drive's spring (tension), N.
+  double SpringForce(const NodeMotion& motion, double t) const;
   int node_;
   Vec3 position_, axis_;
   BlockDrive drive_;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "solvers/serial_eigen.hpp"
 
 namespace drillflex::solvers {
 
@@ -262,6 +263,9 @@ void GeneralizedAlphaIntegrator::AcceptStep(double h) {
 
 void GeneralizedAlphaIntegrator::AdvanceTo(double end_time) {
   if (!initialized_) throw LogicError("generalized-α: AdvanceTo before Initialize");
+  // The dense LU and solves on one thread (solvers/serial_eigen.hpp): the problem's own assembly
+  // keeps its threads.
+  const SerialEigenProducts serial;
   long attempts = 0;
   while (state_.time < end_time) {
     if (++attempts > options_.max_steps) {

@@ -10,26 +10,12 @@
 
 #include "core/error.hpp"
 #include "solvers/linear_solver.hpp"
+#include "solvers/serial_eigen.hpp"
 
 namespace drillflex::solvers {
 namespace {
 
 using Complex = std::complex<double>;
-
-// Eigen's own OpenMP matrix products for the duration of a scope: off. The setup's products (n × r
-// blocks) are split evenly over the threads and wait for the slowest: with the other core busy the
-// bundled example's setup took 4 s on two threads against 0.3 s on one (measured); the sweep
-// shares its frequencies among threads itself (analyses/vibration_analysis.cpp).
-class SerialEigenProducts {
- public:
-  SerialEigenProducts() : threads_(Eigen::nbThreads()) { Eigen::setNbThreads(1); }
-  ~SerialEigenProducts() { Eigen::setNbThreads(threads_); }
-  SerialEigenProducts(const SerialEigenProducts&) = delete;
-  SerialEigenProducts& operator=(const SerialEigenProducts&) = delete;
-
- private:
-  int threads_;
-};
 
 // Removes from `column` its M-projection on the first `filled` columns of `basis` (classical
 // Gram–Schmidt, twice: Kahan's "twice is enough", Parlett, The Symmetric Eigenvalue Problem,

@@ -205,6 +205,15 @@ TEST(Cli, TransientWritesTheTimeSeriesAndNoProgressBarOffATerminal) {
   EXPECT_FALSE(results.contains("static"));
 }
 
+TEST(Cli, CheckListsTheTransientsDrives) {
+  const fs::path path = WriteCase("check-drives", std::string(kCollarYaml) + R"(analyses:
+  transient: {duration: 2 s, top_drive: {rpm: 60, ramp: 0.5 s}, block: {hook_load: 25000}}
+)");
+  const RunResult result = RunDrillflex("check " + path.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("transient (2 s; top drive 60 rpm in 0.5 s; block hook load 2.5e+04 lbf)"));
+}
+
 TEST(Cli, RunWithATransientRunsItAfterTheStatics) {
   const fs::path out = FreshDirectory("run-transient");
   const fs::path path = WriteCase("run-transient", std::string(kCollarYaml) +
