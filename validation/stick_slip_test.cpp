@@ -7,7 +7,7 @@
 // about the kinetic level that starts and ends at zero bit speed, (2π − 2δ)/ω_n with
 // δ = atan(u₀ω_n/Ω), u₀ = (T_s − T_d)/k, and peaks at Ω + sqrt(Ω² + (u₀ω_n)²). Period and peak bit
 // speed within 2 %, over the cycles after the first stick (which starts from rest; every slip starts
-// at T_s from zero bit speed, so the first slip is already the limit cycle's). 14 s in Release:
+// at T_s from zero bit speed, so the first slip is already the limit cycle's). 5–14 s in Release:
 // 3 147 adaptive steps of a 143-coordinate model, dense LU.
 #include <algorithm>
 #include <cmath>
