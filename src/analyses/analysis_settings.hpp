@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/bit_rock.hpp"
 #include "model/drives.hpp"
 #include "model/string_config.hpp"
 
@@ -85,6 +86,10 @@ struct TransientSettings {
   // Loads (string frame, as `loads`) that act in the start equilibrium only and are removed at
   // t = 0: a string released from a deflected shape (free vibration).
   std::vector<model::Load> initial_loads;
+  // The rock's reaction on the bit as a law of its motion (model/bit_rock.hpp); it takes over from
+  // the case's torque on bit (and, for Detournay's law, the WOB), which then act in the start
+  // equilibrium only (analyses/transient_analysis.hpp, TransientModelInput).
+  std::optional<model::BitRockParameters> bit_rock;
   // The drives at the top (model/drives.hpp); none: the supports hold the top as in statics.
   std::optional<model::TopDrive> top_drive;
   std::optional<model::BlockDrive> block;

@@ -141,6 +141,7 @@ model::ModelInput TransientModelInput(const model::ModelInput& input, const Tran
   transient.static_sliding.reset();
   transient.top_drive = settings.top_drive;
   transient.block = settings.block;
+  transient.bit_rock = settings.bit_rock;  // the builder then leaves out the bit loads the law replaces
   return transient;
 }
 
@@ -148,7 +149,8 @@ VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltM
                              cms::ReductionCache& cache, const TransientSettings& settings,
                              const StaticSettings& static_settings) {
   if (settings.start == TransientStart::Reference) return built.system.ReferencePositions();
-  if (settings.initial_loads.empty() && !input.static_sliding && !input.top_drive && !input.block) {
+  if (settings.initial_loads.empty() && !input.static_sliding && !input.top_drive && !input.block &&
+      !input.bit_rock) {
     return RunStaticInWell(input, built, cache, static_settings).q;
   }
   // The same string at rest with the initial loads added: the same bodies, so the same coordinates.
@@ -156,6 +158,7 @@ VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltM
   loaded.static_sliding.reset();
   loaded.top_drive.reset();
   loaded.block.reset();
+  loaded.bit_rock.reset();  // at rest on bottom under the case's WOB and TOB
   loaded.loads.insert(loaded.loads.end(), settings.initial_loads.begin(), settings.initial_loads.end());
   const model::BuiltModel start_model = model::BuildSystemModel(loaded, cache);
   if (start_model.system.num_positions() != built.system.num_positions()) {

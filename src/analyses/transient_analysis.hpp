@@ -70,8 +70,10 @@ struct TransientResult {
 // Called after every accepted step with the time reached and the duration (s).
 using TransientProgress = std::function<void(double time, double duration)>;
 
-// The model a transient run integrates: the case's `input` with the settings' drives and without a
-// static analysis's prescribed sliding (the friction follows the motion). Same coordinates.
+// The model a transient run integrates: the case's `input` with the settings' drives and bit-rock
+// law, and without a static analysis's prescribed sliding (the friction follows the motion). Same
+// coordinates. The bit-rock law (model/bit_rock.hpp) takes over from the operation's torque on bit
+// (and under Detournay's law its WOB), which then act in the start equilibrium only.
 model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings);
 
 // The start state q: the static equilibrium of the case's model at rest (without prescribed

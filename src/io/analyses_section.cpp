@@ -114,7 +114,7 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
 analyses::TransientSettings ReadTransient(const YamlView& node, const model::Operation& operation) {
   node.ExpectMap("the transient settings {duration, output_interval, probes}");
   node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step", "rho_infinity", "tolerance", "start",
-                      "initial_loads", "top_drive", "block"});
+                      "initial_loads", "top_drive", "block", "bit_rock"});
   analyses::TransientSettings settings;
   settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
   settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
@@ -140,6 +140,7 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
       loads->Fail("initial loads need the start from the equilibrium (start: equilibrium), not the reference");
     }
   }
+  if (const auto bit_rock = node.OptionalChild("bit_rock")) settings.bit_rock = ReadBitRockSection(*bit_rock);
   // A rotating operation turns the top in a transient too (model/drives.hpp, io/drives_section.cpp).
   if (const auto drive = node.PresentChild("top_drive")) {
     settings.top_drive = ReadTopDrive(*drive, operation);

@@ -23,6 +23,8 @@ model::Operation ReadOperationSection(const YamlView& node);
 analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation);
 model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& operation);
 model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operation);
+// `analyses.transient.bit_rock` (io/bit_rock_section.cpp).
+model::BitRockParameters ReadBitRockSection(const YamlView& node);
 
 // Checks that need more than one section: the string fits the hole at every MD, the string does
 // not reach above the surface, supports and loads lie on the string. `root` locates messages.

@@ -368,12 +368,16 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   }
   // Point loads on the nearest node (at a joint, the upper body's start node). The formation
   // pushes the bit up-hole with the WOB and resists its rotation with the torque on bit.
+  // A bit-rock law gives the rock's reaction from the bit's motion instead (model/bit_rock.hpp):
+  // the torque on bit, and under Detournay's law the WOB too.
   std::vector<Load> point_loads = input.loads;
-  if (input.operation.weight_on_bit != 0.0 || input.operation.torque_on_bit != 0.0) {
+  const double wob = input.bit_rock && input.bit_rock->law == BitRockLaw::Detournay ? 0.0 : input.operation.weight_on_bit;
+  const double tob = input.bit_rock ? 0.0 : input.operation.torque_on_bit;
+  if (wob != 0.0 || tob != 0.0) {
     Load bit;
     bit.at = 0.0;
-    bit.force = Vec3(input.operation.weight_on_bit, 0.0, 0.0);
-    bit.moment = Vec3(input.operation.torque_on_bit, 0.0, 0.0);
+    bit.force = Vec3(wob, 0.0, 0.0);
+    bit.moment = Vec3(tob, 0.0, 0.0);
     point_loads.push_back(bit);
   }
   for (const Load& load : point_loads) {
@@ -387,12 +391,20 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
     elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
   }
+  int bit_rock_element = -1;
+  if (input.bit_rock) {
+    BitRockParameters parameters = *input.bit_rock;
+    if (parameters.radius == 0.0) parameters.radius = 0.5 * input.string.components.front().outer_diameter;
+    bit_rock_element = static_cast<int>(elements.size());
+    elements.push_back(std::make_unique<BitRockElement>(&placed.front(), parameters));
+  }
   if (force_scale == 0.0) force_scale = placed.front().bending_rigidity / (length * length);
 
   SystemModel system(std::move(bodies), std::move(elements), length);
   system.set_force_scale(force_scale);
   return BuiltModel{std::move(system),   std::move(support_elements), std::move(contact_elements),
-                    top_drive_element,   block_element,               force_scale};
+                    top_drive_element,   block_element,               force_scale,
+                    bit_rock_element};
 }
 
 }  // namespace drillflex::model

@@ -11,6 +11,7 @@
 
 #include "cms/reduction_cache.hpp"
 #include "fe/material.hpp"
+#include "model/bit_rock.hpp"
 #include "model/drives.hpp"
 #include "model/spring_elements.hpp"
 #include "model/string_config.hpp"
@@ -37,6 +38,10 @@ struct ModelInput {
   // wall contact's friction follows this prescribed sliding (model/wall_contact.hpp); without it,
   // the friction follows the state's velocities (none at rest).
   std::optional<PrescribedSliding> static_sliding;
+  // The rock's reaction on the bit node as a law of its motion (model/bit_rock.hpp; a transient's
+  // `bit_rock`); a radius of 0 is taken as half the OD of the first component. It replaces the
+  // operation's torque on bit, and under Detournay's law its WOB.
+  std::optional<BitRockParameters> bit_rock;
   // The drives at the top node (s = the string length) of a transient run (model/drives.hpp):
   // each replaces the hold of the supports at the top in its direction (the top drive: rx; the
   // block: x), with a spring as stiff as that support (kSupportStiffnessFactor).
@@ -77,6 +82,7 @@ struct BuiltModel {
   int top_drive_element = -1;         // element index of the top drive (-1: none)
   int block_element = -1;             // element index of the block (-1: none)
   double force_scale = 0.0;           // a typical applied force, N (Newton tolerance)
+  int bit_rock_element = -1;          // element index of the bit-rock interaction (−1: none)
 };
 
 // Friction regularization velocity v_ε of the wall contacts, m/s (method.md §6): below it the

@@ -150,6 +150,43 @@ analyses:
   EXPECT_NEAR(t.initial_loads[0].force.z(), 100.0, 1e-12);
 }
 
+TEST(CaseReader, BitRockLaws) {
+  const Case detournay = ParseCase(R"(units: field
+string:
+  - {type: bit, od: 8.5, length: 1}
+  - {type: collar, od: 6.75, id: 2.8125, length: 30}
+analyses:
+  transient:
+    bit_rock: {law: detournay, specific_energy: 8.7 ksi, cutting_ratio: 0.6, contact_force: 4500,
+               friction: 0.6, geometry: 1.1, stick_speed: 0.2, contact_speed: 0.1 ft/h}
+)",
+                                   "detournay.yaml");
+  ASSERT_TRUE(detournay.analyses.transient && detournay.analyses.transient->bit_rock);
+  const model::BitRockParameters& d = *detournay.analyses.transient->bit_rock;
+  EXPECT_EQ(d.law, model::BitRockLaw::Detournay);
+  EXPECT_NEAR(d.specific_energy, 8.7e3 * kLbf / (kIn * kIn), 1e-6 * d.specific_energy);  // ksi
+  EXPECT_DOUBLE_EQ(d.cutting_ratio, 0.6);
+  EXPECT_NEAR(d.contact_force, 4500 * kLbf, 1e-9);  // lbf
+  EXPECT_DOUBLE_EQ(d.friction, 0.6);
+  EXPECT_DOUBLE_EQ(d.geometry, 1.1);
+  EXPECT_EQ(d.radius, 0.0);                          // from the bit's OD when the model is built
+  EXPECT_NEAR(d.stick_speed, 0.2 * 2 * kPi / 60, 1e-12);  // rpm
+  EXPECT_NEAR(d.contact_speed, 0.1 * kFt / 3600, 1e-15);
+  const Case friction = ParseCase(R"(string:
+  - {type: collar, od: 0.2, id: 0.07, length: 30}
+analyses:
+  transient:
+    bit_rock: {law: friction, static_torque: 3 kN*m, kinetic_torque: 2000, stick_speed: 0.01}
+)",
+                                  "friction.yaml");
+  const model::BitRockParameters& f = *friction.analyses.transient->bit_rock;
+  EXPECT_EQ(f.law, model::BitRockLaw::Friction);
+  EXPECT_NEAR(f.static_torque, 3000.0, 1e-9);
+  EXPECT_NEAR(f.kinetic_torque, 2000.0, 1e-9);       // SI case: N·m
+  EXPECT_NEAR(f.stick_speed, 0.01 * 2 * kPi / 60, 1e-15);
+  EXPECT_DOUBLE_EQ(f.stribeck_speed, f.stick_speed);  // default: the drop over the stick speed
+}
+
 TEST(CaseReader, TransientDrives) {
   // Field units: rpm, ft·lbf, ft/s; the speed drive defaults to operation.rpm with a 2 s ramp.
   const char* head = "units: field\nstring:\n  - {type: collar, od: 8, id: 2.8125, length: 90}\n"
@@ -289,6 +326,20 @@ INSTANTIATE_TEST_SUITE_P(
         RejectedCase{"initial load off the string",
                      std::string(kGoodString) + "analyses:\n  transient:\n    initial_loads:\n      - {at: 45, force: [0, 1, 0]}\n",
                      6, "analyses.transient.initial_loads[0].at", "off the string"},
+        RejectedCase{"static below kinetic friction",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {law: friction, static_torque: 2000,\n"
+                                                "               kinetic_torque: 2500}\n",
+                     5, "analyses.transient.bit_rock.static_torque", "must exceed the kinetic one"},
+        RejectedCase{"unknown bit-rock law",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {law: drag}\n", 5,
+                     "analyses.transient.bit_rock.law", "'detournay' or 'friction'"},
+        RejectedCase{"Detournay without specific energy",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {law: detournay, cutting_ratio: 0.6}\n",
+                     5, "analyses.transient.bit_rock", "missing required key 'specific_energy'"},
+        RejectedCase{"friction key in a Detournay law",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {law: detournay, specific_energy: 9000,\n"
+                                                "               cutting_ratio: 0.6, static_torque: 1}\n",
+                     6, "analyses.transient.bit_rock.static_torque", "unknown key 'static_torque'"},
         RejectedCase{"top drive with speed and torque",
                      std::string(kGoodString) + "analyses:\n  transient:\n    top_drive: {rpm: 100, torque: 5000}\n",
                      5, "analyses.transient.top_drive", "not both"},
