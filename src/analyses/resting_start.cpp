@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/so3.hpp"
+#include "model/spring_elements.hpp"
 #include "model/wall_contact.hpp"
 #include "well/hole.hpp"
 
@@ -169,7 +170,7 @@ class RestingLine {
 // those frames would start the couplings twisted by up to π (a kick-off toward the south), the
 // one strain Newton resolves worst (a twist turns the bending held in body coordinates).
 Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const std::vector<double>& stretches,
-              const Vec3& bit, double shift, VecX& q, std::vector<double>& ends) {
+              const std::vector<double>& gaps, const Vec3& bit, double shift, VecX& q, std::vector<double>& ends) {
   const auto& bodies = system.bodies();
   double u = shift;
   std::vector<Vec3> starts;
@@ -180,15 +181,18 @@ Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const s
     const Vec3 first = body.reduced->node_positions.front(), last = body.reduced->node_positions.back();
     u = line.Along(start, u, (last - first).norm() + stretches[b]);
     starts.push_back(start);
-    start = line.At(u);
     ends.push_back(u);
+    // The next body starts `gaps[b]` beyond this one's end (before it in compression), so that the
+    // coupling carries the axial force; u is the arc length along the line to ~1e-6 of a gap.
+    if (b + 1 < bodies.size()) u += gaps[b];
+    start = line.At(u);
   }
   starts.push_back(start);
   Mat3 above = Mat3::Identity();
   for (std::size_t b = bodies.size(); b-- > 0;) {
     const model::Body& body = bodies[b];
     const Vec3 first = body.reduced->node_positions.front(), last = body.reduced->node_positions.back();
-    const Vec3 chord = starts[b + 1] - starts[b];
+    const Vec3 chord = line.At(ends[b]) - starts[b];
     const Mat3 reference = body.reference_orientation.toRotationMatrix();
     const Mat3 from = b + 1 == bodies.size() ? reference : above;
     // `from`'s axis is the body's reference chord direction ρ_last − ρ_first (along x).
@@ -215,6 +219,27 @@ std::vector<double> Stretches(const model::SystemModel& system, const std::vecto
     index = last + 1;
   }
   return stretches;
+}
+
+// The axial opening of each coupling (between body b and b + 1) that carries the soft-string
+// axial force at the joint, T / k_x (tension opens it). Laid closed, the couplings would carry
+// nothing at the start while the bodies are stretched: the top of a long string hanging in a
+// vertical hole would have no lateral stiffness from its tension in the first linearization (a
+// cantilever's 3EI/L³ alone, ~1 N/m over 200 m of drill pipe), and Newton's first steps there moved it
+// by metres (the 3 km bench case: 20 m, then a thousand trust-radius-limited steps).
+std::vector<double> CouplingGaps(const model::BuiltModel& built, const std::vector<NodeStation>& stations) {
+  const auto& bodies = built.system.bodies();
+  std::vector<double> gaps(bodies.size(), 0.0);
+  std::vector<std::size_t> last_station(bodies.size(), 0);
+  for (std::size_t i = 0; i < stations.size(); ++i) last_station[static_cast<std::size_t>(stations[i].body)] = i;
+  for (const auto& element : built.system.elements()) {
+    const auto* coupling = dynamic_cast<const model::CouplingElement*>(element.get());
+    if (coupling == nullptr || coupling->bodies().size() != 2) continue;
+    const std::size_t lower = static_cast<std::size_t>(built.system.IndexOf(coupling->bodies()[0]));
+    const double axial = coupling->stiffness()[0];
+    if (lower + 1 < bodies.size() && axial > 0.0) gaps[lower] = stations[last_station[lower]].tension / axial;
+  }
+  return gaps;
 }
 
 Quat BodyOrientation(const model::Body& body, const VecX& q) {
@@ -303,6 +328,7 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   if (stations.empty()) return q;
   const RestingLine line(input, stations, offsets);
   const std::vector<double> stretches = Stretches(system, stations);
+  const std::vector<double> gaps = CouplingGaps(built, stations);
   // The chain laid on the offset line is longer or shorter along the hole than the string on the
   // hole axis (the offsets and the stretch change its path length), so its top would miss the
   // hook, which holds the top axially along the top body's reference axis, by centimetres (e.g.
@@ -317,12 +343,20 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
                              bit_body.reference_orientation.toRotationMatrix() * bit_body.reduced->node_positions.front();
   const Vec3 top_reference = top_body.reference_position +
                              top_body.reference_orientation.toRotationMatrix() * top_body.reduced->node_positions.back();
+  // The hook's spring stretched by the tension it carries, T/k_x: the top lands that far below its
+  // reference (the couplings below are opened likewise, CouplingGaps).
+  double hook_stretch = 0.0;
+  for (const int index : built.support_elements) {
+    const auto* support = dynamic_cast<const model::SupportElement*>(system.elements()[index].get());
+    if (support == nullptr || support->bodies()[0] != &top_body || support->node() != top_body.node_count() - 1) continue;
+    if (support->stiffness()[0] > 0.0) hook_stretch = stations.back().tension / support->stiffness()[0];
+  }
   double shift = 0.0;  // m up the hole along the bit's axis
   std::vector<double> ends;
   constexpr int kPasses = 5;
   for (int pass = 0; pass < kPasses; ++pass) {
-    const Vec3 top = LayChain(system, line, stretches, bit_reference + shift * bit_axis, shift, q, ends);
-    const double miss = (top - top_reference).dot(top_axis);
+    const Vec3 top = LayChain(system, line, stretches, gaps, bit_reference + shift * bit_axis, shift, q, ends);
+    const double miss = (top - top_reference).dot(top_axis) + hook_stretch;
     if (std::abs(miss) < 1e-10 || pass + 1 == kPasses) break;  // q and ends belong to `shift`
     shift -= miss;
   }

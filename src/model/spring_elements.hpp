@@ -46,6 +46,8 @@ class SupportElement : public ForceElement {
   std::string Describe() const override;
   // The reaction the support exerts on the string, in the string frame (force N, moment N·m).
   Vec6 Reaction(const ElementState& state) const;
+  int node() const { return node_; }
+  const Vec6& stiffness() const { return stiffness_; }
 
  protected:
   void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;

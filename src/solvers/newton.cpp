@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -47,8 +48,14 @@ class NewtonStepper {
   // decrease of |R| took V4's load stepping from 39 iterations to 3285).
   LineSearchResult TrustRegionStep(const VecX& q, const VecX& residual, const VecX& dv, double& radius) const;
 
-  // Factorizes K(q); returns an empty string or the reason it failed.
-  std::string Factorize(const VecX& q);
+  // Factorizes K(q) + σ M(q); returns an empty string or the reason it failed.
+  std::string Factorize(const VecX& q, double shift = 0.0);
+
+  // NewtonOptions::mass_shift: the full step along dv if it is acceptable (the shift then lowered),
+  // or nothing (the shift raised; `failure` says why when it cannot be raised further).
+  // `least_norm`: the least |R| of this solve so far.
+  std::optional<LineSearchResult> ShiftedStep(const VecX& q, const VecX& residual, const VecX& dv, double& shift,
+                                              double& least_norm, std::string& failure);
 
   const StaticProblem& problem_;
   const NewtonOptions& options_;
@@ -56,11 +63,12 @@ class NewtonStepper {
   const VecX zero_;
   const MatrixSymmetry symmetry_;
   SparseLinearSolver linear_solver_;
+  double shift_scale_ = 0.0;  // max K_ii / max M_ii, once a shift is needed
 };
 
-std::string NewtonStepper::Factorize(const VecX& q) {
+std::string NewtonStepper::Factorize(const VecX& q, double shift) {
   try {
-    const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
+    const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, shift);
     linear_solver_.Factorize(k, symmetry_);
   } catch (const SolverError& error) {
     return fmt::format("the iteration matrix cannot be factorized ({})", error.what());
@@ -93,6 +101,56 @@ LineSearchResult NewtonStepper::TrustRegionStep(const VecX& q, const VecX& resid
   }
 }
 
+// The mass shift's schedule (NewtonOptions::mass_shift).
+constexpr double kFirstShift = 1e-4;    // × max K_ii / max M_ii
+constexpr double kShiftRaise = 10.0;
+constexpr double kShiftLower = 0.3;
+constexpr double kSmallestShift = 1e-12;  // × max K_ii / max M_ii: below it, σ = 0
+constexpr double kLargestShift = 1e4;     // × max K_ii / max M_ii: beyond it, the solve fails
+
+std::optional<LineSearchResult> NewtonStepper::ShiftedStep(const VecX& q, const VecX& residual, const VecX& dv,
+                                                           double& shift, double& least_norm, std::string& failure) {
+  LineSearchResult result;
+  result.step = 1.0;
+  result.q = problem_.Increment(q, dv);
+  result.residual = problem_.Residual(options_.time, result.q, zero_, zero_);
+  result.residual_evaluations = 1;
+  const double norm = residual.norm();
+  const double trial = result.residual.allFinite() ? result.residual.norm() : std::numeric_limits<double>::infinity();
+  const double length = problem_.StepLength(q, dv);
+  const bool short_enough = options_.max_increment <= 0.0 || length <= options_.max_increment;
+  // A step shorter than the smallest trust radius is taken whatever |R| does: near the solution
+  // |R| is round-off of the stiff couplings and may rise.
+  const bool tiny = options_.max_increment > 0.0 && length <= kSmallestRadius * options_.max_increment;
+  // A rise of |R| is taken (a contact that closes raises it for an iteration) up to kTrustGrowth
+  // times the current and the least |R| of this solve, so that it cannot creep up step by step.
+  const bool bounded = trial <= kTrustGrowth * std::min(norm, least_norm);
+  if (short_enough && (bounded || tiny)) {
+    result.decreased = true;
+    least_norm = std::min(least_norm, trial);
+    if (trial < norm) shift *= kShiftLower;
+    if (shift < kSmallestShift * shift_scale_) shift = 0.0;
+    return result;
+  }
+  if (shift_scale_ <= 0.0) {  // the stiffness-to-mass scale, once
+    const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
+    const SparseMat m = problem_.IterationMatrix(options_.time, q, zero_, zero_, 0.0, 0.0, 1.0);
+    const double largest_mass = m.diagonal().cwiseAbs().maxCoeff();
+    shift_scale_ = largest_mass > 0.0 ? k.diagonal().cwiseAbs().maxCoeff() / largest_mass : 0.0;
+    if (!(shift_scale_ > 0.0) || !std::isfinite(shift_scale_)) {
+      failure = "the step is not acceptable and the problem has no mass matrix to shift the iteration matrix by";
+      return std::nullopt;
+    }
+  }
+  shift = shift > 0.0 ? kShiftRaise * shift : kFirstShift * shift_scale_;
+  if (shift > kLargestShift * shift_scale_) {
+    failure = fmt::format("no acceptable step even with the iteration matrix shifted by {:.3g} × the mass matrix",
+                          shift / kShiftRaise);
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 StepOutcome NewtonStepper::Run(const VecX& q_start) {
   StepOutcome out;
   out.q = q_start;
@@ -101,6 +159,8 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
   bool fresh = false;  // the factorization belongs to the current q
   double first_norm = -1.0;
   double radius = options_.max_increment;
+  double shift = 0.0;  // σ of NewtonOptions::mass_shift
+  double least_norm = std::numeric_limits<double>::infinity();
   while (true) {
     if (!residual.allFinite()) {
       out.reason = "the residual became non-finite (NaN or Inf)";
@@ -122,8 +182,8 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
       out.reason = fmt::format("diverging (|R| grew {:.3g} times)", norm / first_norm);
       return out;
     }
-    if (!reuse || !linear_solver_.has_factorization() || out.iterations == 0) {
-      if (std::string failure = Factorize(out.q); !failure.empty()) {
+    if (options_.mass_shift || !reuse || !linear_solver_.has_factorization() || out.iterations == 0) {
+      if (std::string failure = Factorize(out.q, shift); !failure.empty()) {
         out.reason = std::move(failure);
         return out;
       }
@@ -138,7 +198,24 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
     }
     ++out.iterations;
     LineSearchResult search;
-    if (options_.max_increment > 0.0) {
+    if (options_.mass_shift) {
+      const double tried = shift;
+      std::string failure;
+      std::optional<LineSearchResult> shifted = ShiftedStep(out.q, residual, dv, shift, least_norm, failure);
+      if (!shifted) {
+        if (!failure.empty()) {
+          out.reason = std::move(failure);
+          return out;
+        }
+        if (options_.log) {
+          options_.log(fmt::format("  Newton {:3d}: |R| {:.4e} N, step {:.3e} not acceptable with shift {:.3e}; "
+                                   "shift {:.3e}", out.iterations, norm, problem_.StepLength(out.q, dv), tried, shift));
+        }
+        out.history.pop_back();
+        continue;
+      }
+      search = std::move(*shifted);
+    } else if (options_.max_increment > 0.0) {
       search = TrustRegionStep(out.q, residual, dv, radius);
     } else {
       search = BacktrackingLineSearch(problem_, options_.time, out.q, residual, dv, options_.line_search);
@@ -162,12 +239,15 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
       options_.log(fmt::format("  Newton {:3d}: |R| {:.4e} N -> {:.4e} N, step {:.3e}{}", out.iterations, norm,
                                search.residual.allFinite() ? search.residual.norm() : -1.0,
                                search.step * problem_.StepLength(out.q, dv),
-                               options_.max_increment > 0.0 ? fmt::format(" (trust radius {:.3e})", radius) : ""));
+                               options_.mass_shift ? fmt::format(" (shift {:.3e})", shift)
+                               : options_.max_increment > 0.0 ? fmt::format(" (trust radius {:.3e})", radius)
+                                                              : ""));
     }
     fresh = false;
     out.q = std::move(search.q);
     residual = std::move(search.residual);
-    if (options_.increment_tolerance > 0.0 && residual.allFinite() &&
+    // (A step shortened by a mass shift says nothing about convergence.)
+    if (options_.increment_tolerance > 0.0 && residual.allFinite() && shift == 0.0 &&
         search.step * dv.lpNorm<Eigen::Infinity>() <= options_.increment_tolerance) {
       out.residual_norm = residual.norm();
       out.history.push_back(out.residual_norm);

@@ -42,6 +42,16 @@ struct NewtonOptions {
   // 1e-3 max_increment) and retried along the same direction; an accepted step doubles it again,
   // up to max_increment. With a trust radius the line search is not used.
   double max_increment = 0.0;
+  // Mass-shifted Newton (pseudo-transient continuation, Kelley & Keyes, SIAM J. Numer. Anal. 35,
+  // 1998, with a Levenberg–Marquardt schedule): (K + σ M) dv = −R, M the mass matrix
+  // (IterationMatrix with cM = σ). σ starts at 0. A step that is not acceptable (longer than
+  // max_increment, if set, or |R| up more than 4 times) is not taken: it is solved again with σ
+  // raised (first to 1e-4 of the largest K_ii / M_ii, then ×10 each time); an accepted step lowers σ
+  // by 0.3 and below 1e-12 of that scale σ is 0 again (Newton's quadratic end game). Unlike a
+  // step cut to a trust radius, which shortens every component of dv alike, the shift damps the
+  // directions K barely resists (a long string's free top in a vertical hole, a pipe lifting off
+  // the wall) while the stiff ones still converge. Every solve, accepted or not, is an iteration.
+  bool mass_shift = false;
   int max_iterations = 25;           // per load step
   // Over all load steps: the solve stops (fails) once it has used more (0 = no limit), so that a
   // hopeless continuation ends with a message instead of running for minutes.
