@@ -75,6 +75,7 @@ void GeneralizedAlphaIntegrator::Initialize(const GeneralizedAlphaState& state) 
   UpdateWeights();
   has_factorization_ = false;
   contraction_ = 1.0;
+  step_ceiling_ = std::numeric_limits<double>::infinity();
   previous_acceleration_.resize(0);
   initialized_ = true;
 }
@@ -281,6 +282,8 @@ void GeneralizedAlphaIntegrator::AdvanceTo(double end_time) {
       ++statistics_.newton_failures;
       has_factorization_ = false;
       step_ = 0.25 * h;
+      // Remember where Newton gave up: the steps regrow only slowly back toward it (header).
+      step_ceiling_ = options_.failure_ceiling * h;
       if (step_ < options_.min_step) {
         throw SolverError(fmt::format("transient: the step from t = {:.9g} s failed ({}); the step cannot be cut "
                                       "below the minimum {:.3g} s",
@@ -304,7 +307,8 @@ void GeneralizedAlphaIntegrator::AdvanceTo(double end_time) {
     last_error_ = error;
     AcceptStep(h);
     if (options_.adaptive) {
-      if (!clipped) step_ = std::min(h * factor, options_.max_step);
+      if (!clipped) step_ = std::min({h * factor, options_.max_step, step_ceiling_});
+      step_ceiling_ *= options_.ceiling_growth;
     } else {
       step_ = std::min(2.0 * step_, std::min(options_.initial_step, options_.max_step));  // regrow after a cut
     }
