@@ -6,7 +6,9 @@
 // the load at which the pipe lying on the low side stops being stable: its lateral stiffness against
 // a sinusoid of wavenumber k, EI k⁴ − F k² + w sin I / r (bending, the axial load, gravity holding
 // it on the low side as a pendulum of length r), first vanishes at F_sin, for k⁴ = w sin I/(EI r),
-// half-wavelength π (EI r/(w sin I))^¼.
+// half-wavelength π (EI r/(w sin I))^¼. Both ends are held sideways on the wall (pinned for the
+// sinusoid, whose eight half-waves fit the pipe: its lowest buckling load is F_sin to 2e-6); free
+// ends would buckle alone first, at √(k EI) = F_sin/2 (Hetényi's end mode, measured 0.55 F_sin).
 //
 // Onset detection: the first sample at which some probe's lateral displacement across the hole
 // (to the right, y) exceeds a tenth of the clearance, i.e. the pipe has rolled sin⁻¹ 0.1 = 5.7° up
