@@ -4,11 +4,12 @@
 // slides, every contact's friction μN (N = w_b sin I per length on the low side) acts along the hole
 // against the motion, and the hook load is Johancsik's (straight section, nothing at the bit):
 //   F_top = w_b L (cos I ± μ sin I)   (+ pulling out, − running in),
-// which the transient must give within 3 % (validation.md V7). The block's start also sets off a
-// standing axial wave (a quarter wave between the block and the free bit end, period 4L/c) that
-// nothing damps while the string slides: the friction μN is then constant, so the oscillation is a
-// free one about the sliding state (its velocity amplitude, ΔF/(ρAc), stays well below the block's
-// speed: the string never stops). The hook load "once the motion is steady" is therefore its mean
+// which the transient must give within 3 % (validation.md V7). The start of the sliding (the friction
+// steps from none at rest to μN all along) sets off a standing axial wave (a quarter wave between the
+// block and the free bit end, period 4L/c) that nothing damps while the string slides: μN is then
+// constant, so the oscillation is a free one about the sliding state (its velocity swing at the bit,
+// ΔF/(ρAc), is 0.1 ft/s over 1000 ft, ~0.5 ft/s over 10,000 ft, where the lower string nearly stops
+// once a period; docs/validation.md). The hook load "once the motion is steady" is therefore its mean
 // over whole periods of that wave, the last ones that fit after `from`: T = 4L/c with the bar speed
 // c = sqrt(E/ρ) of the pipe's steel (the bore mud does not move axially with it in drillflex's
 // inertia; measured 0.244–0.245 s over 1000 ft, 2.44 s over 10,000 ft). The motion is steady when each
