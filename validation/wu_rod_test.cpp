@@ -17,38 +17,26 @@
 #include <string>
 #include <vector>
 
-#include "validation_support.hpp"
+#include "wu_rod.hpp"
 
 namespace drillflex::validation {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kE = 105e9, kDensity = 8500.0, kGravity = 9.81;  // Pa, kg/m³, m/s² (the case's)
-constexpr double kRodDiameter = 3.2e-3, kPipeDiameter = 8.3e-3, kLength = 4.0;  // m
-constexpr double kSpeed = 1e-4, kRamp = 0.1;  // m/s, s: the block's velocity and its ramp
-constexpr int kProbes = 41;                   // every 0.1 m from the blocker
-
-// The block's travel ∫ v dt under the linear ramp to kSpeed over kRamp, m.
-double Travel(double t) { return t < kRamp ? 0.5 * kSpeed * t * t / kRamp : kSpeed * (t - 0.5 * kRamp); }
+using namespace wu;
 
 TEST(V3WuRod, SinusoidalOnsetWithin10PercentOfDawsonPaslay) {
   const auto results = RunCase("transient", "v3-wu-rod/sinusoidal-onset.yaml");
   ASSERT_TRUE(results.contains("transient"));
-  const CsvColumns csv = ReadCsv(std::string(DRILLFLEX_BINARY_DIR) +
-                                 "/validation-results/v3-wu-rod/sinusoidal-onset/transient.csv");
-  const double area = kPi * kRodDiameter * kRodDiameter / 4.0;
-  const double ei = kE * kPi * std::pow(kRodDiameter, 4) / 64.0, w = kDensity * kGravity * area;
-  const double r = 0.5 * (kPipeDiameter - kRodDiameter);
-  const double f_sin = 2.0 * std::sqrt(ei * w / r), axial = kE * area / kLength;
-  const auto& time = csv["time"];
-  std::vector<double> load, travel, sideways;
+  const PushRun run = ReadRun("sinusoidal-onset", 1e-4);  // pushed at 0.1 mm/s
+  const Rod rod;
+  const double ei = rod.ei, r = rod.r, f_sin = rod.f_sin, axial = rod.axial;
+  const auto& time = run.time;
+  const auto& load = run.load;
+  const auto& travel = run.travel;
+  std::vector<double> sideways;
   for (std::size_t i = 0; i < time.size(); ++i) {
-    load.push_back(-csv["hook_load"][i]);  // compression at the loading end
-    travel.push_back(Travel(time[i]));
     double largest = 0.0;
-    for (int p = 1; p <= kProbes; ++p) {
-      largest = std::max(largest, std::abs(csv["probe" + std::to_string(p) + "_lateral_y"][i]));
-    }
+    for (int p = 1; p <= kProbes; ++p) largest = std::max(largest, std::abs(run.Probe(p, "lateral_y")[i]));
     sideways.push_back(largest);
   }
   // The straight rod's stiffness: least squares of load on travel, after the ramp, below 15 N.
@@ -73,12 +61,11 @@ TEST(V3WuRod, SinusoidalOnsetWithin10PercentOfDawsonPaslay) {
   int half_waves = 1;
   double farthest_from_low_side = 0.0;
   for (int p = 1; p <= kProbes; ++p) {
-    const std::string probe = "probe" + std::to_string(p);
-    if (csv[probe + "_contact_force"][last] > 0.0) {
-      farthest_from_low_side = std::max(farthest_from_low_side, std::abs(csv[probe + "_whirl_angle"][last] - 180.0));
+    if (run.Probe(p, "contact_force")[last] > 0.0) {
+      farthest_from_low_side = std::max(farthest_from_low_side, std::abs(run.Probe(p, "whirl_angle")[last] - 180.0));
     }
     if (p > 2 && p < kProbes) {  // interior sign changes (the ends sit at y = 0)
-      const double a = csv["probe" + std::to_string(p - 1) + "_lateral_y"][last], b = csv[probe + "_lateral_y"][last];
+      const double a = run.Probe(p - 1, "lateral_y")[last], b = run.Probe(p, "lateral_y")[last];
       if (a * b < 0.0) ++half_waves;
     }
   }
