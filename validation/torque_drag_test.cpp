@@ -12,53 +12,30 @@
 //    9,875 / sqrt(1.0625) = 9,580 ft·lbf, which drillflex's 3-D contact must give, within 2 %
 //    (Johancsik's figure is 3.1 % above it, outside the 2 %). Every contact at 165.96° ± 1.5°.
 // The run time is printed (not asserted: no timed tests).
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
-#include "field_units.hpp"
+#include "v7_pipe.hpp"
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
 namespace {
 
-constexpr double kBuoyedWeight = 16.523;  // lbf/ft, validation.md V7
+constexpr double kBuoyedWeight = kV7BuoyedWeight;  // lbf/ft
 constexpr double kHookLoad = 82615.0;     // lbf, w_b L cos I
 constexpr double kJohancsikTorque = 9875.0;  // ft·lbf, μ w_b L sin I r_joint
-constexpr double kFriction = 0.25;
+constexpr double kFriction = kV7Friction;
 const double kTorque = kJohancsikTorque / std::sqrt(1.0 + kFriction * kFriction);  // 9,580 ft·lbf, the pipe climbs
 
-// The case's own buoyed weight: the joints (bore 6.09711 in) have the body's metal area, so the pipe is
-// uniform; the case's material density (8424.0164 kg/m³) in 10 ppg mud, inside and out.
-double CaseBuoyedWeight() {
-  const double fraction = 1.5 / 30.0;  // 18 in of joint per 30 ft
-  const double body = CircleArea(5.0) - CircleArea(4.276);
-  const double joint = CircleArea(6.625) - CircleArea(6.09711);
-  EXPECT_NEAR(joint, body, 1e-4 * body);
-  const double area = body + fraction * (joint - body);  // 5.274596 in²
-  return PoundsPerFoot(area, 8424.0164 - 10.0 * kKgPerCubicMetrePerPpg);
-}
-
-nlohmann::json RunTimed(const char* file) {
-  const auto start = std::chrono::steady_clock::now();
-  auto results = RunCase("static", file);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const auto model = results.value("model", nlohmann::json::object());
-  std::printf("%s: drillflex static ran %.2f s (%d bodies, %d coordinates, %d contacts)\n", file, seconds,
-              model.value("bodies", 0), model.value("coordinates", 0), model.value("contacts", 0));
-  ::testing::Test::RecordProperty("run_time_s", std::to_string(seconds));
-  return results;
-}
-
 TEST(V7TorqueDrag, CaseBuoyedWeightIsTheReferenceOne) {
-  EXPECT_NEAR(CaseBuoyedWeight(), kBuoyedWeight, 1e-4 * kBuoyedWeight);
+  EXPECT_NEAR(V7CaseBuoyedWeight(), kBuoyedWeight, 1e-4 * kBuoyedWeight);
   // And the references follow from it: w_b L cos I, μ w_b L sin I r_joint.
   EXPECT_NEAR(kBuoyedWeight * 10000.0 * std::cos(60.0 * kDegree), kHookLoad, 0.5);
   EXPECT_NEAR(kFriction * kBuoyedWeight * 10000.0 * std::sin(60.0 * kDegree) * 6.625 / 24.0, kJohancsikTorque, 0.5);
 }
 
 TEST(V7TorqueDrag, StaticHookLoadWithinOnePercent) {
-  const auto results = RunTimed("v7-torque-drag/pipe-60-deg-static.yaml");
+  const auto results = RunCaseTimed("static", "v7-torque-drag/pipe-60-deg-static.yaml");
   ASSERT_TRUE(results.contains("static"));
   EXPECT_TRUE(results["static"]["converged"].get<bool>());
   const auto& top = results["static"]["nodes"].back();
@@ -71,7 +48,7 @@ TEST(V7TorqueDrag, StaticHookLoadWithinOnePercent) {
 // The rotating check on `file`, a `length_ft` long section (the references scale with L).
 void CheckRotatingOffBottom(const char* file, double length_ft) {
   const double scale = length_ft / 10000.0;
-  const auto results = RunTimed(file);
+  const auto results = RunCaseTimed("static", file);
   ASSERT_TRUE(results.contains("static"));
   EXPECT_TRUE(results["static"]["converged"].get<bool>());
   const auto& top = results["static"]["nodes"].back();

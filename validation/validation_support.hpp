@@ -1,6 +1,8 @@
 // Runs the drillflex command line on a validation case and reads its results.json.
 #pragma once
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -20,9 +22,14 @@ inline std::string CasePath(const std::string& relative) {
 
 // Runs `drillflex <command> <case> -o <dir>` and returns results.json (fails the test on a
 // non-zero exit status).
+// The directory a case's results go to: build/validation-results/<case without its extension>.
+inline std::string ResultsDirectory(const std::string& relative_case) {
+  return std::string(DRILLFLEX_BINARY_DIR) + "/validation-results/" +
+         std::filesystem::path(relative_case).replace_extension().string();
+}
+
 inline nlohmann::json RunCase(const std::string& command, const std::string& relative_case) {
-  const std::string output = std::string(DRILLFLEX_BINARY_DIR) + "/validation-results/" +
-                             std::filesystem::path(relative_case).replace_extension().string();
+  const std::string output = ResultsDirectory(relative_case);
   std::filesystem::remove_all(output);
   const std::string log = output + ".log";
   std::filesystem::create_directories(std::filesystem::path(log).parent_path());
@@ -37,6 +44,20 @@ inline nlohmann::json RunCase(const std::string& command, const std::string& rel
   }
   std::ifstream file(output + "/results.json");
   return nlohmann::json::parse(file);
+}
+
+// RunCase, printing and recording (test property run_time_s) its wall time and the model's size.
+// The time is reported, never asserted (no timed tests).
+inline nlohmann::json RunCaseTimed(const std::string& command, const std::string& relative_case) {
+  const auto start = std::chrono::steady_clock::now();
+  auto results = RunCase(command, relative_case);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto model = results.value("model", nlohmann::json::object());
+  std::printf("%s: drillflex %s ran %.2f s (%d bodies, %d coordinates, %d contacts)\n", relative_case.c_str(),
+              command.c_str(), seconds, model.value("bodies", 0), model.value("coordinates", 0),
+              model.value("contacts", 0));
+  ::testing::Test::RecordProperty("run_time_s", std::to_string(seconds));
+  return results;
 }
 
 inline double RelativeError(double value, double reference) { return value / reference - 1.0; }

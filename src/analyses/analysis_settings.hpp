@@ -93,6 +93,9 @@ struct TransientSettings {
   // The drives at the top (model/drives.hpp); none: the supports hold the top as in statics.
   std::optional<model::TopDrive> top_drive;
   std::optional<model::BlockDrive> block;
+  // Imbalances turning with the string (`excitations` of type imbalance, as in the vibration
+  // analysis: model/imbalance_element.hpp).
+  std::vector<model::Imbalance> imbalances;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

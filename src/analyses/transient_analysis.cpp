@@ -142,6 +142,7 @@ model::ModelInput TransientModelInput(const model::ModelInput& input, const Tran
   transient.top_drive = settings.top_drive;
   transient.block = settings.block;
   transient.bit_rock = settings.bit_rock;  // the builder then leaves out the bit loads the law replaces
+  transient.imbalances = settings.imbalances;
   return transient;
 }
 

@@ -114,7 +114,7 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
 analyses::TransientSettings ReadTransient(const YamlView& node, const model::Operation& operation) {
   node.ExpectMap("the transient settings {duration, output_interval, probes}");
   node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step", "rho_infinity", "tolerance", "start",
-                      "initial_loads", "top_drive", "block", "bit_rock"});
+                      "initial_loads", "top_drive", "block", "bit_rock", "excitations"});
   analyses::TransientSettings settings;
   settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
   settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
@@ -138,6 +138,19 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
     settings.initial_loads = ReadLoadsSection(*loads);
     if (settings.start == analyses::TransientStart::Reference && !settings.initial_loads.empty()) {
       loads->Fail("initial loads need the start from the equilibrium (start: equilibrium), not the reference");
+    }
+  }
+  // The vibration analysis's imbalance items; a bit's or a motor's harmonic force has no meaning in
+  // the time domain (the bit-rock law and the string's own rotation make those).
+  if (const auto list = node.OptionalChild("excitations")) {
+    list->ExpectSequence("excitations");
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const YamlView item = list->Item(i);
+      const analyses::Excitation excitation = ReadExcitation(item);
+      if (excitation.type != analyses::ExcitationType::Imbalance) {
+        item.Child("type").Fail("a transient takes imbalance excitations only (the bit-rock law makes the bit's)");
+      }
+      settings.imbalances.push_back(model::Imbalance{excitation.at, excitation.imbalance});
     }
   }
   if (const auto bit_rock = node.OptionalChild("bit_rock")) settings.bit_rock = ReadBitRockSection(*bit_rock);

@@ -89,6 +89,10 @@ void CheckCaseConsistency(const Case& c, const YamlView& root) {
     const YamlView list = root.Child("analyses").Child("transient");
     const auto& initial = c.analyses.transient->initial_loads;
     if (!initial.empty()) check_loads(initial, list.Child("initial_loads"));
+    const auto& imbalances = c.analyses.transient->imbalances;
+    for (std::size_t i = 0; i < imbalances.size(); ++i) {
+      CheckOnString(imbalances[i].at, length, list.Child("excitations").Item(i), "at", system);
+    }
     for (std::size_t i = 0; i < probes.size(); ++i) {
       if (probes[i] < 0.0 || probes[i] > length * (1.0 + 1e-12)) {
         list.Child("probes").Item(i).Fail(fmt::format(

@@ -10,6 +10,7 @@
 #include "core/so3.hpp"
 #include "model/contact_circles.hpp"
 #include "model/drive_elements.hpp"
+#include "model/imbalance_element.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
@@ -397,6 +398,10 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     if (parameters.radius == 0.0) parameters.radius = 0.5 * input.string.components.front().outer_diameter;
     bit_rock_element = static_cast<int>(elements.size());
     elements.push_back(std::make_unique<BitRockElement>(&placed.front(), parameters));
+  }
+  for (const Imbalance& imbalance : input.imbalances) {
+    const auto [b, node] = FindNodeAt(placed, imbalance.at);
+    elements.push_back(std::make_unique<ImbalanceElement>(&placed[b], node, imbalance.me, Vec3::UnitZ()));
   }
   if (force_scale == 0.0) force_scale = placed.front().bending_rigidity / (length * length);
 

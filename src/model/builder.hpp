@@ -47,6 +47,8 @@ struct ModelInput {
   // block: x), with a spring as stiff as that support (kSupportStiffnessFactor).
   std::optional<TopDrive> top_drive;
   std::optional<BlockDrive> block;
+  // Imbalances turning with the string (a transient's `excitations`; model/imbalance_element.hpp).
+  std::vector<Imbalance> imbalances;
 };
 
 // The supports a string in a well gets when the case gives none (method.md §8, the static BHA

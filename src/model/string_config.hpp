@@ -109,6 +109,13 @@ struct Load {
   int source_line = 0;
 };
 
+// An imbalance m·e fixed to the string at `at` (the nearest node), its offset toward the high side
+// of the undeformed placement (string frame z): model/imbalance_element.hpp.
+struct Imbalance {
+  double at = 0.0;  // m from the bit
+  double me = 0.0;  // kg·m
+};
+
 struct Operation {
   double weight_on_bit = 0.0;   // N, compression at the bit
   double rpm = 0.0;             // surface rotary speed, rad/s

@@ -75,6 +75,8 @@ void GeneralizedAlphaIntegrator::Initialize(const GeneralizedAlphaState& state) 
   UpdateWeights();
   has_factorization_ = false;
   contraction_ = 1.0;
+  step_ceiling_ = std::numeric_limits<double>::infinity();
+  stale_failures_ = 0;
   previous_acceleration_.resize(0);
   initialized_ = true;
 }
@@ -230,10 +232,19 @@ GeneralizedAlphaIntegrator::Attempt GeneralizedAlphaIntegrator::Iterate(double h
 
 GeneralizedAlphaIntegrator::Attempt GeneralizedAlphaIntegrator::TryStep(double h) {
   PrepareStep(h);
-  const bool had_matrix = has_factorization_;
-  Attempt attempt = Iterate(h, false);
-  if (attempt.outcome == Outcome::kConverged || !had_matrix || !options_.reuse_iteration_matrix) return attempt;
+  const bool had_matrix = has_factorization_ && options_.reuse_iteration_matrix;
+  // After stale_failure_limit steps in a row whose attempt with an earlier step's matrix failed, the
+  // steps start with a fresh one, trying the old one again every stale_probe_interval steps (header).
+  const bool skip_stale = had_matrix && stale_failures_ >= options_.stale_failure_limit &&
+                          statistics_.steps % options_.stale_probe_interval != 0;
+  Attempt attempt = Iterate(h, skip_stale);
+  if (attempt.outcome == Outcome::kConverged) {
+    if (had_matrix && !skip_stale) stale_failures_ = 0;
+    return attempt;
+  }
+  if (!had_matrix || skip_stale) return attempt;
   // A stale matrix may be the reason: retry once from the predictor with a fresh one.
+  ++stale_failures_;
   PrepareStep(h);
   return Iterate(h, true);
 }
@@ -281,6 +292,8 @@ void GeneralizedAlphaIntegrator::AdvanceTo(double end_time) {
       ++statistics_.newton_failures;
       has_factorization_ = false;
       step_ = 0.25 * h;
+      // Remember where Newton gave up: the steps regrow only slowly back toward it (header).
+      step_ceiling_ = options_.failure_ceiling * h;
       if (step_ < options_.min_step) {
         throw SolverError(fmt::format("transient: the step from t = {:.9g} s failed ({}); the step cannot be cut "
                                       "below the minimum {:.3g} s",
@@ -304,7 +317,8 @@ void GeneralizedAlphaIntegrator::AdvanceTo(double end_time) {
     last_error_ = error;
     AcceptStep(h);
     if (options_.adaptive) {
-      if (!clipped) step_ = std::min(h * factor, options_.max_step);
+      if (!clipped) step_ = std::min({h * factor, options_.max_step, step_ceiling_});
+      step_ceiling_ *= options_.ceiling_growth;
     } else {
       step_ = std::min(2.0 * step_, std::min(options_.initial_step, options_.max_step));  // regrow after a cut
     }

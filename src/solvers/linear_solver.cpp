@@ -23,9 +23,30 @@ namespace {
 // Backward error threshold above which an LDLT solution is not trusted.
 constexpr double kLdltBackwardErrorLimit = 1e-10;
 
+// ‖A − Aᵀ‖_F ≤ 1e-12 ‖A‖_F, summed entry by entry (a_ji found by binary search in the sorted
+// column i) and stopped as soon as the asymmetry exceeds the limit: forming Aᵀ and A − Aᵀ took
+// 1.9 ms of every 9 ms factorization of the bundled example's 1872² transient iteration matrix,
+// which is unsymmetric (friction, gyroscopic terms) from its first entries on.
 bool IsNumericallySymmetric(const SparseMat& matrix) {
-  const SparseMat transposed = matrix.transpose();
-  return SparseMat(matrix - transposed).norm() <= 1e-12 * matrix.norm();
+  const double limit = 1e-24 * matrix.squaredNorm();
+  const int* outer = matrix.outerIndexPtr();
+  const int* inner = matrix.innerIndexPtr();
+  const double* values = matrix.valuePtr();
+  double asymmetry = 0.0;
+  for (Eigen::Index j = 0; j < matrix.outerSize(); ++j) {
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      const int i = inner[k];
+      if (i == j) continue;
+      const int* begin = inner + outer[i];
+      const int* end = inner + outer[i + 1];
+      const int* found = std::lower_bound(begin, end, static_cast<int>(j));
+      const double mirror = (found != end && *found == j) ? values[found - inner] : 0.0;
+      const double difference = values[k] - mirror;
+      asymmetry += difference * difference;
+      if (asymmetry > limit) return false;
+    }
+  }
+  return true;
 }
 
 bool AllFinite(const SparseMat& matrix) {

@@ -250,6 +250,23 @@ std::string ErrorOf(const std::string& text, int* line = nullptr, std::string* k
 
 const char* kGoodString = "string:\n  - {type: collar, od: 8, id: 2.8125, length: 30}\n";
 
+// A transient's `excitations`: the vibration analysis's imbalance items (lb·in in field units);
+// a bit's or motor's excitation, or an imbalance off the string, is refused with its key.
+TEST(CaseReader, TransientImbalances) {
+  const std::string head = std::string("units: field\n") + kGoodString + "analyses:\n  transient:\n    excitations:\n";
+  const Case c = ParseCase(head + "      - {type: imbalance, at: 15, me: 50 lb*in}\n", "imbalance.yaml");
+  ASSERT_EQ(c.analyses.transient->imbalances.size(), 1u);
+  EXPECT_NEAR(c.analyses.transient->imbalances[0].at, 15 * kFt, 1e-12);
+  EXPECT_NEAR(c.analyses.transient->imbalances[0].me, 50 * 0.45359237 * 0.0254, 1e-12);  // kg·m
+  EXPECT_NE(ErrorOf(head + "      - {type: bit, harmonic: 3, lateral: 500}\n").find("imbalance excitations only"),
+            std::string::npos);
+  int line = 0;
+  std::string key;
+  EXPECT_NE(ErrorOf(head + "      - {type: imbalance, at: 40, me: 1 lb*in}\n", &line, &key).find("off the string"),
+            std::string::npos);
+  EXPECT_EQ(key, "analyses.transient.excitations[0].at");
+}
+
 struct RejectedCase {
   const char* label;
   std::string text;
