@@ -74,8 +74,8 @@ TEST(V7TorqueDrag, RotatingOffBottomTorqueOf1000FtWithinTwoPercent) {
 }
 
 // DISABLED (open, issue 4): over 10,000 ft the rotating static solve converges since the start
-// carries the tension and Newton has the mass shift (2026-12-02: 359 iterations, 84 s CPU, the
-// stages c = 31.6, 100 and 1000 each needing the shift's retry), but the top torque is 9,573 ft·lbf,
+// carries the tension and Newton has the mass shift (2026-12-02: 479 iterations, failed attempts
+// included, 40 s; the stages c = 31.6, 100 and 1000 each needing the shift's retry), but the top torque is 9,573 ft·lbf,
 // −3.06 % from the reference against the 2 % asked (hook load 82,611 lbf, −0.005 %); 1000 ft is
 // within 2 % in ~35 iterations. Too slow for CI as it is. Run it with --gtest_also_run_disabled_tests.
 TEST(V7TorqueDrag, DISABLED_RotatingOffBottomTorqueWithinTwoPercent) {

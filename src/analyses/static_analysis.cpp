@@ -175,6 +175,8 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
     options.mass_shift = mass_shift;
     options.max_iterations = std::max(options.max_iterations, mass_shift ? kMaxIterationsShifted : kMaxIterationsInHole);
   }
+  // One solve at full load: the budget is its iteration limit.
+  if (start && iteration_budget > 0) options.max_iterations = std::min(options.max_iterations, iteration_budget);
   const solvers::StaticResult solved =
       solvers::SolveStatic(problem, start ? *start : built.system.ReferencePositions(), options);
   result.converged = solved.converged;
@@ -257,6 +259,13 @@ const double kHalfDecade = std::sqrt(10.0);
 // example: in one solve without rotation, 0.16 s; by half decades when rotating at 120 rpm, 0.55 s;
 // each fails on the other), so both are tried, the likelier first. Throws SolverError when
 // neither converges.
+// Newton iterations of a coupling stage with the trust radius before it is retried with the mass
+// shift (the bundled example's stages take 6–10; V7's 10,000 ft rotating case 27 where it converges,
+// 100 without converging where it does not), and of the whole solve from the resting start, failed
+// attempts included, before the fallback takes over (V7's 10,000 ft rotating case: 662).
+constexpr int kTrustStageIterations = 40;
+constexpr int kRestingStartBudget = 1000;
+
 StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::BuiltModel& built,
                                    cms::ReductionCache& cache, const StaticSettings& settings) {
   model::ModelInput stage = input;
@@ -281,15 +290,24 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
     VecX trial = q;
     try {
       StaticResult solved;
-      // Each stage with the trust radius, and if that fails, again with the mass shift (slower
-      // where the trust radius converges: the bundled example's stages took 3 times the iterations).
+      // Each stage with the trust radius (kTrustStageIterations at most), and if that fails, again
+      // with the mass shift (slower where the trust radius converges: the bundled example's stages
+      // took 3 times the iterations), both within what is left of kRestingStartBudget.
       auto solve = [&](const model::BuiltModel& model, double factor) {
         Log(settings, fmt::format("static: couplings at c = {:g}, all loads", factor));
+        const int left = kRestingStartBudget - iterations;
+        if (left <= 0) {
+          throw SolverError(fmt::format("the solve from the resting start spent its {} Newton iterations",
+                                        kRestingStartBudget));
+        }
         try {
-          solved = SolveEquilibrium(model, settings, &trial);
+          solved = SolveEquilibrium(model, settings, &trial, std::min(kTrustStageIterations, left));
         } catch (const SolverError& error) {
+          iterations += std::min(kTrustStageIterations, left);  // spent by the failed solve
           Log(settings, fmt::format("static: {}; again with the mass shift", error.what()));
-          solved = SolveEquilibrium(model, settings, &trial, 0, true);
+          const int rest = kRestingStartBudget - iterations;
+          if (rest <= 0) throw;
+          solved = SolveEquilibrium(model, settings, &trial, rest, true);
         }
         trial = solved.q;
         iterations += solved.iterations;
