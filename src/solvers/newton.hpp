@@ -45,9 +45,11 @@ struct NewtonOptions {
   // Mass-shifted Newton (pseudo-transient continuation, Kelley & Keyes, SIAM J. Numer. Anal. 35,
   // 1998, with a Levenberg–Marquardt schedule): (K + σ M) dv = −R, M the mass matrix
   // (IterationMatrix with cM = σ). σ starts at 0. A step that is not acceptable (longer than
-  // max_increment, if set, or |R| up more than 4 times) is not taken: it is solved again with σ
-  // raised (first to 1e-4 of the largest K_ii / M_ii, then ×10 each time); an accepted step lowers σ
-  // by 0.3 and below 1e-12 of that scale σ is 0 again (Newton's quadratic end game). Unlike a
+  // max_increment, if set, or |R| above 4 times both the current and the least |R| of the solve;
+  // a step under 1e-3 max_increment is always taken) is not taken: it is solved again with σ
+  // raised (first to 1e-4 of the largest K_ii / M_ii, then ×10 each time, failing beyond 1e4 of
+  // it); an accepted step that lowers |R| lowers σ by 0.3, and below 1e-12 of that scale σ is 0
+  // again (Newton's quadratic end game). The increment tolerance counts only at σ = 0. Unlike a
   // step cut to a trust radius, which shortens every component of dv alike, the shift damps the
   // directions K barely resists (a long string's free top in a vertical hole, a pipe lifting off
   // the wall) while the stiff ones still converge. Every solve, accepted or not, is an iteration.
