@@ -31,7 +31,7 @@ void SetReferencePose(const Body& body, VecX& q) {
   q.segment(body.q_offset + 7, body.flexible_count).setZero();
 }
 
-void TwistKeepingShape(const Body& body, double angle, VecX& q) {
+void TwistKeepingShape(const Body& body, double angle, VecX& q, double twist_rate) {
   Quat rotation(q[body.q_offset + 3], q[body.q_offset + 4], q[body.q_offset + 5], q[body.q_offset + 6]);
   rotation = rotation * Quat(Eigen::AngleAxisd(angle, Vec3::UnitX()));
   rotation.normalize();
@@ -43,11 +43,13 @@ void TwistKeepingShape(const Body& body, double angle, VecX& q) {
   const VecX eta = q.segment(body.q_offset + 7, modes);
   MatX basis(6 * nodes, modes);
   VecX target(6 * nodes);
+  const double middle = 0.5 * (body.reduced->node_positions.front().x() + body.reduced->node_positions.back().x());
   for (int k = 0; k < nodes; ++k) {
     basis.middleRows(6 * k, 3) = body.reduced->node_translation_modes[k];
     basis.middleRows(6 * k + 3, 3) = body.reduced->node_rotation_modes[k];
     target.segment<3>(6 * k) = back * (body.reduced->node_translation_modes[k] * eta);
     target.segment<3>(6 * k + 3) = back * (body.reduced->node_rotation_modes[k] * eta);
+    target[6 * k + 3] += twist_rate * (body.reduced->node_positions[k].x() - middle);
   }
   q.segment(body.q_offset + 7, modes) = basis.colPivHouseholderQr().solve(target);
 }

@@ -70,6 +70,10 @@ void SetReferencePose(const Body& body, VecX& q);
 // η ← the least-squares fit of [Φ_k; Ψ_k] η' = Rx(−angle) [Φ_k; Ψ_k] η over all nodes (exact when the
 // modes span bending in both planes alike, as for a round section). Nodes on the x axis do not
 // move, so the rest of the string is unaffected except through the twist itself.
-void TwistKeepingShape(const Body& body, double angle, VecX& q);
+// `twist_rate` (rad/m) adds an elastic twist that grows along the body from its middle node
+// position: θ_x,k += twist_rate (x_k − x_mid), the torsion a body carrying a torque T has inside
+// it (twist_rate = ±T/GJ), so that the couplings at its ends are not left to carry the whole turn
+// between neighbouring bodies.
+void TwistKeepingShape(const Body& body, double angle, VecX& q, double twist_rate = 0.0);
 
 }  // namespace drillflex::model
