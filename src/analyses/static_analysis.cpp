@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "analyses/coupling_regap.hpp"
 #include "analyses/dynamic_relaxation.hpp"
 #include "analyses/resting_start.hpp"
 #include "analyses/wall_offsets.hpp"
@@ -139,6 +142,14 @@ constexpr int kMaxIterationsInHole = 100;
 // With the mass shift: contacts that open and close as the string settles make |R| zigzag down
 // slowly (3 km of string: 1.7e6 N to 450 N in 100 iterations at c = 31.6).
 constexpr int kMaxIterationsShifted = 300;
+// The mass shift's end game (solvers::NewtonOptions::end_game_residual): plain Newton once |R| is
+// within this fraction of the force scale.
+constexpr double kEndGameFraction = 1e-2;
+// The residual tolerance (relative to the force scale) of a coupling stage before the last: its
+// equilibrium only starts the next stage, whose couplings change every force by c₂/c₁ anyway. On
+// the 3 km bench string the rotating stages cycled for hundreds of iterations between 10 and 2000 N
+// under the strict 1e-8, where 1e-4 (90 N on 9e5 N) ends them.
+constexpr double kIntermediateStageTolerance = 1e-4;
 }  // namespace
 
 namespace {
@@ -146,8 +157,9 @@ namespace {
 // The equilibrium alone (no results along the string): see RunStatic.
 // `mass_shift`: in a hole, a step longer than the trust radius is solved again with the mass shift
 // (solvers::NewtonOptions::mass_shift) instead of cut, with kMaxIterationsShifted iterations.
+// `relative_tolerance` > 0 replaces the Newton options' residual tolerance.
 StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start,
-                              int iteration_budget = 0, bool mass_shift = false) {
+                              int iteration_budget = 0, bool mass_shift = false, double relative_tolerance = 0.0) {
   StaticResult result;
   if (settings.method == StaticMethod::DynamicRelaxation) {
     RelaxationOptions relaxation;
@@ -165,6 +177,7 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
   options.max_iterations = std::clamp(settings.max_iterations, 1, kMaxIterationsPerLoadStep);
   if (built.force_scale > 0.0) options.force_scale = built.force_scale;
   options.max_total_iterations = iteration_budget;
+  if (relative_tolerance > 0.0) options.residual_tolerance = relative_tolerance;
   options.log = settings.log;
   if (start) options.load_stepping.enabled = false;  // already near the equilibrium at full load
   // In a hole, let contacts close gradually: no node moves more than kWallStepLimit across the hole
@@ -173,6 +186,9 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
   if (!built.contact_elements.empty()) {
     options.max_increment = kWallStepLimit;
     options.mass_shift = mass_shift;
+    // Plain Newton tried once the shifted steps are within 1 % of the loads (solvers/newton.hpp):
+    // on the 3 km bench string it converges in 2–6 steps where the shift cycled for hundreds.
+    if (mass_shift) options.end_game_residual = kEndGameFraction * built.force_scale;
     options.max_iterations = std::max(options.max_iterations, mass_shift ? kMaxIterationsShifted : kMaxIterationsInHole);
   }
   // One solve at full load: the budget is its iteration limit.
@@ -252,10 +268,11 @@ constexpr double kSoftCouplingFactor = 10.0;
 const double kHalfDecade = std::sqrt(10.0);
 
 // From the string resting on the wall (analyses/resting_start.hpp): the equilibrium without the
-// torque on bit, without rotating friction and with soft couplings (kSoftCouplingFactor); then
-// twisted by the torque the string carries (TwistUnderTorque, with the contact forces found);
-// then, with all loads, the couplings stiffened to the case's factor: either in one solve or by
-// half decades. Which of the two converges was measured to depend on the case (the bundled
+// torque on bit, without rotating friction and with soft couplings (kSoftCouplingFactor); then,
+// with all loads, the couplings stiffened to the case's factor: either in one solve or by half
+// decades. Before each stage the couplings are closed to the gaps that carry their forces at the new
+// stiffness (CarryCouplingForces), and before the first the string is twisted by the torque it
+// carries (TwistUnderTorque, with the contact forces found). Which of the two converges was measured to depend on the case (the bundled
 // example: in one solve without rotation, 0.16 s; by half decades when rotating at 120 rpm, 0.55 s;
 // each fails on the other), so both are tried, the likelier first. Throws SolverError when
 // neither converges.
@@ -280,7 +297,6 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
   // (a compressed pipe above the collars, the free top of a long string): the mass shift.
   const StaticResult soft = SolveEquilibrium(soft_model, settings, &q, 0, true);
   q = soft.q;
-  TwistUnderTorque(input, soft_model, q);
   stage.operation = input.operation;
   stage.static_sliding = input.static_sliding;
   int iterations = soft.iterations, load_steps = soft.load_steps;
@@ -293,21 +309,29 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
       // Each stage with the trust radius (kTrustStageIterations at most), and if that fails, again
       // with the mass shift (slower where the trust radius converges: the bundled example's stages
       // took 3 times the iterations), both within what is left of kRestingStartBudget.
+      std::vector<std::unique_ptr<model::BuiltModel>> stages;  // alive while `previous` points to one
+      const model::BuiltModel* previous = &soft_model;
       auto solve = [&](const model::BuiltModel& model, double factor) {
+        // A stage before the last only has to bring the next one near: a loose tolerance.
+        const double tolerance = &model == &built ? 0.0 : kIntermediateStageTolerance;
         Log(settings, fmt::format("static: couplings at c = {:g}, all loads", factor));
+        CarryCouplingForces(*previous, model, trial);
+        // The soft stage had no torque: twist the string now, at the new stiffness.
+        if (previous == &soft_model) TwistUnderTorque(input, soft_model, trial);
+        previous = &model;
         const int left = kRestingStartBudget - iterations;
         if (left <= 0) {
           throw SolverError(fmt::format("the solve from the resting start spent its {} Newton iterations",
                                         kRestingStartBudget));
         }
         try {
-          solved = SolveEquilibrium(model, settings, &trial, std::min(kTrustStageIterations, left));
+          solved = SolveEquilibrium(model, settings, &trial, std::min(kTrustStageIterations, left), false, tolerance);
         } catch (const SolverError& error) {
           iterations += std::min(kTrustStageIterations, left);  // spent by the failed solve
           Log(settings, fmt::format("static: {}; again with the mass shift", error.what()));
           const int rest = kRestingStartBudget - iterations;
           if (rest <= 0) throw;
-          solved = SolveEquilibrium(model, settings, &trial, rest, true);
+          solved = SolveEquilibrium(model, settings, &trial, rest, true, tolerance);
         }
         trial = solved.q;
         iterations += solved.iterations;
@@ -318,7 +342,8 @@ StaticResult SolveFromRestingStart(const model::ModelInput& input, const model::
              factor *= steps[attempt]) {
           model::ModelInput stiffer = stage;
           stiffer.settings.coupling_factor = factor;
-          solve(model::BuildSystemModel(stiffer, cache), factor);
+          stages.push_back(std::make_unique<model::BuiltModel>(model::BuildSystemModel(stiffer, cache)));
+          solve(*stages.back(), factor);
         }
       }
       solve(built, input.settings.coupling_factor);

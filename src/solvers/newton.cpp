@@ -57,6 +57,9 @@ class NewtonStepper {
   std::optional<LineSearchResult> ShiftedStep(const VecX& q, const VecX& residual, const VecX& dv, double& shift,
                                               double& least_norm, std::string& failure);
 
+  // NewtonOptions::end_game_residual: plain Newton from q; the converged outcome, or nothing.
+  std::optional<StepOutcome> EndGame(const VecX& q, const VecX& residual);
+
   const StaticProblem& problem_;
   const NewtonOptions& options_;
   const double tolerance_;
@@ -78,6 +81,8 @@ std::string NewtonStepper::Factorize(const VecX& q, double shift) {
 }
 
 constexpr double kTrustGrowth = 4.0;
+constexpr int kEndGameIterations = 6;
+constexpr double kEndGameDivergence = 1e3;  // an end game whose |R| grows this much is given up
 constexpr double kSmallestRadius = 1e-3;
 
 LineSearchResult NewtonStepper::TrustRegionStep(const VecX& q, const VecX& residual, const VecX& dv,
@@ -100,6 +105,38 @@ LineSearchResult NewtonStepper::TrustRegionStep(const VecX& q, const VecX& resid
     }
     radius = std::max(0.25 * std::min(radius, length), kSmallestRadius * options_.max_increment);
   }
+}
+
+std::optional<StepOutcome> NewtonStepper::EndGame(const VecX& q, const VecX& residual) {
+  StepOutcome out;
+  out.q = q;
+  VecX current = residual;
+  for (int iteration = 1; iteration <= kEndGameIterations; ++iteration) {
+    if (!Factorize(out.q).empty()) return std::nullopt;
+    VecX dv;
+    try {
+      dv = -linear_solver_.Solve(current);
+    } catch (const SolverError&) {
+      return std::nullopt;
+    }
+    out.q = problem_.Increment(out.q, dv);
+    current = problem_.Residual(options_.time, out.q, zero_, zero_);
+    if (!current.allFinite()) return std::nullopt;
+    out.iterations = iteration;
+    out.residual_norm = current.norm();
+    if (out.residual_norm > kEndGameDivergence * residual.norm()) return std::nullopt;
+    out.history.push_back(out.residual_norm);
+    if (options_.log) {
+      options_.log(fmt::format("  Newton end game {}: |R| {:.4e} N, step {:.3e}", iteration, out.residual_norm,
+                               problem_.StepLength(q, dv)));
+    }
+    if (out.residual_norm <= tolerance_ ||
+        (options_.increment_tolerance > 0.0 && dv.lpNorm<Eigen::Infinity>() <= options_.increment_tolerance)) {
+      out.converged = true;
+      return out;
+    }
+  }
+  return std::nullopt;
 }
 
 // The mass shift's schedule (NewtonOptions::mass_shift).
@@ -188,6 +225,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
   out.q = q_start;
   VecX residual = problem_.Residual(options_.time, out.q, zero_, zero_);
   const bool reuse = problem_.CanReuseIterationMatrix();
+  double end_game_below = options_.end_game_residual;  // |R| at or below which the end game is tried
   bool fresh = false;  // the factorization belongs to the current q
   double first_norm = -1.0;
   double radius = options_.max_increment;
@@ -280,6 +318,14 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
     fresh = false;
     out.q = std::move(search.q);
     residual = std::move(search.residual);
+    if (options_.mass_shift && residual.allFinite() && residual.norm() <= end_game_below) {
+      end_game_below = 0.5 * residual.norm();
+      if (std::optional<StepOutcome> finished = EndGame(out.q, residual)) {
+        finished->iterations += out.iterations;
+        return std::move(*finished);
+      }
+      out.iterations += kEndGameIterations;
+    }
     // (A step shortened by a mass shift says nothing about convergence.)
     if (options_.increment_tolerance > 0.0 && residual.allFinite() && shift == 0.0 &&
         search.step * dv.lpNorm<Eigen::Infinity>() <= options_.increment_tolerance) {

@@ -54,6 +54,13 @@ struct NewtonOptions {
   // directions K barely resists (a long string's free top in a vertical hole, a pipe lifting off
   // the wall) while the stiff ones still converge. Every solve, accepted or not, is an iteration.
   bool mass_shift = false;
+  // With the mass shift: once an accepted step brings |R| to or below this (N; 0 = never), plain
+  // Newton steps (σ = 0, full steps, no acceptance test) are tried from there, at most
+  // kEndGameIterations of them; if they converge, the solve ends, else it goes on shifted from where
+  // the end game began (and tries it again only below half that |R|). The shift's acceptance rule
+  // can cycle near the solution (σ lowered, a step that overshoots along a direction K barely
+  // resists, σ raised again) where Newton itself converges in a few steps.
+  double end_game_residual = 0.0;
   int max_iterations = 25;           // per load step
   // Over all load steps: the solve stops (fails) once it has used more (0 = no limit), so that a
   // hopeless continuation ends with a message instead of running for minutes.

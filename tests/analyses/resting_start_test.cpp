@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "field_parts.hpp"
 #include "analyses/resting_start.hpp"
 #include "model/builder.hpp"
 #include "model/spring_elements.hpp"
@@ -23,17 +24,10 @@
 namespace drillflex::analyses {
 namespace {
 
-constexpr double kIn = 0.0254, kFt = 0.3048, kLbf = 4.4482216152605;
-
-model::Component Part(model::ComponentType type, double od_in, double id_in, double length_ft, int count = 1) {
-  model::Component part;
-  part.type = type;
-  part.outer_diameter = od_in * kIn;
-  part.inner_diameter = id_in * kIn;
-  part.length = length_ft * kFt;
-  part.count = count;
-  return part;
-}
+using testing::kFt;
+using testing::kIn;
+using testing::kLbf;
+using testing::Part;
 
 model::ModelInput KickOffToTheSouth() {
   model::ModelInput input;
