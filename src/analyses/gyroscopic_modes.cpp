@@ -63,25 +63,27 @@ struct GyroscopicModeSolver::Data {
   }
 
   // The fixed point of a mode's frequency with the fluid at that frequency: re-solve at Im s and
-  // keep the eigenvalue nearest the previous one, until it moves by less than 1e-9 |s|.
+  // keep the mode most like the previous one (the largest |x_oldᴴ x|² / (|x_old|² |x|²) in the
+  // basis coordinates, M_ref-orthonormal: the nearest eigenvalue is not enough, as the heavier
+  // viscous added mass moves the next mode of a close pair onto the old frequency), until the
+  // eigenvalue moves by less than 1e-9 |s|.
   void Refine(double spin, Complex& s, Eigen::VectorXcd& x) const {
     MatX m, d;
     for (int iteration = 0; iteration < 30; ++iteration) {
       MatricesAt(s.imag(), spin, m, d);
-      const bool last = iteration == 29;
-      const solvers::ComplexModes modes = solvers::SolveDampedModes(stiffness, d, m, static_cast<int>(stiffness.rows()), false);
-      Eigen::Index nearest = 0;
-      (modes.eigenvalues.array() - s).abs().minCoeff(&nearest);
-      const bool done = std::abs(modes.eigenvalues[nearest] - s) <= 1e-9 * std::abs(s);
-      s = modes.eigenvalues[nearest];
-      if (done || last) break;
+      const solvers::ComplexModes modes = solvers::SolveDampedModes(stiffness, d, m, static_cast<int>(stiffness.rows()));
+      Eigen::Index best = 0;
+      double likeness = -1.0;
+      for (Eigen::Index j = 0; j < modes.eigenvalues.size(); ++j) {
+        if (!(modes.eigenvalues[j].imag() > 0.0)) continue;
+        const double overlap = std::norm(x.dot(modes.vectors.col(j))) / (x.squaredNorm() * modes.vectors.col(j).squaredNorm());
+        if (overlap > likeness) likeness = overlap, best = j;
+      }
+      const bool done = std::abs(modes.eigenvalues[best] - s) <= 1e-9 * std::abs(s);
+      s = modes.eigenvalues[best];
+      x = modes.vectors.col(best);
+      if (done) break;
     }
-    MatricesAt(s.imag(), spin, m, d);
-    const solvers::ComplexModes modes = solvers::SolveDampedModes(stiffness, d, m, static_cast<int>(stiffness.rows()));
-    Eigen::Index nearest = 0;
-    (modes.eigenvalues.array() - s).abs().minCoeff(&nearest);
-    s = modes.eigenvalues[nearest];
-    x = modes.vectors.col(nearest);
   }
 
   ModeResult Describe(Complex s, const Eigen::VectorXcd& reduced, bool shapes) const;

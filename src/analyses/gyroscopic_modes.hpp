@@ -16,7 +16,7 @@
 // structural loss factor added as in modes_analysis.hpp), its kind by the kinetic-energy split of
 // its real and imaginary parts, and its whirl (ModeResult::whirl) against the spin. A viscous
 // fluid's C_m(ω), C_v(ω) are taken at each mode's own frequency by a fixed point (the projected
-// problem re-solved at the mode's ω, keeping the eigenvalue nearest the previous one). Modes below
+// problem re-solved at the mode's ω, keeping the mode whose shape is most like the previous one). Modes below
 // kNearZeroFrequencyHz and real eigenvalues (negative stiffness, overdamped) are left out.
 //
 // The equilibrium, and with it the contact and friction tangent, is the one at operation.rpm: a
