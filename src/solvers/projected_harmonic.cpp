@@ -68,15 +68,16 @@ Eigen::Index AppendOrthonormal(MatX& basis, Eigen::Index filled, const SparseMat
 }
 
 // The expansion frequencies: `shifts` spread evenly over the band (the middles of equal parts),
-// and the frequency of each single-frequency pattern band not already one of them.
+// and the top of each pattern band (a single-frequency band's frequency) not already one of them:
+// a band's top is half a spacing from the nearest even shift, where its loads alone (without the
+// other patterns' vectors there) were least well held.
 std::vector<double> ExpansionFrequencies(const KrylovBasisOptions& options, double step) {
   std::vector<double> frequencies;
   for (int j = 0; j < options.shifts; ++j) frequencies.push_back(options.lowest_frequency + (j + 0.5) * step);
   for (const FrequencyBand& band : options.pattern_bands) {
-    if (band.highest > band.lowest) continue;
     const bool known = std::any_of(frequencies.begin(), frequencies.end(),
-                                   [&](double f) { return std::abs(f - band.lowest) <= 1e-9 * band.lowest; });
-    if (!known) frequencies.push_back(band.lowest);
+                                   [&](double f) { return std::abs(f - band.highest) <= 1e-9 * band.highest; });
+    if (!known && band.highest > 0.0) frequencies.push_back(band.highest);
   }
   return frequencies;
 }
