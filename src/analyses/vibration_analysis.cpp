@@ -442,10 +442,13 @@ double CheckReducedSolver(const SweepSystem& sweep, const solvers::ProjectedHarm
                           std::vector<SweepTask> tasks, const MatX& patterns) {
   std::stable_sort(tasks.begin(), tasks.end(), [](const SweepTask& a, const SweepTask& b) { return a.frequency < b.frequency; });
   solvers::HarmonicSolver direct(sweep.system, sweep.terms);
-  double largest = 0.0;
+  double largest = 0.0, previous = -1.0;
   for (int k = 0; k < kReducedCheckPoints; ++k) {
     const auto at = static_cast<std::size_t>((k + 0.5) / kReducedCheckPoints * static_cast<double>(tasks.size()));
     const double frequency = tasks[std::min(at, tasks.size() - 1)].frequency;
+    // A frequency many tasks share (a motor's) can be picked twice: checked once.
+    if (frequency == previous) continue;
+    previous = frequency;
     std::vector<Eigen::Index> columns;
     for (const SweepTask& task : tasks) {
       if (std::abs(task.frequency - frequency) > 1e-9 * frequency) continue;
