@@ -22,10 +22,19 @@ struct StaticSettings {
 };
 
 enum class ModeKind { All, Lateral, Axial, Torsional };
+// Rotary speeds of a Campbell diagram: from, from + step, … up to `to` (rad/s).
+struct SpeedRange {
+  double from = 0.0, to = 0.0, step = 0.0;
+};
+
 struct ModesSettings {
   int count = 10;
   ModeKind kind = ModeKind::All;
+  // The gyroscopic terms of the string spinning at `rotary_speed` (analyses/gyroscopic_modes.hpp).
   bool gyroscopic = false;
+  double rotary_speed = 0.0;  // rad/s, clockwise looking down-hole: operation.rpm
+  // The frequencies against the rotary speed (needs `gyroscopic`).
+  std::optional<SpeedRange> campbell;
 };
 
 enum class ExcitationType { Imbalance, Bit, Motor };

@@ -12,12 +12,6 @@
 #include "solvers/eigen.hpp"
 
 namespace drillflex::analyses {
-namespace {
-
-struct EnergySplit {
-  double axial = 0.0, torsional = 0.0, lateral = 0.0;
-};
-
 // Kinetic energy ½ vᵀ M v of a mode split by kind with the lumped nodal masses (method.md §4):
 // body-frame node velocity t_k = Aᵀṙ + ω × u_k + Φ_k η̇ and rotation w_k = ω + Ψ_k η̇; axial
 // ½ m_k t_x², torsional ½ J_x w_x², lateral the rest (t_y, t_z with the fluid mass, and the
@@ -70,6 +64,8 @@ void FillShape(const model::SystemModel& model, const std::vector<model::BodyPos
   for (Vec3& d : mode.displacement) d *= scale;
   for (Vec3& r : mode.rotation) r *= scale;
 }
+
+namespace {
 
 ModeResult DescribeMode(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
                         const std::vector<Station>& stations, double eigenvalue, const VecX& vector) {
@@ -281,6 +277,16 @@ const char* ModeKindName(ModeKind kind) {
     case ModeKind::Lateral: return "lateral";
     case ModeKind::Axial: return "axial";
     case ModeKind::Torsional: return "torsional";
+  }
+  return "unknown";
+}
+
+const char* WhirlName(Whirl whirl) {
+  switch (whirl) {
+    case Whirl::None: return "none";
+    case Whirl::Forward: return "forward";
+    case Whirl::Backward: return "backward";
+    case Whirl::Planar: return "planar";
   }
   return "unknown";
 }

@@ -16,6 +16,13 @@
 
 namespace drillflex::analyses {
 
+// The whirl of a mode about a spinning string: forward (its lateral orbits turn with the spin),
+// backward, planar (|whirl_index| ≤ kPlanarWhirlIndex: orbits nearly lines), or none (no gyroscopic
+// analysis, or an axial or torsional mode).
+enum class Whirl { None, Forward, Backward, Planar };
+inline constexpr double kPlanarWhirlIndex = 0.05;
+const char* WhirlName(Whirl whirl);
+
 struct ModeResult {
   double frequency_hz = 0.0;     // 0 for a rigid-body mode
   double eigenvalue = 0.0;       // ω², rad²/s²
@@ -35,6 +42,13 @@ struct ModeResult {
   bool negative_stiffness = false;
   // Rigid, or 0 ≤ f < kNearZeroFrequencyHz: a motion the linearized string barely resists.
   bool near_zero = false;
+  // With the gyroscopic terms (analyses/gyroscopic_modes.hpp): the whirl of the mode's lateral orbits
+  // against the spin, whirl_index = −Σ 2 Im(Y Z̄) / Σ (|Y|² + |Z|²) over the stations, Y and Z the
+  // complex amplitudes of the string-frame y and z displacement (Σ 2 Im(Y Z̄) > 0: the orbits turn
+  // about +x; the spin turns about −x, clockwise looking down-hole): +1 circular forward, −1
+  // circular backward.
+  Whirl whirl = Whirl::None;
+  double whirl_index = 0.0;
   // Shape per station (ModesResult::s), string frame, scaled so that max |displacement| = 1
   // (rotations by the same factor; a purely torsional mode: max |rotation| = 1).
   std::vector<Vec3> displacement;
@@ -50,6 +64,11 @@ struct ModesResult {
   int rigid_body_modes = 0;       // how many of `modes` are rigid-body modes
   int near_zero_modes = 0;        // how many are near zero (ModeResult::near_zero, rigid ones included)
   int negative_stiffness_modes = 0;  // how many have ω² < 0
+  // With the gyroscopic terms (analyses/gyroscopic_modes.hpp): at this spin (rad/s), on a basis of
+  // this many undamped modes; the modes then carry their whirl.
+  bool gyroscopic = false;
+  double rotary_speed = 0.0;
+  int basis_size = 0;
 };
 
 // A mode below this is near zero: no rotary speed of a drilling sweep meets it at any harmonic (0.6
@@ -62,7 +81,7 @@ const ModeResult* FirstLateralMode(const ModesResult& result);
 
 const char* ModeKindName(ModeKind kind);
 
-// `settings.gyroscopic` is not used yet (the string does not rotate in this analysis).
+// Without the gyroscopic terms: `settings.gyroscopic` is ComputeGyroscopicModes' (analyses/gyroscopic_modes.hpp).
 // The `count` lowest modes (kind All), or the `count` lowest modes of one family (Lateral,
 // Axial, Torsional: more modes are solved progressively until enough are found, at most
 // kMaxModesSearched). Axial and torsional modes are first sought with every node's lateral
@@ -96,6 +115,18 @@ struct LinearizedSystem {
 LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, double load_factor);
 
 inline constexpr int kMaxModesSearched = 400;
+
+// Kinetic energy ½ vᵀ M v of a velocity field v split into its axial, torsional and lateral parts
+// (lumped nodal masses and rotary inertias; the fluid is not counted).
+struct EnergySplit {
+  double axial = 0.0, torsional = 0.0, lateral = 0.0;
+};
+EnergySplit SplitKineticEnergy(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
+                               const VecX& v);
+
+// Fills mode.displacement and mode.rotation per station from mode.vector (see ModeResult).
+void FillShape(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
+               const std::vector<Station>& stations, ModeResult& mode);
 
 // The `count` lowest modes of K x = ω² M x (ascending, M-normalised): solvers::SolveModes.
 solvers::ModalResult LowestModes(const LinearizedSystem& system, int count);

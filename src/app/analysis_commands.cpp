@@ -12,6 +12,7 @@
 
 #include "analyses/bit_tendency.hpp"
 #include "analyses/buckling_analysis.hpp"
+#include "analyses/gyroscopic_modes.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
@@ -100,6 +101,10 @@ void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
 
 void PrintModes(const analyses::ModesResult& result) {
   std::cout << fmt::format("modes: {} computed", result.modes.size());
+  if (result.gyroscopic) {
+    std::cout << fmt::format(" spinning at {:.5g} rpm (gyroscopic, on {} undamped modes)", result.rotary_speed * 30.0 / kPi,
+                             result.basis_size);
+  }
   if (result.near_zero_modes > 0) {
     std::cout << fmt::format("; {} near zero (below {} Hz: no critical speed)", result.near_zero_modes,
                              analyses::kNearZeroFrequencyHz);
@@ -115,11 +120,28 @@ void PrintModes(const analyses::ModesResult& result) {
     std::cout << fmt::format("  {:>4} {:>12.6g} {:>9.3g}  {:<10} {:>6.3f} {:>6.3f} {:>6.3f}{}\n", m + 1,
                              mode.frequency_hz, mode.damping_ratio, analyses::ModeKindName(mode.kind), mode.axial_fraction, mode.torsional_fraction,
                              mode.lateral_fraction,
-                             mode.rigid_body           ? "  (rigid body)"
+                             result.gyroscopic         ? fmt::format("  {} whirl ({:+.2f})", analyses::WhirlName(mode.whirl),
+                                                                     mode.whirl_index)
+                             : mode.rigid_body         ? "  (rigid body)"
                              : mode.negative_stiffness ? fmt::format("  (ω² = {:.4g} rad²/s² < 0: negative stiffness)",
                                                                      mode.eigenvalue)
                              : mode.near_zero          ? "  (near zero: barely resisted)"
                                                        : "");
+  }
+}
+
+// The Campbell diagram's extent and where its branches cross 1× (an imbalance meets them there).
+void PrintCampbell(const analyses::CampbellResult& result) {
+  if (result.points.empty()) return;
+  std::cout << fmt::format("Campbell diagram: {} speeds, {:.5g} to {:.5g} rpm (campbell.csv)\n", result.points.size(),
+                           result.points.front().rotary_speed * 30.0 / kPi, result.points.back().rotary_speed * 30.0 / kPi);
+  if (result.synchronous.empty()) {
+    std::cout << "  no branch crosses 1x in that range\n";
+    return;
+  }
+  for (const analyses::CampbellCrossing& crossing : result.synchronous) {
+    std::cout << fmt::format("  mode {} crosses 1x at {:.5g} rpm ({:.4g} Hz, {} whirl)\n", crossing.branch + 1,
+                             crossing.rotary_speed * 30.0 / kPi, crossing.frequency_hz, analyses::WhirlName(crossing.whirl));
   }
 }
 
@@ -295,11 +317,18 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
   }
   if (requested.modes) {
     const model::LateralFluid fluid = model::MakeLateralFluid(input, built.system);
-    const auto result =
-        analyses::RunModes(built, equilibrium, c.analyses.modes.value_or(analyses::ModesSettings{}), &fluid);
+    const analyses::ModesSettings settings = c.analyses.modes.value_or(analyses::ModesSettings{});
+    const auto result = settings.gyroscopic
+                            ? analyses::ComputeGyroscopicModes(built.system, equilibrium, settings, &fluid)
+                            : analyses::RunModes(built, equilibrium, settings, &fluid);
     PrintModes(result);
     PrintCriticalRpm(c, result);
     io::AddModesResults(c, result, files);
+    if (settings.campbell) {
+      const analyses::CampbellResult campbell = analyses::ComputeCampbell(built.system, equilibrium, settings, &fluid);
+      PrintCampbell(campbell);
+      io::AddCampbellResults(c, campbell, files);
+    }
   }
   if (requested.vibration) {
     const model::LateralFluid fluid = model::MakeLateralFluid(input, built.system);

@@ -23,9 +23,23 @@ analyses::StaticSettings ReadStatic(const YamlView& node) {
   return settings;
 }
 
-analyses::ModesSettings ReadModes(const YamlView& node) {
-  node.ExpectMap("the modes settings {count, kind}");
-  node.AllowOnlyKeys({"count", "kind", "gyroscopic"});
+// `campbell: {from, to, step}` (rotary speeds; `from` may be 0).
+analyses::SpeedRange ReadCampbell(const YamlView& node) {
+  node.ExpectMap("a Campbell speed range {from, to, step}", false);
+  node.AllowOnlyKeys({"from", "to", "step"});
+  analyses::SpeedRange range;
+  range.from = node.QuantityOr("from", Quantity::RotarySpeed, 0.0);
+  range.to = node.Quantity("to", Quantity::RotarySpeed);
+  if (range.from < 0.0) node.Child("from").Fail("expected a rotary speed of at least 0 rpm");
+  if (!(range.to > range.from)) node.Child("to").Fail("expected a rotary speed above 'from'");
+  range.step = node.OptionalPositive("step", Quantity::RotarySpeed).value_or((range.to - range.from) / 20.0);
+  if ((range.to - range.from) / range.step > 1000.0) node.Child("step").Fail("more than 1000 speeds: use a larger step");
+  return range;
+}
+
+analyses::ModesSettings ReadModes(const YamlView& node, const model::Operation& operation) {
+  node.ExpectMap("the modes settings {count, kind, gyroscopic, campbell}");
+  node.AllowOnlyKeys({"count", "kind", "gyroscopic", "campbell"});
   analyses::ModesSettings settings;
   settings.count = node.IntegerOr("count", settings.count);
   if (settings.count < 1 || settings.count > 1000) node.Child("count").Fail("expected between 1 and 1000 modes");
@@ -38,6 +52,15 @@ analyses::ModesSettings ReadModes(const YamlView& node) {
     else kind->Fail(fmt::format("expected all, lateral, axial or torsional, got '{}'", name));
   }
   if (const auto gyro = node.OptionalChild("gyroscopic")) settings.gyroscopic = gyro->AsBool();
+  settings.rotary_speed = operation.rpm;
+  const bool lateral = settings.kind == analyses::ModeKind::All || settings.kind == analyses::ModeKind::Lateral;
+  if (settings.gyroscopic && !lateral) {
+    node.Child("gyroscopic").Fail("the gyroscopic terms couple lateral motion only: use kind all or lateral");
+  }
+  if (const auto campbell = node.OptionalChild("campbell")) {
+    if (!settings.gyroscopic) campbell->Fail("a Campbell diagram needs 'gyroscopic: true'");
+    settings.campbell = ReadCampbell(*campbell);
+  }
   return settings;
 }
 
@@ -178,7 +201,7 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::
   analyses::AnalysesConfig config;
   // A key that is present runs its analysis, even with empty settings (`static: {}` or `static:`).
   if (const auto item = node.PresentChild("static")) config.static_analysis = ReadStatic(*item);
-  if (const auto item = node.PresentChild("modes")) config.modes = ReadModes(*item);
+  if (const auto item = node.PresentChild("modes")) config.modes = ReadModes(*item, operation);
   if (const auto item = node.PresentChild("vibration")) config.vibration = ReadVibration(*item);
   if (const auto item = node.PresentChild("buckling")) {
     item->ExpectMap("the buckling settings");

@@ -173,14 +173,18 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
 
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files) {
   const OutputUnits out{c.output_units};
-  CsvTable frequencies(
-      {"mode", "frequency_hz", "damping_ratio", "axial_fraction", "torsional_fraction", "lateral_fraction"});
+  std::vector<std::string> columns{"mode", "frequency_hz", "damping_ratio", "axial_fraction", "torsional_fraction",
+                                   "lateral_fraction"};
+  if (result.gyroscopic) columns.push_back("whirl_index");
+  CsvTable frequencies(columns);
   CsvTable shapes({"mode", "s", "ux", "uy", "uz", "rx", "ry", "rz"});
   json modes = json::array();
   for (std::size_t m = 0; m < result.modes.size(); ++m) {
     const auto& mode = result.modes[m];
-    frequencies.AddRow({static_cast<double>(m + 1), mode.frequency_hz, mode.damping_ratio, mode.axial_fraction,
-                        mode.torsional_fraction, mode.lateral_fraction});
+    std::vector<double> row{static_cast<double>(m + 1), mode.frequency_hz,        mode.damping_ratio,
+                            mode.axial_fraction,        mode.torsional_fraction, mode.lateral_fraction};
+    if (result.gyroscopic) row.push_back(mode.whirl_index);
+    frequencies.AddRow(row);
     for (std::size_t i = 0; i < result.s.size() && i < mode.displacement.size(); ++i) {
       shapes.AddRow({static_cast<double>(m + 1), out(result.s[i], Quantity::Length), mode.displacement[i].x(),
                      mode.displacement[i].y(), mode.displacement[i].z(), mode.rotation[i].x(), mode.rotation[i].y(),
@@ -195,6 +199,14 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
                      {"axial_fraction", mode.axial_fraction},
                      {"torsional_fraction", mode.torsional_fraction},
                      {"lateral_fraction", mode.lateral_fraction}});
+    if (result.gyroscopic) {
+      modes.back()["whirl"] = analyses::WhirlName(mode.whirl);
+      modes.back()["whirl_index"] = mode.whirl_index;
+    }
+  }
+  if (result.gyroscopic) {
+    files.json()["gyroscopic"] = {{"rpm", out(result.rotary_speed, Quantity::RotarySpeed)},
+                                  {"basis_size", result.basis_size}};
   }
   files.Add("modes.csv", frequencies.ToString());
   files.Add("mode_shapes.csv", shapes.ToString());

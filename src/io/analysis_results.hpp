@@ -4,6 +4,7 @@
 #pragma once
 
 #include "analyses/buckling_analysis.hpp"
+#include "analyses/gyroscopic_modes.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
@@ -22,6 +23,8 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
 void AddStaticResults(const Case& c, const analyses::StaticResult& result, ResultFiles& files);
 // "modes" and modes.csv (frequencies), mode_shapes.csv (per mode and station).
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files);
+// "campbell" {rpm, modes per speed, synchronous} and campbell.csv (one row per speed and mode).
+void AddCampbellResults(const Case& c, const analyses::CampbellResult& result, ResultFiles& files);
 // "buckling" and buckling.csv (frequency against load).
 void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, ResultFiles& files);
 

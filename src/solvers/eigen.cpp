@@ -108,17 +108,17 @@ namespace {
 
 // u = x e^{st} in M ü + D u̇ + K u = 0 gives ẏ = A y for y = (u, u̇) with
 // A = [[0, I], [−M⁻¹K, −M⁻¹D]] (e.g. Géradin & Rixen, "Mechanical Vibrations", §2.9).
-MatX StateSpaceMatrix(const SparseMat& K, const SparseMat& D, const SparseMat& M) {
+MatX StateSpaceMatrix(const MatX& K, const MatX& D, const MatX& M) {
   const Eigen::Index n = K.rows();
-  Eigen::LLT<MatX> mass(MatX(M).selfadjointView<Eigen::Lower>());
+  const Eigen::LLT<MatX> mass(M);  // reads the lower triangle
   if (mass.info() != Eigen::Success) {
     throw SolverError(fmt::format(
         "damped modal solver ({} DOF): the mass matrix is not positive definite", n));
   }
   MatX a = MatX::Zero(2 * n, 2 * n);
   a.topRightCorner(n, n).setIdentity();
-  a.bottomLeftCorner(n, n) = -mass.solve(MatX(K));
-  a.bottomRightCorner(n, n) = -mass.solve(MatX(D));
+  a.bottomLeftCorner(n, n) = -mass.solve(K);
+  a.bottomRightCorner(n, n) = -mass.solve(D);
   return a;
 }
 
@@ -131,7 +131,16 @@ ComplexModes SolveDampedModes(const SparseMat& K, const SparseMat& D, const Spar
     throw LogicError("SolveDampedModes: K, D and M must be square and of the same size");
   }
   detail::CheckSymmetric(M, n, "M");
-  const GeneralEigenpairs solver = GeneralEigen(StateSpaceMatrix(K, D, M));
+  return SolveDampedModes(MatX(K), MatX(D), MatX(M), count);
+}
+
+ComplexModes SolveDampedModes(const MatX& K, const MatX& D, const MatX& M, int count,
+                              bool with_vectors) {
+  const Eigen::Index n = K.rows();
+  if (K.cols() != n || D.rows() != n || D.cols() != n || M.rows() != n || M.cols() != n) {
+    throw LogicError("SolveDampedModes: K, D and M must be square and of the same size");
+  }
+  const GeneralEigenpairs solver = GeneralEigen(StateSpaceMatrix(K, D, M), with_vectors);
   if (!solver.converged) {
     throw SolverError(fmt::format("damped modal solver ({} DOF): the eigen solver did not converge",
                                   n));
@@ -148,17 +157,19 @@ ComplexModes SolveDampedModes(const SparseMat& K, const SparseMat& D, const Spar
   const auto m = static_cast<Eigen::Index>(kept.size());
   ComplexModes modes;
   modes.eigenvalues.resize(m);
-  modes.vectors.resize(n, m);
+  if (with_vectors) modes.vectors.resize(n, m);
   modes.natural_frequencies.resize(m);
   modes.damped_frequencies.resize(m);
   modes.damping_ratios.resize(m);
   for (Eigen::Index j = 0; j < m; ++j) {
     const std::complex<double> s = all_values[kept[static_cast<size_t>(j)]];
-    Eigen::VectorXcd x = solver.vectors.col(kept[static_cast<size_t>(j)]).head(n);
-    Eigen::Index largest = 0;
-    x.cwiseAbs().maxCoeff(&largest);
-    x *= std::abs(x[largest]) / x[largest];  // largest entry real and positive
-    modes.vectors.col(j) = x.normalized();
+    if (with_vectors) {
+      Eigen::VectorXcd x = solver.vectors.col(kept[static_cast<size_t>(j)]).head(n);
+      Eigen::Index largest = 0;
+      x.cwiseAbs().maxCoeff(&largest);
+      x *= std::abs(x[largest]) / x[largest];  // largest entry real and positive
+      modes.vectors.col(j) = x.normalized();
+    }
     modes.eigenvalues[j] = s;
     modes.natural_frequencies[j] = std::abs(s);
     modes.damped_frequencies[j] = s.imag();

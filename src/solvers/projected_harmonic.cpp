@@ -67,6 +67,39 @@ Eigen::Index AppendOrthonormal(MatX& basis, Eigen::Index filled, const SparseMat
   return filled;
 }
 
+// The expansion frequencies: `shifts` spread evenly over the band (the middles of equal parts),
+// and the top of each pattern band (a single-frequency band's frequency) not already one of them:
+// a band's top is half a spacing from the nearest even shift, where its loads alone (without the
+// other patterns' vectors there) were least well held.
+std::vector<double> ExpansionFrequencies(const KrylovBasisOptions& options, double step) {
+  std::vector<double> frequencies;
+  for (int j = 0; j < options.shifts; ++j) frequencies.push_back(options.lowest_frequency + (j + 0.5) * step);
+  for (const FrequencyBand& band : options.pattern_bands) {
+    const bool known = std::any_of(frequencies.begin(), frequencies.end(),
+                                   [&](double f) { return std::abs(f - band.highest) <= 1e-9 * band.highest; });
+    if (!known && band.highest > 0.0) frequencies.push_back(band.highest);
+  }
+  return frequencies;
+}
+
+// The load patterns expanded at ω: those whose band reaches within one shift spacing of it (all
+// without bands), and a single-frequency band only at its frequency.
+std::vector<Eigen::Index> PatternsAt(const KrylovBasisOptions& options, double omega, double step, Eigen::Index count) {
+  std::vector<Eigen::Index> columns;
+  for (Eigen::Index c = 0; c < count; ++c) {
+    if (options.pattern_bands.empty()) {
+      columns.push_back(c);
+      continue;
+    }
+    const FrequencyBand& band = options.pattern_bands[static_cast<std::size_t>(c)];
+    const bool single = !(band.highest > band.lowest);
+    const bool near = single ? std::abs(omega - band.lowest) <= 1e-9 * band.lowest
+                             : omega >= band.lowest - step && omega <= band.highest + step;
+    if (near) columns.push_back(c);
+  }
+  return columns;
+}
+
 }  // namespace
 
 KrylovBasis BuildKrylovBasis(const SparseMat& K, const SparseMat& M, const MatX& load_patterns,
@@ -79,6 +112,10 @@ KrylovBasis BuildKrylovBasis(const SparseMat& K, const SparseMat& M, const MatX&
   if (!(options.highest_frequency > 0.0) || !(options.lowest_frequency >= 0.0) ||
       options.lowest_frequency > options.highest_frequency || options.shifts < 1 || options.depth < 1) {
     throw LogicError("BuildKrylovBasis: needs 0 <= lowest <= highest frequency, highest > 0, shifts and depth >= 1");
+  }
+  if (!options.pattern_bands.empty() && static_cast<Eigen::Index>(options.pattern_bands.size()) != load_patterns.cols()) {
+    throw LogicError(fmt::format("BuildKrylovBasis: {} pattern bands for {} load patterns", options.pattern_bands.size(),
+                                 load_patterns.cols()));
   }
   const SerialEigenProducts serial;
   KrylovBasis basis;
@@ -93,13 +130,18 @@ KrylovBasis BuildKrylovBasis(const SparseMat& K, const SparseMat& M, const MatX&
     solver.Factorize(SparseMat(K + pole * M), MatrixSymmetry::kSymmetric);
   }
   filled = AppendOrthonormal(basis.vectors, filled, M, solver.SolveColumns(load_patterns));
+  if (options.extra_vectors.cols() > 0) {
+    if (options.extra_vectors.rows() != n) throw LogicError("BuildKrylovBasis: the extra vectors need n rows");
+    filled = AppendOrthonormal(basis.vectors, filled, M, options.extra_vectors);
+  }
   const double step = (options.highest_frequency - options.lowest_frequency) / options.shifts;
-  for (int j = 0; j < options.shifts; ++j) {
-    const double omega = options.lowest_frequency + (j + 0.5) * step;
+  for (const double omega : ExpansionFrequencies(options, step)) {
+    const std::vector<Eigen::Index> columns = PatternsAt(options, omega, step, load_patterns.cols());
+    if (columns.empty()) continue;
     basis.shifts.push_back(omega);
     // Indefinite inside the spectrum: LU (an LDLT without pivoting would fail its backward-error check).
     solver.Factorize(SparseMat(K - (omega * omega) * M), MatrixSymmetry::kUnsymmetric);
-    MatX block = solver.SolveColumns(load_patterns);
+    MatX block = solver.SolveColumns(MatX(load_patterns(Eigen::all, columns)));
     for (int k = 0; k < options.depth; ++k) {
       filled = AppendOrthonormal(basis.vectors, filled, M, block);
       if (k + 1 < options.depth) block = solver.SolveColumns(MatX(M * block));

@@ -250,6 +250,19 @@ std::string ErrorOf(const std::string& text, int* line = nullptr, std::string* k
 
 const char* kGoodString = "string:\n  - {type: collar, od: 8, id: 2.8125, length: 30}\n";
 
+// `modes: {gyroscopic, campbell}`: the spin from operation.rpm, the speeds in rpm (rad/s inside).
+TEST(CaseReader, GyroscopicModesAndCampbellRange) {
+  const Case c = ParseCase(std::string(kGoodString) + "operation: {rpm: 120}\nanalyses:\n  modes:\n    gyroscopic: true\n"
+                           "    campbell: {from: 0, to: 250, step: 10}\n",
+                           "gyroscopic.yaml");
+  ASSERT_TRUE(c.analyses.modes && c.analyses.modes->campbell);
+  EXPECT_TRUE(c.analyses.modes->gyroscopic);
+  EXPECT_NEAR(c.analyses.modes->rotary_speed, 120.0 * kPi / 30.0, 1e-12);
+  EXPECT_NEAR(c.analyses.modes->campbell->from, 0.0, 1e-12);
+  EXPECT_NEAR(c.analyses.modes->campbell->to, 250.0 * kPi / 30.0, 1e-12);
+  EXPECT_NEAR(c.analyses.modes->campbell->step, 10.0 * kPi / 30.0, 1e-12);
+}
+
 // A transient's `excitations`: the vibration analysis's imbalance items (lb·in in field units);
 // a bit's or motor's excitation, or an imbalance off the string, is refused with its key.
 TEST(CaseReader, TransientImbalances) {
@@ -336,6 +349,13 @@ INSTANTIATE_TEST_SUITE_P(
         RejectedCase{"invalid yaml", "string: [\n  - {", 2, "", "not valid YAML"},
         RejectedCase{"bad mode kind", std::string(kGoodString) + "analyses:\n  modes: {kind: bending}\n", 4,
                      "analyses.modes.kind", "lateral"},
+        RejectedCase{"campbell without gyroscopic", std::string(kGoodString) + "analyses:\n  modes: {campbell: {to: 250}}\n",
+                     4, "analyses.modes.campbell", "needs 'gyroscopic: true'"},
+        RejectedCase{"gyroscopic axial modes", std::string(kGoodString) + "analyses:\n  modes: {kind: axial, gyroscopic: true}\n",
+                     4, "analyses.modes.gyroscopic", "kind all or lateral"},
+        RejectedCase{"campbell range reversed",
+                     std::string(kGoodString) + "analyses:\n  modes: {gyroscopic: true, campbell: {from: 100, to: 50}}\n", 4,
+                     "analyses.modes.campbell.to", "above 'from'"},
         RejectedCase{"spectral radius above 1", std::string(kGoodString) + "analyses:\n  transient: {rho_infinity: 1.5}\n",
                      4, "analyses.transient.rho_infinity", "between 0 and 1"},
         RejectedCase{"bad transient start", std::string(kGoodString) + "analyses:\n  transient: {start: rest}\n", 4,

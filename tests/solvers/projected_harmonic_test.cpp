@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -98,6 +99,36 @@ TEST(ProjectedHarmonic, StaticResponseIsExactAndTheBandIsHeld) {
   // the lightly damped resonances (one dashpot), where a Ritz value off by 10⁻³ moves the peak; the
   // drill string's sweep (2–3 % damping) is held to 0.3 % (tests/io/reduced_sweep_test.cpp).
   EXPECT_LT(largest, 0.03);
+}
+
+TEST(ProjectedHarmonic, PatternBandsExpandEachLoadOnlyOverItsOwnBand) {
+  // The tip force over the lower half of the band, the mid-chain force at one frequency only (a
+  // motor's): fewer vectors than with every load at every shift, an expansion at exactly that
+  // frequency, and there the undamped response to that load is in the span (exact).
+  const Chain chain;
+  const double top = 3.0 * std::sqrt(chain.LowestFrequency());
+  const double single = 0.77 * top;
+  KrylovBasisOptions options;
+  options.lowest_frequency = 0.0;
+  options.highest_frequency = top;
+  options.shifts = 6;
+  options.depth = 2;
+  const KrylovBasis every = BuildKrylovBasis(chain.system.stiffness, chain.ReferenceMass(), chain.loads, options);
+  options.pattern_bands = {{0.0, 0.5 * top}, {single, single}};
+  const KrylovBasis banded = BuildKrylovBasis(chain.system.stiffness, chain.ReferenceMass(), chain.loads, options);
+  EXPECT_LT(banded.vectors.cols(), every.vectors.cols());
+  EXPECT_TRUE(std::find(banded.shifts.begin(), banded.shifts.end(), single) != banded.shifts.end());
+  LinearSystem undamped = chain.system;
+  undamped.damping = SparseMat();
+  const std::vector<FrequencyTermCoefficients> reference{{1.0, 0.0}};
+  const ProjectedHarmonicSolver reduced(undamped, chain.terms, banded.vectors, reference);
+  HarmonicSolver direct(undamped, chain.terms);
+  const ComplexMat loads = chain.loads.cast<std::complex<double>>();
+  const ComplexMat exact = direct.Solve(single, loads, 0.0, reference);
+  const ComplexMat approximate = reduced.Solve(single, loads, 0.0, reference);
+  EXPECT_LT((approximate.col(1) - exact.col(1)).norm(), 1e-8 * exact.col(1).norm());
+  options.pattern_bands = {{0.0, top}};
+  EXPECT_THROW(BuildKrylovBasis(chain.system.stiffness, chain.ReferenceMass(), chain.loads, options), LogicError);
 }
 
 TEST(ProjectedHarmonic, RejectsInconsistentInput) {
