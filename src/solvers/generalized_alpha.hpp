@@ -53,6 +53,7 @@
 #include <Eigen/LU>
 
 #include "core/types.hpp"
+#include "solvers/band_lu.hpp"
 #include "solvers/linear_solver.hpp"
 #include "solvers/problem.hpp"
 
@@ -84,6 +85,9 @@ struct GeneralizedAlphaOptions {
   // Up to this many velocity coordinates the iteration matrix is factorized dense (partial-pivot
   // LU): for a 72-coordinate cantilever a solve takes ~2 µs against ~12 µs sparse.
   int dense_limit = 200;
+  // Above it, a matrix whose LAPACK band storage ((2 kl + ku + 1) n values) is at most this many
+  // times its entries is factorized banded (solvers/band_lu.hpp), any other by SparseLinearSolver.
+  double band_storage_limit = 4.0;
   double reuse_contraction = 0.3;   // an iteration contracting less than this refactorizes
   double refactor_step_ratio = 0.25;  // |h/h_factorized − 1| above this refactorizes
   long max_steps = 100'000'000;     // accepted plus rejected steps per AdvanceTo
@@ -158,9 +162,11 @@ class GeneralizedAlphaIntegrator {
   GeneralizedAlphaParameters parameters_;
   GeneralizedAlphaState state_;
   GeneralizedAlphaStatistics statistics_;
-  SparseLinearSolver solver_;           // above dense_limit coordinates
+  SparseLinearSolver solver_;           // above dense_limit coordinates, not banded
+  BandLuSolver band_lu_;                // above dense_limit coordinates, banded
   Eigen::PartialPivLU<MatX> dense_lu_;  // up to dense_limit coordinates
   bool dense_ = false;
+  bool banded_ = false;
   bool has_factorization_ = false;
   double factorized_step_ = 0.0;
   double step_ = 0.0;
