@@ -127,9 +127,13 @@ constexpr std::size_t kParallelBodies = 32;
 // rethrown here (the first one caught) instead of escaping the parallel region.
 template <typename Task>
 void ForEachIndex(std::size_t count, bool parallel, const Task& task) {
+  if (!parallel) {  // no OpenMP region at all: a small model's residual takes ~12 µs
+    for (std::size_t i = 0; i < count; ++i) task(i);
+    return;
+  }
   std::exception_ptr failure;
   const long n = static_cast<long>(count);
-#pragma omp parallel for schedule(static) if (parallel)
+#pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     try {
       task(static_cast<std::size_t>(i));
