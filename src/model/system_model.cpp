@@ -30,10 +30,11 @@ SystemModel::SystemModel(std::vector<Body> bodies, std::vector<std::unique_ptr<F
   }
   body_elements_.resize(bodies_.size());
   for (std::size_t e = 0; e < element_bodies_.size(); ++e) {
+    const int index = static_cast<int>(e);
     for (int b : element_bodies_[e]) {
-      if (body_elements_[b].empty() || body_elements_[b].back() != static_cast<int>(e)) body_elements_[b].push_back(static_cast<int>(e));
+      if (body_elements_[b].empty() || body_elements_[b].back() != index) body_elements_[b].push_back(index);
     }
-    if (element_bodies_[e].size() > 1) shared_elements_.push_back(static_cast<int>(e));
+    if (element_bodies_[e].size() > 1) shared_elements_.push_back(index);
   }
   iteration_pattern_ = BlockPattern(bodies_, coupled, num_velocities_);
   mass_pattern_ = BlockPattern(bodies_, {}, num_velocities_);
