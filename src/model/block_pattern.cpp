@@ -63,10 +63,23 @@ int BlockPattern::PositionInColumn(int row_body, int col_body) const {
 }
 
 void BlockPattern::Add(const MatX& block, const std::vector<int>& body_indices, SparseMat& matrix) const {
+  for (auto b = body_indices.begin(); b != body_indices.end(); ++b) {
+    if (std::find(body_indices.begin(), b, *b) == b) AddColumns(block, body_indices, *b, matrix);  // once a body
+  }
+}
+
+void BlockPattern::AddColumns(const MatX& block, std::span<const int> body_indices, int column_body,
+                              SparseMat& matrix) const {
   const int* outer = matrix.outerIndexPtr();
   double* values = matrix.valuePtr();
   int col_local = 0;
+  bool found = false;
   for (int b : body_indices) {
+    if (b != column_body) {
+      col_local += sizes_[b];
+      continue;
+    }
+    found = true;
     int row_local = 0;
     for (int a : body_indices) {
       const int position = PositionInColumn(a, b);
@@ -78,6 +91,7 @@ void BlockPattern::Add(const MatX& block, const std::vector<int>& body_indices, 
     }
     col_local += sizes_[b];
   }
+  if (!found) throw LogicError("BlockPattern: the column body is not one of the block's bodies");
 }
 
 }  // namespace drillflex::model

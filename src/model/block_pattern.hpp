@@ -6,6 +6,7 @@
 // can reuse its symbolic analysis).
 #pragma once
 
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -25,6 +26,9 @@ class BlockPattern {
   // Adds `block`, over the concatenated velocity blocks of `body_indices` (in that order), into
   // `matrix` (a copy of Zero()). Throws LogicError for a pair of bodies outside the pattern.
   void Add(const MatX& block, const std::vector<int>& body_indices, SparseMat& matrix) const;
+  // The same for only the columns of body `column_body` (one of `body_indices`): calls for distinct
+  // column bodies write disjoint entries, so they may run on different threads.
+  void AddColumns(const MatX& block, std::span<const int> body_indices, int column_body, SparseMat& matrix) const;
 
  private:
   // Row position of body `row_body`'s first row within any column of body `col_body`.

@@ -110,10 +110,13 @@ VecX BodyInertialForces(const Body& body, const BodyPose& pose, const VecX& velo
   const Vec3 alpha_t = pose.A.transpose() * acceleration.head<3>();
   const Vec3 alpha_w = acceleration.segment<3>(3);
   const Vec3 omega = velocity.segment<3>(3);
-  const VecX displacement = shapes * pose.eta;
-  const VecX rate = shapes * velocity.tail(nf);
-  const VecX elastic_acceleration = shapes * acceleration.tail(nf);
-  VecX nodal = VecX::Zero(6 * nodes);  // (f_k, m_k) per node, body frame
+  // Per-thread work vectors (the residual of a long string calls this for every body and Newton
+  // iteration; their allocations were a tenth of the V1 cantilever's transient run).
+  thread_local VecX displacement, rate, elastic_acceleration, nodal;
+  displacement.noalias() = shapes * pose.eta;
+  rate.noalias() = shapes * velocity.tail(nf);
+  elastic_acceleration.noalias() = shapes * acceleration.tail(nf);
+  nodal.setZero(6 * nodes);  // (f_k, m_k) per node, body frame
   Vec3 translational_sum = Vec3::Zero(), rotational_sum = Vec3::Zero();
   for (int k = 0; k < nodes; ++k) {
     const Vec3 offset = reduced.node_positions[k] + displacement.segment<3>(6 * k);

@@ -52,6 +52,9 @@ class SystemModel {
   // The element's state at (q, v): its bodies' poses and velocities.
   ElementState StateOf(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v,
                        double t, double load_factor) const;
+  // The same into `state`, reusing its storage.
+  void FillState(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v, double t,
+                 double load_factor, ElementState& state) const;
   int IndexOf(const Body* body) const;
 
   // The body and node at a distance s from the bit (the nearest node; at a joint, the upper body).
@@ -68,6 +71,10 @@ class SystemModel {
   double length_ = 0.0;
   double force_scale_ = 1.0;
   std::vector<std::vector<int>> element_bodies_;  // body indices of each element
+  std::vector<std::vector<int>> body_elements_;   // per body: the elements touching it, ascending
+  std::vector<int> shared_elements_;              // the elements touching more than one body
+  // The first row of body `body` in element `element`'s local vector.
+  int LocalOffset(int element, int body) const;
   BlockPattern iteration_pattern_;  // body blocks and the blocks of bodies sharing an element
   BlockPattern mass_pattern_;       // body blocks only
 };

@@ -135,7 +135,14 @@ bool GeneralizedAlphaIntegrator::Factorize(double h, std::string& reason) {
         throw SolverError(fmt::format("the dense {}x{} matrix is singular or not finite", matrix.rows(), matrix.cols()));
       }
     } else {
-      solver_.Factorize(matrix);
+      const auto [lower, upper] = BandWidths(matrix);
+      banded_ = static_cast<double>(2 * lower + upper + 1) * static_cast<double>(matrix.rows()) <=
+                options_.band_storage_limit * static_cast<double>(matrix.nonZeros());
+      if (banded_) {
+        band_lu_.Factorize(matrix);
+      } else {
+        solver_.Factorize(matrix);
+      }
     }
   } catch (const SolverError& e) {
     reason = fmt::format("the iteration matrix could not be factorized ({})", e.what());
@@ -181,7 +188,14 @@ GeneralizedAlphaIntegrator::Attempt GeneralizedAlphaIntegrator::Iterate(double h
     }
     VecX correction;
     try {
-      correction = dense_ ? VecX(-dense_lu_.solve(residual)) : VecX(-solver_.Solve(residual));
+      if (dense_) {
+        correction = -dense_lu_.solve(residual);
+      } else if (banded_) {
+        correction = -residual;
+        band_lu_.SolveInPlace(correction);
+      } else {
+        correction = -solver_.Solve(residual);
+      }
       if (!correction.allFinite()) throw SolverError("the correction is not finite");
     } catch (const SolverError& e) {
       attempt.reason = fmt::format("the linear solve failed ({})", e.what());

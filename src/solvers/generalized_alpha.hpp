@@ -14,8 +14,10 @@
 // increment by β h² β'' Δv̇ (β'' = (1 − α_f)/(1 − α_m)), so the iteration matrix is, divided by
 // β h² β'', S = K + γ/(β h) D + (1 − α_m)/((1 − α_f) β h²) M (Problem::IterationMatrix; the tangent
 // operator of the Lie-group increment is taken as the identity, as Brüls et al. do: it changes only
-// the convergence rate, O(h)). S is kept factorized across iterations and steps while Newton
-// converges fast (modified Newton); it is refactorized at the current iterate when a correction is
+// the convergence rate, O(h)). S is factorized by a dense LU (small problems), LAPACK's banded LU
+// (a string's block-banded matrix, solvers/band_lu.hpp) or SparseLinearSolver (any other), and is
+// kept factorized across iterations and steps while Newton converges fast (modified Newton); it is
+// refactorized at the current iterate when a correction is
 // more than `reuse_contraction` times the one before (slow, linear convergence), when Newton fails
 // with a matrix of an earlier step, or when h has changed by more than `refactor_step_ratio`.
 // Without reuse it is refactorized at every iterate (full Newton).
@@ -53,6 +55,7 @@
 #include <Eigen/LU>
 
 #include "core/types.hpp"
+#include "solvers/band_lu.hpp"
 #include "solvers/linear_solver.hpp"
 #include "solvers/problem.hpp"
 
@@ -84,6 +87,9 @@ struct GeneralizedAlphaOptions {
   // Up to this many velocity coordinates the iteration matrix is factorized dense (partial-pivot
   // LU): for a 72-coordinate cantilever a solve takes ~2 µs against ~12 µs sparse.
   int dense_limit = 200;
+  // Above it, a matrix whose LAPACK band storage ((2 kl + ku + 1) n values) is at most this many
+  // times its entries is factorized banded (solvers/band_lu.hpp), any other by SparseLinearSolver.
+  double band_storage_limit = 4.0;
   double reuse_contraction = 0.3;   // an iteration contracting less than this refactorizes
   double refactor_step_ratio = 0.25;  // |h/h_factorized − 1| above this refactorizes
   long max_steps = 100'000'000;     // accepted plus rejected steps per AdvanceTo
@@ -158,9 +164,11 @@ class GeneralizedAlphaIntegrator {
   GeneralizedAlphaParameters parameters_;
   GeneralizedAlphaState state_;
   GeneralizedAlphaStatistics statistics_;
-  SparseLinearSolver solver_;           // above dense_limit coordinates
+  SparseLinearSolver solver_;           // above dense_limit coordinates, not banded
+  BandLuSolver band_lu_;                // above dense_limit coordinates, banded
   Eigen::PartialPivLU<MatX> dense_lu_;  // up to dense_limit coordinates
   bool dense_ = false;
+  bool banded_ = false;
   bool has_factorization_ = false;
   double factorized_step_ = 0.0;
   double step_ = 0.0;
