@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -22,7 +25,9 @@ struct RunResult {
 };
 
 RunResult RunDrillflex(const std::string& arguments) {
-  const fs::path log = fs::temp_directory_path() / "drillflex-cli-test.log";
+  // One log per test process: CTest runs the tests of this file in parallel processes, which
+  // shared one log and read each other's output.
+  const fs::path log = fs::temp_directory_path() / ("drillflex-cli-test-" + std::to_string(::getpid()) + ".log");
   const std::string line = std::string(DRILLFLEX_EXE) + " " + arguments + " > " + log.string() + " 2>&1";
   const int raw = std::system(line.c_str());
   std::ifstream file(log);
