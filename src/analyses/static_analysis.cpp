@@ -272,8 +272,8 @@ const double kHalfDecade = std::sqrt(10.0);
 // with all loads, the couplings stiffened to the case's factor: either in one solve or by half
 // decades. Before each stage the couplings are closed to the gaps that carry their forces at the new
 // stiffness (CarryCouplingForces), and before the first the string is twisted by the torque it
-// carries (TwistUnderTorque, with the contact forces found). Which of the two converges was measured to depend on the case (the bundled
-// example: in one solve without rotation, 0.16 s; by half decades when rotating at 120 rpm, 0.55 s;
+// carries (TwistUnderTorque, with the contact forces found). Which of the two converges was
+// measured to depend on the case (the bundled example: in one solve without rotation, 0.16 s; by half decades when rotating at 120 rpm, 0.55 s;
 // each fails on the other), so both are tried, the likelier first. Throws SolverError when
 // neither converges.
 // Newton iterations of a coupling stage with the trust radius before it is retried with the mass

@@ -57,8 +57,9 @@ class NewtonStepper {
   std::optional<LineSearchResult> ShiftedStep(const VecX& q, const VecX& residual, const VecX& dv, double& shift,
                                               double& least_norm, std::string& failure);
 
-  // NewtonOptions::end_game_residual: plain Newton from q; the converged outcome, or nothing.
-  std::optional<StepOutcome> EndGame(const VecX& q, const VecX& residual);
+  // NewtonOptions::end_game_residual: plain Newton from q, at most kEndGameIterations steps; its
+  // outcome (converged or not, the steps it took).
+  StepOutcome EndGame(const VecX& q, const VecX& residual);
 
   const StaticProblem& problem_;
   const NewtonOptions& options_;
@@ -107,28 +108,29 @@ LineSearchResult NewtonStepper::TrustRegionStep(const VecX& q, const VecX& resid
   }
 }
 
-std::optional<StepOutcome> NewtonStepper::EndGame(const VecX& q, const VecX& residual) {
+StepOutcome NewtonStepper::EndGame(const VecX& q, const VecX& residual) {
   StepOutcome out;
   out.q = q;
   VecX current = residual;
-  for (int iteration = 1; iteration <= kEndGameIterations; ++iteration) {
-    if (!Factorize(out.q).empty()) return std::nullopt;
+  while (out.iterations < kEndGameIterations) {
+    if (!Factorize(out.q).empty()) return out;
     VecX dv;
     try {
       dv = -linear_solver_.Solve(current);
     } catch (const SolverError&) {
-      return std::nullopt;
+      return out;
     }
+    ++out.iterations;
+    const double length = problem_.StepLength(out.q, dv);
     out.q = problem_.Increment(out.q, dv);
     current = problem_.Residual(options_.time, out.q, zero_, zero_);
-    if (!current.allFinite()) return std::nullopt;
-    out.iterations = iteration;
+    if (!current.allFinite()) return out;
     out.residual_norm = current.norm();
-    if (out.residual_norm > kEndGameDivergence * residual.norm()) return std::nullopt;
+    if (out.residual_norm > kEndGameDivergence * residual.norm()) return out;
     out.history.push_back(out.residual_norm);
     if (options_.log) {
-      options_.log(fmt::format("  Newton end game {}: |R| {:.4e} N, step {:.3e}", iteration, out.residual_norm,
-                               problem_.StepLength(q, dv)));
+      options_.log(fmt::format("  Newton end game {}: |R| {:.4e} N, step {:.3e}", out.iterations, out.residual_norm,
+                               length));
     }
     if (out.residual_norm <= tolerance_ ||
         (options_.increment_tolerance > 0.0 && dv.lpNorm<Eigen::Infinity>() <= options_.increment_tolerance)) {
@@ -136,7 +138,7 @@ std::optional<StepOutcome> NewtonStepper::EndGame(const VecX& q, const VecX& res
       return out;
     }
   }
-  return std::nullopt;
+  return out;
 }
 
 // The mass shift's schedule (NewtonOptions::mass_shift).
@@ -320,11 +322,12 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
     residual = std::move(search.residual);
     if (options_.mass_shift && residual.allFinite() && residual.norm() <= end_game_below) {
       end_game_below = 0.5 * residual.norm();
-      if (std::optional<StepOutcome> finished = EndGame(out.q, residual)) {
-        finished->iterations += out.iterations;
-        return std::move(*finished);
+      StepOutcome finished = EndGame(out.q, residual);
+      if (finished.converged) {
+        finished.iterations += out.iterations;
+        return finished;
       }
-      out.iterations += kEndGameIterations;
+      out.iterations += finished.iterations;  // spent: the shifted steps go on from out.q
     }
     // (A step shortened by a mass shift says nothing about convergence.)
     if (options_.increment_tolerance > 0.0 && residual.allFinite() && shift == 0.0 &&
