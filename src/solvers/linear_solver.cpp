@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "solvers/band_lu.hpp"
 
 namespace drillflex::solvers {
 
@@ -69,13 +70,8 @@ double BackwardError(const SparseMat& a, const MatX& x, const MatX& b) {
 }  // namespace
 
 Eigen::Index HalfBandwidth(const SparseMat& matrix) {
-  Eigen::Index band = 0;
-  for (Eigen::Index col = 0; col < matrix.outerSize(); ++col) {
-    for (SparseMat::InnerIterator it(matrix, col); it; ++it) {
-      band = std::max(band, std::abs(it.row() - it.col()));
-    }
-  }
-  return band;
+  const auto [lower, upper] = BandWidths(matrix);
+  return std::max(lower, upper);
 }
 
 SparseLinearSolver::SparseLinearSolver() : factors_(std::make_unique<Factors>()) {}
