@@ -1,3 +1,21 @@
+# drillflex_precompile(<target> [TEST])
+# With DRILLFLEX_PCH, the headers nearly every translation unit parses (Eigen's core, geometry and
+# sparse modules, fmt and the standard library; GoogleTest for TEST targets) are precompiled once per
+# target instead of parsed by each of its sources: the parse of Eigen alone is ~2 s of a
+# translation unit's ~5 s. Each target compiles its own header with its own flags, so the sanitizer
+# and assertion builds stay consistent.
+function(drillflex_precompile target)
+  if(NOT DRILLFLEX_PCH)
+    return()
+  endif()
+  set(headers <algorithm> <cmath> <functional> <memory> <optional> <string> <vector>
+              <Eigen/Core> <Eigen/Geometry> <Eigen/SparseCore> <fmt/format.h>)
+  if("TEST" IN_LIST ARGN)
+    list(APPEND headers <gtest/gtest.h>)
+  endif()
+  target_precompile_headers(${target} PRIVATE ${headers})
+endfunction()
+
 # drillflex_layer(<layer> [DEPENDS <targets>...])
 # One library target per layer, drillflex_<layer>, from src/<layer>/*.cpp. A layer that has only
 # headers so far is an INTERFACE target, so the layer graph stays the same as the code grows.
@@ -7,6 +25,7 @@ function(drillflex_layer layer)
   if(sources)
     add_library(drillflex_${layer} STATIC ${sources})
     target_link_libraries(drillflex_${layer} PUBLIC ${ARG_DEPENDS})
+    drillflex_precompile(drillflex_${layer})
   else()
     add_library(drillflex_${layer} INTERFACE)
     target_link_libraries(drillflex_${layer} INTERFACE ${ARG_DEPENDS})

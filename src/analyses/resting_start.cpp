@@ -199,7 +199,7 @@ Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const s
     const Mat3 frame = Quat::FromTwoVectors(from * (last - first), chord).toRotationMatrix() * from;
     Quat orientation(frame);
     orientation.normalize();
-    q.segment<3>(body.q_offset) = starts[b] - orientation.toRotationMatrix() * first;
+    q.segment<3>(body.q_offset) = starts[b] - orientation.toRotationMatrix() * first - body.reference_position;
     q.segment<4>(body.q_offset + 3) << orientation.w(), orientation.x(), orientation.y(), orientation.z();
     above = orientation.toRotationMatrix();
   }

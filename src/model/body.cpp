@@ -16,7 +16,9 @@ Vec3 BodyPose::NodeRotation(const Body& body, int node) const {
 
 BodyPose PoseOf(const Body& body, const VecX& q) {
   BodyPose pose;
-  pose.r = q.segment<3>(body.q_offset);
+  pose.reference = body.reference_position;
+  pose.displacement = q.segment<3>(body.q_offset);
+  pose.r = pose.reference + pose.displacement;
   pose.rotation = Quat(q[body.q_offset + 3], q[body.q_offset + 4], q[body.q_offset + 5],
                        q[body.q_offset + 6]);
   pose.A = pose.rotation.toRotationMatrix();
@@ -25,7 +27,7 @@ BodyPose PoseOf(const Body& body, const VecX& q) {
 }
 
 void SetReferencePose(const Body& body, VecX& q) {
-  q.segment<3>(body.q_offset) = body.reference_position;
+  q.segment<3>(body.q_offset).setZero();  // q holds the displacement from reference_position
   const Quat& rotation = body.reference_orientation;
   q.segment<4>(body.q_offset + 3) << rotation.w(), rotation.x(), rotation.y(), rotation.z();
   q.segment(body.q_offset + 7, body.flexible_count).setZero();

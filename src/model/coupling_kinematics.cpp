@@ -31,7 +31,9 @@ CouplingKinematics ComputeCouplingKinematics(const CouplingEnd& end1, const Coup
   // r2 − r1 first: two frame origins kilometres from the well head but metres apart subtract
   // exactly (Sterbenz), while r2 + A2 u_b would round at the ulp of r2 (4.5e-13 m at 3.5 km, ~1 N
   // in a coupling of 1e12 N/m), a floor of noise under which Newton cannot drive the residual.
-  const Vec3 d = (end2.pose.r - end1.pose.r) + A2 * k.u_b;
+  // r2 − r1 from the references (metres apart, nearly exact) and the displacements (BodyPose).
+  const Vec3 d = ((end2.pose.reference - end1.pose.reference) + (end2.pose.displacement - end1.pose.displacement)) +
+                 A2 * k.u_b;
   k.w = k.A1.transpose() * d;
   k.vee_r = VeeSkew(k.R);
   const auto& psi_b = body2.reduced->node_rotation_modes[end2.node];

@@ -61,7 +61,7 @@ double CouplingElement::DoPotentialEnergy(const ElementState& state) const {
 SupportElement::SupportElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
                                const Vec6& stiffness, const Vec6& damping)
     : ForceElement({body}), node_(node), stiffness_(stiffness), damping_(damping) {
-  ground_.r = position;
+  ground_.r = ground_.reference = position;
   ground_.A = frame;
   // The body's node frame at rest is the body's reference frame; the support's rotational strain
   // vee(skew(frameᵀ A)) is measured from it, so the frame must be that reference orientation.

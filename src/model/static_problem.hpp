@@ -34,6 +34,7 @@ class StaticModelProblem : public solvers::StaticProblem {
   double StepLength(const VecX& q, const VecX& dv) const override {
     return model_.LargestLateralNodeTranslation(q, dv);
   }
+  VecX StateResolution(const VecX& q) const override { return model_.StateResolution(q); }
   double load_factor() const { return load_factor_; }
 
  private:

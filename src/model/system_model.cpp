@@ -64,6 +64,19 @@ VecX SystemModel::Increment(const VecX& q, const VecX& dv) const {
   return result;
 }
 
+VecX SystemModel::StateResolution(const VecX& q) const {
+  constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+  VecX resolution(num_velocities_);
+  for (const Body& body : bodies_) {
+    const int qo = body.q_offset, vo = body.v_offset;
+    // The displacement as stored, and the node offsets A u (up to a body length) it is added to.
+    resolution.segment<3>(vo).setConstant(kEpsilon * std::max(q.segment<3>(qo).lpNorm<Eigen::Infinity>(), body.length()));
+    resolution.segment<3>(vo + 3).setConstant(kEpsilon);
+    resolution.segment(vo + 6, body.flexible_count) = kEpsilon * q.segment(qo + 7, body.flexible_count).cwiseAbs();
+  }
+  return resolution;
+}
+
 double SystemModel::LargestLateralNodeTranslation(const VecX& q, const VecX& dv) const {
   double largest = 0.0;
   for (const Body& body : bodies_) {

@@ -35,6 +35,11 @@ class SystemModel {
 
   VecX ReferencePositions() const;
   VecX Increment(const VecX& q, const VecX& dv) const;
+  // One rounding unit of each coordinate of q, as an increment (solvers::StaticProblem::
+  // StateResolution): ε·max(|Δr|∞, L) for a frame's displacement (added to node offsets up to the
+  // body length L), ε for its rotation (a unit quaternion's
+  // components), ε·|η_j| for a modal coordinate (ε = 2⁻⁵²).
+  VecX StateResolution(const VecX& q) const;
   std::vector<BodyPose> Poses(const VecX& q) const;
   // The largest lateral translation of any node for the increment dv at q, to first order: the
   // part of δr + A (δθ × u_k + Φ_k δη) across the body axis A e_x (m). A twist about the axis

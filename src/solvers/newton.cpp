@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -380,7 +381,7 @@ struct FailurePlace {
 };
 
 std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place,
-                           const NewtonOptions& options, double scale, int total_iterations) {
+                           const NewtonOptions& options, double scale, double tolerance, int total_iterations) {
   std::string where;
   if (options.load_stepping.enabled) {
     where = fmt::format(
@@ -394,8 +395,32 @@ std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place
   return fmt::format(
       "static Newton solver failed {}: {}; residual norm {:.4g} N against the tolerance {:.4g} N "
       "(force scale {:.4g} N) after {} iterations in this step, {} in all",
-      where, outcome.reason, outcome.residual_norm, options.residual_tolerance * scale, scale,
+      where, outcome.reason, outcome.residual_norm, tolerance, scale,
       outcome.iterations, total_iterations);
+}
+
+// How much |R| at q changes when every coordinate moves by one rounding unit
+// (StaticProblem::StateResolution) with signs from a fixed pseudo-random pattern: the noise below
+// which no state q can bring the residual. A 3 km string's couplings (~2e12 N/m at c = 1000) on
+// frames 3.6 km from the origin (rounding unit 4.5e-13 m) give ~1 N a coupling, ~50 N over 965
+// of them: 1e-8 of its weight (0.009 N) cannot be reached. 0 when the problem does not say.
+double RoundoffResidual(StaticProblem& problem, const VecX& q, const NewtonOptions& options) {
+  const VecX resolution = problem.StateResolution(q);
+  if (resolution.size() != problem.num_velocities()) return 0.0;
+  VecX signed_resolution = resolution;
+  std::uint32_t state = 2463534242u;  // xorshift32 (Marsaglia 2003), a fixed sequence
+  for (Eigen::Index j = 0; j < signed_resolution.size(); ++j) {
+    state ^= state << 13;
+    state ^= state >> 17;
+    state ^= state << 5;
+    if (state & 1u) signed_resolution[j] = -signed_resolution[j];
+  }
+  const VecX zero = VecX::Zero(problem.num_velocities());
+  problem.SetLoadFactor(1.0);
+  const VecX here = problem.Residual(options.time, q, zero, zero);
+  const VecX moved = problem.Residual(options.time, problem.Increment(q, signed_resolution), zero, zero);
+  const double noise = (moved - here).norm();
+  return std::isfinite(noise) ? noise : 0.0;
 }
 
 }  // namespace
@@ -405,7 +430,16 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
   CheckArguments(problem, q_start, options);
   StaticResult result;
   result.force_scale = DetermineForceScale(problem, q_start, options);
-  NewtonStepper stepper(problem, options, options.residual_tolerance * result.force_scale);
+  // The tolerance, but never below kRoundoffMargin times the residual's round-off floor: a
+  // residual at the floor is as small as the state can make it.
+  const double floor = RoundoffResidual(problem, q_start, options);
+  result.tolerance = std::max(options.residual_tolerance * result.force_scale, kRoundoffMargin * floor);
+  if (options.log && result.tolerance > options.residual_tolerance * result.force_scale) {
+    options.log(fmt::format("  Newton tolerance {:.4g} N: {} × the residual's round-off floor {:.4g} N (the relative "
+                            "tolerance asks {:.4g} N)", result.tolerance, kRoundoffMargin, floor,
+                            options.residual_tolerance * result.force_scale));
+  }
+  NewtonStepper stepper(problem, options, result.tolerance);
   const LoadSteppingOptions& stepping = options.load_stepping;
 
   VecX q = q_start;
@@ -460,7 +494,7 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
   result.converged = !failed;
   if (failed) {
     const std::string message =
-        FailureMessage(last_failure, place, options, result.force_scale, result.iterations);
+        FailureMessage(last_failure, place, options, result.force_scale, result.tolerance, result.iterations);
     if (options.throw_on_failure) throw SolverError(message);
     problem.SetLoadFactor(load_factor);
     const VecX zero = VecX::Zero(problem.num_velocities());

@@ -60,6 +60,11 @@ class StaticProblem : public Problem {
   // The length of an increment dv at q for the trust radius NewtonOptions::max_increment.
   // Default |dv|∞; a model may measure what matters to it (e.g. how far a node moves).
   virtual double StepLength(const VecX& /*q*/, const VecX& dv) const { return dv.lpNorm<Eigen::Infinity>(); }
+
+  // The increment dv (≥ 0 each) of one rounding unit of the stored state at q: how finely q can
+  // say where the system is (a position 3 km from the origin only to ~4.5e-13 m). The solver
+  // measures with it the round-off floor of the residual (SolveStatic). Empty: not known, no floor.
+  virtual VecX StateResolution(const VecX& /*q*/) const { return {}; }
 };
 
 // cK·K + cD·D + cM·M of `problem` by central differences of its residual: the position
