@@ -28,10 +28,10 @@ CouplingKinematics ComputeCouplingKinematics(const CouplingEnd& end1, const Coup
   k.u_b = end2.pose.NodeOffset(body2, end2.node);
   k.phi_b = &body2.reduced->node_translation_modes[end2.node];
   const Vec3 u_a = grounded ? Vec3::Zero() : end1.pose.NodeOffset(*end1.body, end1.node);
-  // r2 − r1 first: two frame origins kilometres from the well head but metres apart subtract
-  // exactly (Sterbenz), while r2 + A2 u_b would round at the ulp of r2 (4.5e-13 m at 3.5 km, ~1 N
-  // in a coupling of 1e12 N/m), a floor of noise under which Newton cannot drive the residual.
-  // r2 − r1 from the references (metres apart, nearly exact) and the displacements (BodyPose).
+  // r2 − r1 from the references (metres apart: nearly exact) and the displacements q holds
+  // (BodyPose), never from the absolute origins: a frame kilometres from the well head is rounded
+  // at the ulp of its origin (4.5e-13 m at 3.5 km, ~1 N in a coupling of 2e12 N/m), a floor of
+  // noise under which Newton could not drive the residual. tests/model/far_origin_test.cpp.
   const Vec3 d = ((end2.pose.reference - end1.pose.reference) + (end2.pose.displacement - end1.pose.displacement)) +
                  A2 * k.u_b;
   k.w = k.A1.transpose() * d;

@@ -401,9 +401,9 @@ std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place
 
 // How much |R| at q changes when every coordinate moves by one rounding unit
 // (StaticProblem::StateResolution) with signs from a fixed pseudo-random pattern: the noise below
-// which no state q can bring the residual. A 3 km string's couplings (~2e12 N/m at c = 1000) on
-// frames 3.6 km from the origin (rounding unit 4.5e-13 m) give ~1 N a coupling, ~50 N over 965
-// of them: 1e-8 of its weight (0.009 N) cannot be reached. 0 when the problem does not say.
+// which no state q can bring the residual. The 3 km bench string at c = 1000: 0.28 N, which then
+// sets its tolerance (1e-8 of its weight asks 0.009 N; the floor was 759 N while the state held
+// absolute frame origins). 0 when the problem does not say.
 double RoundoffResidual(StaticProblem& problem, const VecX& q, const NewtonOptions& options) {
   const VecX resolution = problem.StateResolution(q);
   if (resolution.size() != problem.num_velocities()) return 0.0;

@@ -412,5 +412,64 @@ TEST(SolveStatic, MassShiftEndGameFinishesWithPlainNewtonOnceNearTheRoot) {
   EXPECT_LT(finished.iterations, plain.iterations);
 }
 
+// Two stiff springs in series (k = 1e12 N/m, a c = 1000 drill-pipe joint) from a wall at 3600.1 m,
+// a load P = 1 N at the end: the positions are stored absolutely, so their rounding unit 4.5e-13 m
+// makes |R| noisy at ~k·ε·|q| ≈ 0.8 N, far above the tolerance 1e-8 × P asks. With the state's
+// resolution known (StateResolution) the solver raises the tolerance to the measured floor and
+// converges; without it, it cannot.
+class FarStiffSprings final : public StaticProblem {
+ public:
+  explicit FarStiffSprings(bool tells_resolution) : tells_resolution_(tells_resolution) {}
+  int num_positions() const override { return 2; }
+  int num_velocities() const override { return 2; }
+  VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
+  VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
+    const double first = kStiffness * (q[0] - kWall), second = kStiffness * (q[1] - q[0] - kLength);
+    VecX r(2);
+    r << first - second, second - kLoad;
+    return r;
+  }
+  SparseMat IterationMatrix(double, const VecX&, const VecX&, const VecX&, double cK, double, double cM) const override {
+    MatX matrix(2, 2);
+    matrix << 2.0 * cK * kStiffness + cM, -cK * kStiffness, -cK * kStiffness, cK * kStiffness + cM;
+    return matrix.sparseView();
+  }
+  double ForceScale() const override { return kLoad; }
+  VecX StateResolution(const VecX& q) const override {
+    if (!tells_resolution_) return {};
+    return std::numeric_limits<double>::epsilon() * q.cwiseAbs();
+  }
+  static constexpr double kStiffness = 1e12, kWall = 3600.1, kLength = 0.3, kLoad = 1.0;
+
+ private:
+  bool tells_resolution_;
+};
+
+TEST(SolveStatic, ToleranceNeverBelowTheResidualsRoundoffFloor) {
+  NewtonOptions options;
+  options.load_stepping.enabled = false;
+  options.max_iterations = 20;
+  // Millimetres from the equilibrium: kN of residual for Newton to take away.
+  const VecX start =
+      (VecX(2) << FarStiffSprings::kWall + 1e-3, FarStiffSprings::kWall + FarStiffSprings::kLength + 3e-3).finished();
+  const double end = FarStiffSprings::kWall + FarStiffSprings::kLength + 2.0 * FarStiffSprings::kLoad / FarStiffSprings::kStiffness;
+  FarStiffSprings told(true);
+  const StaticResult solved = SolveStatic(told, start, options);
+  const double unit = std::numeric_limits<double>::epsilon() * (FarStiffSprings::kWall + FarStiffSprings::kLength);
+  std::printf("round-off tolerance %.3e N (k ε |q| = %.3e N), |R| %.3e N, %d iterations\n", solved.tolerance,
+              FarStiffSprings::kStiffness * unit, solved.residual_norm, solved.iterations);
+  EXPECT_TRUE(solved.converged);
+  EXPECT_LE(solved.residual_norm, solved.tolerance);
+  // The floor is the spring's force over a rounding unit or two of its ends, not more.
+  EXPECT_GT(solved.tolerance, 0.1 * FarStiffSprings::kStiffness * unit);
+  EXPECT_LT(solved.tolerance, 10.0 * FarStiffSprings::kStiffness * unit);
+  // The end stands where P/k puts it, to a rounding unit.
+  EXPECT_GE(solved.iterations, 1);
+  EXPECT_NEAR(solved.q[1], end, 4.0 * unit);
+  // Not told, the solver asks for 1e-8 N, which no representable state reaches.
+  FarStiffSprings untold(false);
+  EXPECT_THROW(SolveStatic(untold, start, options), SolverError);
+}
+
 }  // namespace
 }  // namespace drillflex::solvers
