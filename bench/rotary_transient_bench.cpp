@@ -38,7 +38,7 @@ void RotatingBundledExample(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
   const int previous_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
-  const io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR) + "/bench/cases/rotary-bha-rotating.yaml");
+  const io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/bench/cases/rotary-bha-rotating.yaml"));
   cms::ReductionCache cache;
   const model::ModelInput input = io::MakeModelInput(c);
   analyses::TransientSettings settings = *c.analyses.transient;

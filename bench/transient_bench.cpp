@@ -49,7 +49,7 @@ double TipPeriod(const analyses::TransientResult& result) {
 }
 
 void CantileverFreeVibration(benchmark::State& state) {
-  const io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR) + "/validation/v8-transient/free-vibration.yaml");
+  const io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/validation/v8-transient/free-vibration.yaml"));
   cms::ReductionCache cache;
   const model::ModelInput input = io::MakeModelInput(c);
   const model::BuiltModel built = model::BuildSystemModel(input, cache);

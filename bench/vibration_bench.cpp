@@ -11,6 +11,7 @@
 // viscous (frequency-dependent annulus). The default
 // method is the reduced sweep (solvers/projected_harmonic.hpp); BM_Example_Sweep_Direct times the
 // full sparse solve at every frequency on the same case. OMP_NUM_THREADS sets the threads.
+#include <filesystem>
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -34,7 +35,7 @@ double PeakMemoryMb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
-std::string SourcePath(const char* relative) { return std::string(DRILLFLEX_SOURCE_DIR) + "/" + relative; }
+std::string SourcePath(const char* relative) { return (std::filesystem::path(DRILLFLEX_SOURCE_DIR) / relative).string(); }
 
 void Sweep(benchmark::State& state, const std::string& path, bool static_equilibrium,
            analyses::VibrationMethod method = analyses::VibrationMethod::Reduced) {

@@ -23,7 +23,7 @@ TEST(V8BackwardWhirl, RollingCollarWhirlsAtMinusOmegaRcOverClearanceWithin2Perce
   const auto results = RunCase("transient", "v8-transient/backward-whirl.yaml");
   ASSERT_TRUE(results.contains("transient"));
   const CsvColumns csv =
-      ReadCsv(std::string(DRILLFLEX_BINARY_DIR) + "/validation-results/v8-transient/backward-whirl/transient.csv");
+      ReadCsv(std::string(DRILLFLEX_BINARY_DIR "/validation-results/v8-transient/backward-whirl/transient.csv"));
   const auto& time = csv["time"];
   const double duration = time.back(), from = duration - 1.5;
   const std::vector<double> angle = Unwrapped(csv["probe1_whirl_angle"]);

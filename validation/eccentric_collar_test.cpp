@@ -34,8 +34,7 @@ constexpr double kCollarRadius = 4.0, kHoleRadius = 6.125;  // in
 TEST(V8EccentricCollar, BucklesAndTheContactForceTurnsAgainstTheRotationAtTheRollingRate) {
   const auto results = RunCase("transient", "v8-transient/eccentric-collar.yaml");
   ASSERT_TRUE(results.contains("transient"));
-  const CsvColumns csv = ReadCsv(std::string(DRILLFLEX_BINARY_DIR) +
-                                 "/validation-results/v8-transient/eccentric-collar/transient.csv");
+  const CsvColumns csv = ReadCsv(std::string(DRILLFLEX_BINARY_DIR "/validation-results/v8-transient/eccentric-collar/transient.csv"));
   const auto& time = csv["time"];
   const auto& y = csv["probe1_lateral_y"];
   const auto& z = csv["probe1_lateral_z"];

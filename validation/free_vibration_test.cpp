@@ -27,7 +27,7 @@ TEST(V8FreeVibration, PeriodWithin02PercentAndEnergyWithin1e3Over100Periods) {
   EXPECT_EQ(results["model"]["coordinates"], 72);
   EXPECT_EQ(results["transient"]["time_series"], "transient.csv");
   const CsvColumns csv =
-      ReadCsv(std::string(DRILLFLEX_BINARY_DIR) + "/validation-results/v8-transient/free-vibration/transient.csv");
+      ReadCsv(std::string(DRILLFLEX_BINARY_DIR "/validation-results/v8-transient/free-vibration/transient.csv"));
   const auto& time = csv["time"];
   const auto& tip = csv["probe1_lateral_z"];
   ASSERT_GT(time.size(), 1000u);

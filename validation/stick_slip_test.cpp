@@ -66,7 +66,7 @@ TEST(V8StickSlip, LimitCyclePeriodAndPeakBitSpeedWithin2Percent) {
   const auto results = RunCase("transient", "v8-transient/stick-slip.yaml");
   ASSERT_TRUE(results.contains("transient"));
   const CsvColumns csv =
-      ReadCsv(std::string(DRILLFLEX_BINARY_DIR) + "/validation-results/v8-transient/stick-slip/transient.csv");
+      ReadCsv(std::string(DRILLFLEX_BINARY_DIR "/validation-results/v8-transient/stick-slip/transient.csv"));
   const auto& time = csv["time"];
   std::vector<double> bit, surface;
   for (const double rpm : csv["bit_rpm"]) bit.push_back(rpm * kRpm);

@@ -17,15 +17,16 @@
 namespace drillflex::validation {
 
 inline std::string CasePath(const std::string& relative) {
-  return std::string(DRILLFLEX_SOURCE_DIR) + "/validation/" + relative;
+  return (std::filesystem::path(DRILLFLEX_SOURCE_DIR "/validation") / relative).string();
 }
 
 // Runs `drillflex <command> <case> -o <dir>` and returns results.json (fails the test on a
 // non-zero exit status).
 // The directory a case's results go to: build/validation-results/<case without its extension>.
 inline std::string ResultsDirectory(const std::string& relative_case) {
-  return std::string(DRILLFLEX_BINARY_DIR) + "/validation-results/" +
-         std::filesystem::path(relative_case).replace_extension().string();
+  return (std::filesystem::path(DRILLFLEX_BINARY_DIR "/validation-results") /
+          std::filesystem::path(relative_case).replace_extension())
+      .string();
 }
 
 inline nlohmann::json RunCase(const std::string& command, const std::string& relative_case) {

@@ -2,6 +2,7 @@
 // load against displacement read from a run's transient.csv.
 #pragma once
 
+#include <filesystem>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -37,8 +38,9 @@ struct PushRun {
 
 inline PushRun ReadRun(const std::string& case_name, double speed) {
   PushRun run;
-  run.csv = ReadCsv(std::string(DRILLFLEX_BINARY_DIR) + "/validation-results/v3-wu-rod/" + case_name +
-                    "/transient.csv");
+  run.csv = ReadCsv((std::filesystem::path(DRILLFLEX_BINARY_DIR "/validation-results/v3-wu-rod") / case_name /
+                     "transient.csv")
+                        .string());
   run.time = run.csv["time"];
   for (std::size_t i = 0; i < run.time.size(); ++i) {
     const double t = run.time[i];

@@ -430,14 +430,13 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
   CheckArguments(problem, q_start, options);
   StaticResult result;
   result.force_scale = DetermineForceScale(problem, q_start, options);
-  // The tolerance, but never below kRoundoffMargin times the residual's round-off floor: a
-  // residual at the floor is as small as the state can make it.
-  const double floor = RoundoffResidual(problem, q_start, options);
-  result.tolerance = std::max(options.residual_tolerance * result.force_scale, kRoundoffMargin * floor);
-  if (options.log && result.tolerance > options.residual_tolerance * result.force_scale) {
-    options.log(fmt::format("  Newton tolerance {:.4g} N: {} × the residual's round-off floor {:.4g} N (the relative "
-                            "tolerance asks {:.4g} N)", result.tolerance, kRoundoffMargin, floor,
-                            options.residual_tolerance * result.force_scale));
+  // The tolerance, but never below the residual's round-off floor: a residual at the floor is as
+  // small as the state can make it.
+  const double asked = options.residual_tolerance * result.force_scale;
+  result.tolerance = std::max(asked, RoundoffResidual(problem, q_start, options));
+  if (options.log && result.tolerance > asked) {
+    options.log(fmt::format("  Newton tolerance {:.4g} N: the residual's round-off floor (the relative tolerance "
+                            "asks {:.4g} N)", result.tolerance, asked));
   }
   NewtonStepper stepper(problem, options, result.tolerance);
   const LoadSteppingOptions& stepping = options.load_stepping;

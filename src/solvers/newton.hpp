@@ -2,8 +2,10 @@
 // adaptive load stepping (continuation in the load factor λ from 0 to 1).
 //
 // Per load step: q ← q ⊕ α dv with K(q) dv = −R(q), K = IterationMatrix(t, q, 0, 0, 1, 0, 0).
-// Converged when |R|₂ ≤ residual_tolerance · force scale, or kRoundoffMargin × the residual's
-// round-off floor where the state cannot resolve that (or, if increment_tolerance > 0, when
+// Converged when |R|₂ ≤ residual_tolerance · force scale, or the residual's round-off floor where
+// the state cannot resolve that (the change of R when every coordinate moves by one rounding unit,
+// StaticProblem::StateResolution, with random signs: 3–5 times the RMS of the rounding itself, a
+// coordinate being off by at most half a unit) (or, if increment_tolerance > 0, when
 // the Newton correction |dv|∞ ≤ increment_tolerance). A step that fails (iteration limit,
 // divergence, non-finite residual, singular matrix, no decrease along dv) is halved and retried
 // from the last converged state; below min_step the solver throws a SolverError that says where
@@ -81,20 +83,14 @@ struct StaticResult {
   int iterations = 0;         // Newton iterations over all load steps, failed ones included
   double residual_norm = 0.0; // |R|₂ at q (N)
   double force_scale = 0.0;   // the scale the tolerance was relative to (N)
-  // The residual tolerance applied (N): residual_tolerance × force_scale, or kRoundoffMargin times
-  // the residual's round-off floor where that is larger (StaticProblem::StateResolution).
+  // The residual tolerance applied (N): residual_tolerance × force_scale, or the residual's
+  // round-off floor where that is larger (StaticProblem::StateResolution).
   double tolerance = 0.0;
   double load_factor = 0.0;   // λ of q (1 when converged)
   int load_steps = 0;         // accepted load steps
   int rejected_steps = 0;     // load steps that failed and were cut
   std::vector<double> residual_history;  // |R|₂ at each iteration of the last accepted step
 };
-
-// The tolerance on |R| is never below this many times the change of R when every coordinate moves
-// by one rounding unit with random signs (the round-off floor; StaticProblem::StateResolution):
-// Newton steps below it only stir the noise. The floor so measured is 3–5 times the RMS of the
-// rounding itself (a coordinate is off by at most half a unit, uniformly: RMS 0.29 of a unit).
-inline constexpr double kRoundoffMargin = 1.0;
 
 // Finds q with R(q) = 0 at λ = 1, starting from q_start (an equilibrium at λ = 0 when load
 // stepping, a guess otherwise). Sets the problem's load factor along the way (and leaves it at

@@ -42,7 +42,7 @@ fs::path FreshDirectory(const std::string& name) {
   return directory;
 }
 
-const std::string kExample = std::string(DRILLFLEX_SOURCE_DIR) + "/examples/rotary-bha-build/case.yaml";
+const std::string kExample = std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml");
 
 TEST(Cli, CheckSummarizesTheExampleInItsUnits) {
   const RunResult result = RunDrillflex("check " + kExample);
@@ -158,7 +158,7 @@ TEST(Cli, UnknownSubcommandExitsNonZero) {
 }
 
 // A small case without a well: the imbalance collar of the validation (pinned-pinned, 30 ft).
-const std::string kImbalanceCase = std::string(DRILLFLEX_SOURCE_DIR) + "/validation/imbalance-response/collar.yaml";
+const std::string kImbalanceCase = std::string(DRILLFLEX_SOURCE_DIR "/validation/imbalance-response/collar.yaml");
 
 // Writes `text` as a case file in a fresh directory and returns its path.
 fs::path WriteCase(const std::string& name, const std::string& text) {

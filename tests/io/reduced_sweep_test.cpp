@@ -37,7 +37,7 @@ double LargestRelativeError(const std::vector<double>& value, const std::vector<
 }
 
 TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
-  const Case c = ReadCase(std::string(DRILLFLEX_SOURCE_DIR) + "/examples/rotary-bha-build/case.yaml");
+  const Case c = ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml"));
   cms::ReductionCache cache;
   const model::ModelInput input = MakeModelInput(c);
   const model::BuiltModel built = model::BuildSystemModel(input, cache);
