@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 namespace drillflex::validation {
@@ -46,8 +47,8 @@ std::vector<double> Frequencies(const std::string& name, const std::string& patt
   std::ofstream(directory / (name + ".yaml")) << text;
   const fs::path output = directory / name;
   fs::remove_all(output);
-  const std::string line = std::string(DRILLFLEX_EXE) + " modes " + (directory / (name + ".yaml")).string() + " -o " +
-                           output.string() + " > " + (directory / (name + ".log")).string() + " 2>&1";
+  const std::string line = fmt::format("{} modes {} -o {} > {} 2>&1", DRILLFLEX_EXE, (directory / (name + ".yaml")).string(),
+                                             output.string(), (directory / (name + ".log")).string());
   if (std::system(line.c_str()) != 0) {
     ADD_FAILURE() << line << " failed:\n" << ReadText(directory / (name + ".log"));
     return {};

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 namespace drillflex::validation {
@@ -34,8 +35,7 @@ inline nlohmann::json RunCase(const std::string& command, const std::string& rel
   std::filesystem::remove_all(output);
   const std::string log = output + ".log";
   std::filesystem::create_directories(std::filesystem::path(log).parent_path());
-  const std::string line = std::string(DRILLFLEX_EXE) + " " + command + " " + CasePath(relative_case) + " -o " +
-                           output + " > " + log + " 2>&1";
+  const std::string line = fmt::format("{} {} {} -o {} > {} 2>&1", DRILLFLEX_EXE, command, CasePath(relative_case), output, log);
   const int status = std::system(line.c_str());
   if (status != 0) {
     std::ifstream text(log);

@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 namespace {
@@ -28,7 +29,7 @@ RunResult RunDrillflex(const std::string& arguments) {
   // One log per test process: CTest runs the tests of this file in parallel processes, which
   // shared one log and read each other's output.
   const fs::path log = fs::temp_directory_path() / ("drillflex-cli-test-" + std::to_string(::getpid()) + ".log");
-  const std::string line = std::string(DRILLFLEX_EXE) + " " + arguments + " > " + log.string() + " 2>&1";
+  const std::string line = fmt::format("{} {} > {} 2>&1", DRILLFLEX_EXE, arguments, log.string());
   const int raw = std::system(line.c_str());
   std::ifstream file(log);
   std::stringstream text;
