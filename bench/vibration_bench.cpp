@@ -66,6 +66,7 @@ void Sweep(benchmark::State& state, const std::string& path, bool static_equilib
   state.counters["peak_MB"] = PeakMemoryMb();
   state.counters["basis_size"] = result.basis_size;
   state.counters["check_error"] = result.reduced_check_error;
+  state.counters["band_modes"] = result.band_modes;
   state.counters["reduced"] = result.method == analyses::VibrationMethod::Reduced ? 1.0 : 0.0;
 }
 

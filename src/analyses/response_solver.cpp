@@ -27,6 +27,8 @@ SweepSystem AssembleSweepSystem(const model::SystemModel& model, const model::La
     if (!sweep.annulus_radii.empty()) sweep.fluid = &fluid;
   }
   sweep.terms.push_back(linear.stiffness);  // the hysteretic term, last
+  for (const model::Body& body : model.bodies()) sweep.options.block_starts.push_back(body.v_offset);
+  sweep.options.block_starts.push_back(model.num_velocities());
   return sweep;
 }
 
@@ -56,7 +58,7 @@ SparseMat ReferenceMass(const SweepSystem& sweep, double reference_frequency) {
 }
 
 ResponseSolver::ResponseSolver(std::shared_ptr<const SweepSystem> sweep)
-    : sweep_(std::move(sweep)), direct_(std::make_unique<solvers::HarmonicSolver>(sweep_->system, sweep_->terms)) {}
+    : sweep_(std::move(sweep)), direct_(std::make_unique<solvers::HarmonicSolver>(sweep_->system, sweep_->terms, sweep_->options)) {}
 
 ResponseSolver::ResponseSolver(std::shared_ptr<const SweepSystem> sweep,
                                std::shared_ptr<const solvers::ProjectedHarmonicSolver> modal)

@@ -33,6 +33,7 @@ struct SweepSystem {
   std::vector<std::pair<double, double>> annulus_radii;  // (rod, hole) radius of each group, m
   const model::LateralFluid* fluid = nullptr;             // null without annulus groups
   double loss_factor = 0.0;       // 2ζ_s
+  solvers::HarmonicOptions options;  // the bodies' blocks (the direct solve's block LU)
 };
 
 SweepSystem AssembleSweepSystem(const model::SystemModel& model, const model::LateralFluid& fluid, const VecX& q);

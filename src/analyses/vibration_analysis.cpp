@@ -20,6 +20,7 @@
 #include "core/so3.hpp"
 #include "model/wall_contact.hpp"
 #include "solvers/projected_harmonic.hpp"
+#include "solvers/spectrum_count.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -441,7 +442,7 @@ std::vector<Amplitudes> SolveSweep(std::vector<SweepTask> tasks, const std::vect
 double CheckReducedSolver(const SweepSystem& sweep, const solvers::ProjectedHarmonicSolver& reduced,
                           std::vector<SweepTask> tasks, const MatX& patterns) {
   std::stable_sort(tasks.begin(), tasks.end(), [](const SweepTask& a, const SweepTask& b) { return a.frequency < b.frequency; });
-  solvers::HarmonicSolver direct(sweep.system, sweep.terms);
+  solvers::HarmonicSolver direct(sweep.system, sweep.terms, sweep.options);
   double largest = 0.0, previous = -1.0;
   for (int k = 0; k < kReducedCheckPoints; ++k) {
     const auto at = static_cast<std::size_t>((k + 0.5) / kReducedCheckPoints * static_cast<double>(tasks.size()));
@@ -466,6 +467,13 @@ double CheckReducedSolver(const SweepSystem& sweep, const solvers::ProjectedHarm
     }
   }
   return largest;
+}
+
+// One direct solver a thread.
+std::vector<std::unique_ptr<ResponseSolver>> MakeDirectSolvers(const std::shared_ptr<const SweepSystem>& sweep, int threads) {
+  std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(threads));
+  for (auto& solver : solvers) solver = std::make_unique<ResponseSolver>(sweep);
+  return solvers;
 }
 
 // The solvers of the sweep, one a thread; reduced: one projection shared by all, checked against
@@ -506,9 +514,29 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
     for (std::size_t c = 0; c < options.pattern_bands.size(); ++c) {
       if (!(options.pattern_bands[c].highest > options.pattern_bands[c].lowest)) fixed.push_back(static_cast<Eigen::Index>(c));
     }
+    // The annulus of the basis at the geometric mean of the band (the solve takes each ω's own).
+    const double reference = std::sqrt(std::max(lowest, 1e-3 * options.highest_frequency) * options.highest_frequency);
+    const SparseMat reference_mass = ReferenceMass(*sweep, reference);
+    // Every resonance the sweep crosses needs a basis vector of its own, and a basis holds at most
+    // the static block, `depth` blocks at each expansion frequency (the shifts and the bands' tops)
+    // and the fixed frequencies' responses. When the band holds more undamped modes than that
+    // (Sylvester's count, solvers/spectrum_count.hpp; a long string's dense lateral spectrum: 3 km
+    // of pipe has over a thousand below 12.5 Hz) the basis cannot follow the sweep: it, its check
+    // and the check's direct solves are skipped.
+    const auto loads_count = static_cast<int>(patterns.cols());
+    const int capacity = loads_count * (1 + options.depth * (options.shifts + loads_count)) + 2 * static_cast<int>(fixed.size());
+    const int below_top = solvers::CountEigenvaluesBelow(sweep->system.stiffness, reference_mass, highest * highest);
+    const int below_bottom = solvers::CountEigenvaluesBelow(sweep->system.stiffness, reference_mass, lowest * lowest);
+    result.band_modes = below_top >= 0 && below_bottom >= 0 ? below_top - below_bottom : -1;
+    if (result.band_modes > capacity) {
+      result.method = VibrationMethod::Direct;
+      result.method_note = fmt::format("{} undamped modes lie in the sweep's band, more than a reduced basis of at most "
+                                       "{} vectors can follow: solved directly", result.band_modes, capacity);
+      return MakeDirectSolvers(sweep, threads);
+    }
     for (std::size_t k = 0; k < fixed.size(); k += 2) {
       const double frequency = options.pattern_bands[static_cast<std::size_t>(fixed[k])].lowest;
-      solvers::HarmonicSolver direct(sweep->system, sweep->terms);
+      solvers::HarmonicSolver direct(sweep->system, sweep->terms, sweep->options);
       const std::vector<Eigen::Index> pair{fixed[k], fixed[std::min(k + 1, fixed.size() - 1)]};
       const solvers::ComplexMat response = direct.Solve(frequency, MatX(patterns(Eigen::all, pair)).cast<std::complex<double>>(),
                                                         0.0, SweepTermCoefficients(*sweep, frequency));
@@ -517,10 +545,7 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
       options.extra_vectors.middleCols(old, response.cols()) = response.real();
       options.extra_vectors.middleCols(old + response.cols(), response.cols()) = response.imag();
     }
-    // The annulus of the basis at the geometric mean of the band (the solve takes each ω's own).
-    const double reference = std::sqrt(std::max(lowest, 1e-3 * options.highest_frequency) * options.highest_frequency);
-    solvers::KrylovBasis basis =
-        solvers::BuildKrylovBasis(sweep->system.stiffness, ReferenceMass(*sweep, reference), patterns, options);
+    solvers::KrylovBasis basis = solvers::BuildKrylovBasis(sweep->system.stiffness, reference_mass, patterns, options);
     result.basis_size = static_cast<int>(basis.vectors.cols());
     reduced = std::make_shared<const solvers::ProjectedHarmonicSolver>(sweep->system, sweep->terms, std::move(basis.vectors),
                                                                         SweepTermCoefficients(*sweep, reference));
@@ -533,10 +558,9 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
                                        100.0 * result.reduced_check_error, 100.0 * kReducedCheckTolerance);
     }
   }
+  if (!reduced) return MakeDirectSolvers(sweep, threads);
   std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(threads));
-  for (auto& solver : solvers) {
-    solver = reduced ? std::make_unique<ResponseSolver>(sweep, reduced) : std::make_unique<ResponseSolver>(sweep);
-  }
+  for (auto& solver : solvers) solver = std::make_unique<ResponseSolver>(sweep, reduced);
   return solvers;
 }
 

@@ -90,6 +90,9 @@ struct VibrationResult {
   // Reduced: the largest relative error of the reduced response against the direct one at the
   // check frequencies (above kReducedCheckTolerance the sweep is solved directly instead).
   double reduced_check_error = 0.0;
+  // Reduced: the undamped modes (of K and the reference mass) between the sweep's lowest and highest
+  // excitation frequencies; -1 when the count failed (a shift on an eigenvalue).
+  int band_modes = -1;
   std::string method_note;  // why a reduced request was solved directly
 };
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "solvers/block_tridiagonal_lu.hpp"
 #include "solvers/linear_solver.hpp"
 
 namespace drillflex::solvers {
@@ -24,18 +25,18 @@ template <typename Ordering>
 class PivotCheckedLu : public Eigen::SparseLU<ComplexSparse, Ordering> {
  public:
   double SmallestPivot() const {
-    double smallest = std::numeric_limits<double>::infinity();
+    double smallest2 = std::numeric_limits<double>::infinity();  // |u_jj|²: no hypot per column
     for (Eigen::Index j = 0; j < this->cols(); ++j) {
-      double pivot = 0.0;  // a column without a stored diagonal has a zero pivot
+      double pivot2 = 0.0;  // a column without a stored diagonal has a zero pivot
       for (typename decltype(this->m_Lstore)::InnerIterator it(this->m_Lstore, j); it; ++it) {
         if (it.index() == j) {
-          pivot = std::abs(it.value());
+          pivot2 = std::norm(it.value());
           break;
         }
       }
-      smallest = std::min(smallest, pivot);
+      smallest2 = std::min(smallest2, pivot2);
     }
-    return smallest;
+    return std::sqrt(smallest2);
   }
 };
 
@@ -66,13 +67,24 @@ std::vector<double> ValuesOnPattern(const SparseMat& matrix, const SparseMat& pa
 
 }  // namespace
 
+// The real matrices laid onto one storage of the complex matrix: the slots of the union pattern
+// (general LU) or the block storage of the block LU.
+struct MatricesOnStorage {
+  std::vector<double> stiffness, mass, damping, gyroscopic;  // empty D, G: none
+  // The frequency terms: those with entries on more than a quarter of the pattern as values on the
+  // storage (dense_terms), the others as their nonzeros (place in the storage, value) in `terms`.
+  std::vector<std::vector<std::pair<std::size_t, double>>> terms;
+  std::vector<std::vector<double>> dense_terms;
+};
+
 struct HarmonicSolver::Workspace {
   HarmonicOptions options;
-  ComplexSparse matrix;  // the union pattern; values rewritten at every frequency
-  std::vector<double> stiffness, mass, damping, gyroscopic;  // on that pattern
-  // The frequency terms' nonzeros: (slot on the pattern, value).
-  std::vector<std::vector<std::pair<std::size_t, double>>> terms;
+  ComplexSparse matrix;  // the union pattern; values rewritten for the general LU
+  MatricesOnStorage on_storage;  // on the block storage when the block LU is in use, else on the pattern
+  Eigen::ArrayXd imaginary;      // the imaginary parts being formed
   bool natural_order = false;
+  BlockTridiagonalLu blocks;  // in use when analysed
+  int block_fallbacks = 0;
   PivotCheckedLu<Eigen::NaturalOrdering<int>> lu_natural;
   PivotCheckedLu<Eigen::COLAMDOrdering<int>> lu_colamd;
 };
@@ -120,19 +132,36 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, std::vector<SparseMat> terms
   identity.setIdentity();
   pattern += identity;
   pattern.makeCompressed();
-  w.stiffness = ValuesOnPattern(system.stiffness, pattern);
-  w.mass = ValuesOnPattern(system.mass, pattern);
-  w.damping = ValuesOnPattern(system.damping, pattern);
-  w.gyroscopic = ValuesOnPattern(system.gyroscopic, pattern);
-  for (const SparseMat& term : terms) {
-    const std::vector<double> values = ValuesOnPattern(term, pattern);
-    auto& nonzeros = w.terms.emplace_back();
-    for (std::size_t k = 0; k < values.size(); ++k) {
-      if (values[k] != 0.0) nonzeros.emplace_back(k, values[k]);
-    }
-  }
   w.matrix = pattern.cast<Complex>();
   w.matrix.makeCompressed();
+  if (!options.block_starts.empty()) w.blocks.Analyze(pattern, options.block_starts);
+  // A pattern slot's place in the storage the values are assembled in.
+  const std::vector<std::size_t>* offsets = w.blocks.analyzed() ? &w.blocks.slot_offsets() : nullptr;
+  const std::size_t storage = offsets ? w.blocks.storage_size() : static_cast<std::size_t>(pattern.nonZeros());
+  auto on_storage = [&](const SparseMat& matrix) {
+    std::vector<double> values = ValuesOnPattern(matrix, pattern);
+    if (!offsets) return values;
+    std::vector<double> placed(storage, 0.0);
+    for (std::size_t slot = 0; slot < values.size(); ++slot) placed[(*offsets)[slot]] = values[slot];
+    return placed;
+  };
+  MatricesOnStorage& m = w.on_storage;
+  m.stiffness = on_storage(system.stiffness);
+  m.mass = on_storage(system.mass);
+  if (system.damping.size() > 0) m.damping = on_storage(system.damping);
+  if (system.gyroscopic.size() > 0) m.gyroscopic = on_storage(system.gyroscopic);
+  for (const SparseMat& term : terms) {
+    auto& nonzeros = m.terms.emplace_back();
+    auto& dense = m.dense_terms.emplace_back();
+    if (4 * term.nonZeros() > pattern.nonZeros()) {
+      dense = on_storage(term);
+      continue;
+    }
+    const std::vector<double> values = ValuesOnPattern(term, pattern);
+    for (std::size_t slot = 0; slot < values.size(); ++slot) {
+      if (values[slot] != 0.0) nonzeros.emplace_back(offsets ? (*offsets)[slot] : slot, values[slot]);
+    }
+  }
   // Band fill n·b against the entries (linear_solver.hpp): narrow bands keep their own order.
   w.natural_order = static_cast<double>(n) * static_cast<double>(HalfBandwidth(pattern)) <=
                     8.0 * static_cast<double>(std::max<Eigen::Index>(pattern.nonZeros(), 1));
@@ -150,18 +179,67 @@ HarmonicSolver::HarmonicSolver(HarmonicSolver&&) noexcept = default;
 HarmonicSolver& HarmonicSolver::operator=(HarmonicSolver&&) noexcept = default;
 
 Eigen::Index HarmonicSolver::size() const { return workspace_->matrix.rows(); }
+bool HarmonicSolver::block_lu() const { return workspace_->blocks.analyzed(); }
+int HarmonicSolver::block_fallbacks() const { return workspace_->block_fallbacks; }
+
+namespace {
+
+// max |Re z_i| + |Im z_i| of a column: the ∞-norm with |z| measured as |Re z| + |Im z| (within √2
+// of the modulus, and no hypot per entry).
+double MaxAbs(const Eigen::Ref<const Eigen::VectorXcd>& column) {
+  return column.size() == 0 ? 0.0 : (column.real().cwiseAbs() + column.imag().cwiseAbs()).maxCoeff();
+}
+
+// max_c ‖R_c‖∞ / (‖A‖∞ ‖X_c‖∞ + ‖F_c‖∞) for the residual R = F − A X, every modulus as |Re| + |Im|.
+double BackwardError(double matrix_norm, const ComplexMat& loads, const ComplexMat& x, const ComplexMat& residual) {
+  double largest = 0.0;
+  for (Eigen::Index c = 0; c < x.cols(); ++c) {
+    const double scale = matrix_norm * MaxAbs(x.col(c)) + MaxAbs(loads.col(c));
+    const double error = MaxAbs(residual.col(c));
+    if (error > 0.0) largest = std::max(largest, scale > 0.0 ? error / scale : std::numeric_limits<double>::infinity());
+  }
+  return std::isfinite(largest) ? largest : std::numeric_limits<double>::infinity();
+}
+
+// The values of A(ω) on a storage: one pass over the matrices and the dense terms, then the sparse
+// terms' entries (`imaginary` is scratch).
+void AssembleOnStorage(const MatricesOnStorage& m, double frequency, double rotor_speed,
+                       const std::vector<FrequencyTermCoefficients>& terms, Complex* values, Eigen::ArrayXd& imaginary) {
+  const double omega2 = frequency * frequency;
+  const auto entries = static_cast<Eigen::Index>(m.stiffness.size());
+  using Strided = Eigen::Map<Eigen::ArrayXd, 0, Eigen::InnerStride<2>>;  // the real or imaginary parts
+  Strided real(reinterpret_cast<double*>(values), entries);
+  auto array = [entries](const std::vector<double>& v) { return Eigen::Map<const Eigen::ArrayXd>(v.data(), entries); };
+  imaginary.setZero(entries);
+  real = array(m.stiffness) - omega2 * array(m.mass);
+  if (!m.damping.empty()) imaginary += frequency * array(m.damping);
+  if (!m.gyroscopic.empty() && rotor_speed != 0.0) imaginary += frequency * rotor_speed * array(m.gyroscopic);
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    if (m.dense_terms[t].empty()) continue;
+    if (terms[t].mass != 0.0) real -= omega2 * terms[t].mass * array(m.dense_terms[t]);
+    if (terms[t].damping != 0.0) imaginary += frequency * terms[t].damping * array(m.dense_terms[t]);
+  }
+  Strided(reinterpret_cast<double*>(values) + 1, entries) = imaginary;
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    const Complex factor(-omega2 * terms[t].mass, frequency * terms[t].damping);
+    if (factor == Complex(0.0, 0.0)) continue;
+    for (const auto& [at, value] : m.terms[t]) values[at] += factor * value;
+  }
+}
+
+}  // namespace
 
 ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, double rotor_speed) {
   return Solve(frequency, loads, rotor_speed,
-               std::vector<FrequencyTermCoefficients>(workspace_->terms.size()));
+               std::vector<FrequencyTermCoefficients>(workspace_->on_storage.terms.size()));
 }
 
 ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, double rotor_speed,
                                  const std::vector<FrequencyTermCoefficients>& terms) {
   Workspace& w = *workspace_;
-  if (terms.size() != w.terms.size()) {
+  if (terms.size() != w.on_storage.terms.size()) {
     throw LogicError(fmt::format("HarmonicSolver::Solve: {} term coefficients for {} terms", terms.size(),
-                                 w.terms.size()));
+                                 w.on_storage.terms.size()));
   }
   if (!std::isfinite(frequency) || frequency < 0.0 || !std::isfinite(rotor_speed)) {
     throw LogicError(fmt::format("HarmonicSolver::Solve: needs a finite ω ≥ 0 and a finite Ω "
@@ -173,20 +251,33 @@ ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, doub
   }
   if (!loads.allFinite()) throw LogicError("HarmonicSolver::Solve: non-finite loads");
   if (size() == 0) return ComplexMat(0, loads.cols());
-  // A = K − ω² M + iω (D + Ω G), entry by entry on the shared pattern.
-  const double omega2 = frequency * frequency;
-  Complex* values = w.matrix.valuePtr();
+  // A = K − ω² M + iω (D + Ω G) + Σ_t (−ω² a_t + iω b_t) T_t on the storage in use.
+  const bool blocked = w.blocks.analyzed();
+  Complex* values = blocked ? w.blocks.values() : w.matrix.valuePtr();
+  AssembleOnStorage(w.on_storage, frequency, rotor_speed, terms, values, w.imaginary);
+  if (blocked) {
+    w.blocks.Factorize();
+    const auto [matrix_norm, largest] = w.blocks.Norms();
+    if (w.blocks.smallest_pivot() > w.options.singular_pivot_tolerance * largest) {
+      ComplexMat x = w.blocks.Solve(loads), residual;
+      auto backward_error = [&] {
+        residual = loads - w.blocks.Multiply(x);
+        return BackwardError(matrix_norm, loads, x, residual);
+      };
+      double error = backward_error();
+      for (int step = 0; step < 2 && error > kBlockBackwardErrorTolerance; ++step) {  // iterative refinement
+        x += w.blocks.Solve(residual);
+        error = backward_error();
+      }
+      if (error <= kBlockBackwardErrorTolerance) return x;
+    }
+    ++w.block_fallbacks;  // a small pivot or a missed backward error: the general LU decides
+    const std::vector<std::size_t>& offsets = w.blocks.slot_offsets();
+    Complex* pattern_values = w.matrix.valuePtr();
+    for (std::size_t slot = 0; slot < offsets.size(); ++slot) pattern_values[slot] = values[offsets[slot]];
+  }
   double largest2 = 0.0;  // max |a_ij|² (std::norm: no hypot per entry and frequency)
-  for (std::size_t k = 0; k < w.stiffness.size(); ++k) {
-    values[k] = Complex(w.stiffness[k] - omega2 * w.mass[k],
-                        frequency * (w.damping[k] + rotor_speed * w.gyroscopic[k]));
-  }
-  for (std::size_t t = 0; t < terms.size(); ++t) {
-    const Complex factor(-omega2 * terms[t].mass, frequency * terms[t].damping);
-    if (factor == Complex(0.0, 0.0)) continue;
-    for (const auto& [slot, value] : w.terms[t]) values[slot] += factor * value;
-  }
-  for (std::size_t k = 0; k < w.stiffness.size(); ++k) largest2 = std::max(largest2, std::norm(values[k]));
+  for (Eigen::Index k = 0; k < w.matrix.nonZeros(); ++k) largest2 = std::max(largest2, std::norm(w.matrix.valuePtr()[k]));
   const double largest = std::sqrt(largest2);
   auto singular = [&](const std::string& why) {
     return SolverError(fmt::format(

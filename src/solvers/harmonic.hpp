@@ -6,10 +6,16 @@
 // matrix G (they differ, e.g. a bit exciting at 3× the rotary speed). |X_i| is the amplitude of
 // DOF i, arg X_i its phase lead on the force's cosine.
 //
-// Solver: Eigen::SparseLU on the complex matrix, the symbolic analysis (ordering, elimination
-// tree) done once for the union of the four patterns and reused at every frequency; one
+// Solver: with the coordinates' blocks given (HarmonicOptions::block_starts, a string's bodies) and
+// the matrix block-tridiagonal in them, the block LU of solvers/block_tridiagonal_lu.hpp, each
+// solution accepted when its backward error is below kBlockBackwardErrorTolerance (after at most
+// two steps of iterative refinement), else the frequency is solved again by the general sparse LU.
+// The general one: Eigen::SparseLU on the complex matrix, the symbolic analysis (ordering,
+// elimination tree) done once for the union of the four patterns and reused at every frequency; one
 // numerical factorization per frequency serves all m load cases. Ordering as in
 // linear_solver.hpp: the matrix's own order when its band is narrow, COLAMD otherwise.
+// Measured on the 3 km string of bench/vibration_bench (17 370 coordinates, 965 blocks of 18):
+// see docs/validation.md "Sweep speed".
 // Measured (factorize once, then solve 3 right-hand sides; beam-like banded complex matrix, 6
 // DOFs per node, 12×12 blocks; Release, this 2-core machine while another build was running, two
 // runs): n = 2004: SparseLU natural 1.3 / 0.3 ms, COLAMD 1.3-1.7 / 0.3-0.5 ms, UMFPACK
@@ -53,7 +59,15 @@ struct FrequencyTermCoefficients {
 struct HarmonicOptions {
   // Relative pivot size min |u_jj| / max |a_ij| below which the matrix counts as singular.
   double singular_pivot_tolerance = 1e-12;
+  // The first coordinate of each block and, last, n (e.g. each body's v_offset): the block LU is
+  // used when every entry lies in a diagonal block or next to one. Empty: the general sparse LU.
+  std::vector<Eigen::Index> block_starts;
 };
+
+// The largest backward error max_c ‖F_c − A X_c‖∞ / (‖A‖∞ ‖X_c‖∞ + ‖F_c‖∞) of a block-LU solution
+// accepted; a backward-stable LU reaches about n·ε ≈ 1e-12 for n ≈ 2e4 at worst (Higham, "Accuracy and
+// Stability of Numerical Algorithms", 2nd ed., 2002, §9.3), usually 1e-16.
+inline constexpr double kBlockBackwardErrorTolerance = 1e-12;
 
 // One factorization per frequency, the pattern analysed once. Throws LogicError on bad sizes
 // (every matrix n×n, D and G may be empty) or non-finite entries.
@@ -77,6 +91,9 @@ class HarmonicSolver {
                    const std::vector<FrequencyTermCoefficients>& terms);
 
   Eigen::Index size() const;
+  // Whether the block LU is in use, and how many frequencies it missed (solved by the general LU).
+  bool block_lu() const;
+  int block_fallbacks() const;
 
  private:
   struct Workspace;

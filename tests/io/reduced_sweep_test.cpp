@@ -67,13 +67,28 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
         << direct.critical_rpm[k] / kRpm << " rpm";
   }
   EXPECT_LT(reduced.reduced_check_error, analyses::kReducedCheckTolerance);
-  // A basis far too small (the static block and one shift) misses the check: the sweep runs directly.
+  // The sweep crosses about a hundred undamped modes (Sylvester's count).
+  EXPECT_GT(reduced.band_modes, 50);
+  EXPECT_LT(reduced.band_modes, 200);
+  // A basis that cannot hold as many vectors as there are modes in the band (the static block and
+  // one shift: at most 6 × (1 + 7) + 4 = 52 vectors) is not even built: the sweep runs directly.
   analyses::VibrationSettings poor = bench::ThreeExcitationSweep(analyses::VibrationMethod::Reduced);
   poor.basis_shifts = poor.basis_depth = 1;
-  const auto fallback = analyses::RunVibration(built, input, fluid, q, poor);
+  const auto skipped = analyses::RunVibration(built, input, fluid, q, poor);
+  EXPECT_EQ(skipped.method, analyses::VibrationMethod::Direct);
+  EXPECT_EQ(skipped.basis_size, 0);
+  EXPECT_EQ(skipped.band_modes, reduced.band_modes);
+  EXPECT_NE(skipped.method_note.find("undamped modes lie in the sweep's band"), std::string::npos) << skipped.method_note;
+  EXPECT_LT(LargestRelativeError(skipped.max_lateral_displacement, direct.max_lateral_displacement), 1e-9);
+  // One that could (ten shifts of depth one: up to 6 × (1 + 16) + 4 = 106 vectors) but misses the
+  // check at the sample frequencies: the sweep runs directly too.
+  analyses::VibrationSettings thin = poor;
+  thin.basis_shifts = 10;
+  const auto fallback = analyses::RunVibration(built, input, fluid, q, thin);
+  std::printf("thin basis: %d vectors, check error %.3g %%\n", fallback.basis_size, 100.0 * fallback.reduced_check_error);
   EXPECT_GT(fallback.reduced_check_error, analyses::kReducedCheckTolerance);
   EXPECT_EQ(fallback.method, analyses::VibrationMethod::Direct);
-  EXPECT_FALSE(fallback.method_note.empty());
+  EXPECT_NE(fallback.method_note.find("missed the direct solve"), std::string::npos) << fallback.method_note;
   EXPECT_LT(LargestRelativeError(fallback.max_lateral_displacement, direct.max_lateral_displacement), 1e-9);
 }
 
