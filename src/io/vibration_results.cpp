@@ -102,6 +102,7 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
                 {"method", result.method == analyses::VibrationMethod::Reduced ? "reduced" : "direct"}};
   if (result.method == analyses::VibrationMethod::Reduced) block["basis_size"] = result.basis_size;
   if (result.basis_size > 0) block["reduced_check_error"] = result.reduced_check_error;
+  if (result.band_modes >= 0) block["band_modes"] = result.band_modes;
   if (!result.method_note.empty()) block["method_note"] = result.method_note;
   if (ratio) block["max_clearance_ratio"] = clearance;
   files.Add("vibration.csv", table.ToString());

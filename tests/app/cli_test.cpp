@@ -252,7 +252,7 @@ TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
   ASSERT_TRUE(json.contains("vibration"));
   const auto& vibration = json["vibration"];
   for (const char* key : {"rpm", "max_lateral_displacement", "max_bending_stress", "max_contact_force", "critical_rpm",
-                          "safe_windows", "critical_speeds", "quietest_windows", "method", "basis_size"}) {
+                          "safe_windows", "critical_speeds", "quietest_windows", "method", "basis_size", "band_modes"}) {
     EXPECT_TRUE(vibration.contains(key)) << key;
   }
   EXPECT_EQ(vibration["rpm"].size(), 1201u);
@@ -264,6 +264,8 @@ TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
   ASSERT_EQ(vibration["critical_speeds"].size(), 1u);
   EXPECT_EQ(vibration["critical_speeds"][0]["excitation"].get<int>(), 0);
   EXPECT_EQ(vibration["method"].get<std::string>(), "reduced");
+  // The resonance the sweep meets is among the undamped modes counted in its band.
+  EXPECT_GE(vibration["band_modes"].get<int>(), 1);
   EXPECT_FALSE(json.contains("modes"));
 }
 
