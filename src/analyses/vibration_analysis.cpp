@@ -525,9 +525,8 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
     // and the check's direct solves are skipped.
     const auto loads_count = static_cast<int>(patterns.cols());
     const int capacity = loads_count * (1 + options.depth * (options.shifts + loads_count)) + 2 * static_cast<int>(fixed.size());
-    const int below_top = solvers::CountEigenvaluesBelow(sweep->system.stiffness, reference_mass, highest * highest);
-    const int below_bottom = solvers::CountEigenvaluesBelow(sweep->system.stiffness, reference_mass, lowest * lowest);
-    result.band_modes = below_top >= 0 && below_bottom >= 0 ? below_top - below_bottom : -1;
+    result.band_modes = solvers::CountEigenvaluesBetween(sweep->system.stiffness, reference_mass, lowest * lowest,
+                                                         highest * highest);
     if (result.band_modes > capacity) {
       result.method = VibrationMethod::Direct;
       result.method_note = fmt::format("{} undamped modes lie in the sweep's band, more than a reduced basis of at most "

@@ -162,9 +162,7 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, std::vector<SparseMat> terms
       if (values[slot] != 0.0) nonzeros.emplace_back(offsets ? (*offsets)[slot] : slot, values[slot]);
     }
   }
-  // Band fill n·b against the entries (linear_solver.hpp): narrow bands keep their own order.
-  w.natural_order = static_cast<double>(n) * static_cast<double>(HalfBandwidth(pattern)) <=
-                    8.0 * static_cast<double>(std::max<Eigen::Index>(pattern.nonZeros(), 1));
+  w.natural_order = FactorizeInOwnOrder(pattern);  // narrow bands keep their own order (linear_solver.hpp)
   if (n > 0) {
     if (w.natural_order) {
       w.lu_natural.analyzePattern(w.matrix);

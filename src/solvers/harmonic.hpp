@@ -15,7 +15,7 @@
 // numerical factorization per frequency serves all m load cases. Ordering as in
 // linear_solver.hpp: the matrix's own order when its band is narrow, COLAMD otherwise.
 // Measured on the 3 km string of bench/vibration_bench (17 370 coordinates, 965 blocks of 18):
-// see docs/validation.md "Sweep speed".
+// see docs/validation.md "Vibration speed".
 // Measured (factorize once, then solve 3 right-hand sides; beam-like banded complex matrix, 6
 // DOFs per node, 12×12 blocks; Release, this 2-core machine while another build was running, two
 // runs): n = 2004: SparseLU natural 1.3 / 0.3 ms, COLAMD 1.3-1.7 / 0.3-0.5 ms, UMFPACK

@@ -74,6 +74,11 @@ Eigen::Index HalfBandwidth(const SparseMat& matrix) {
   return std::max(lower, upper);
 }
 
+bool FactorizeInOwnOrder(const SparseMat& matrix) {
+  return static_cast<double>(matrix.rows()) * static_cast<double>(HalfBandwidth(matrix)) <=
+         8.0 * static_cast<double>(std::max<Eigen::Index>(matrix.nonZeros(), 1));
+}
+
 SparseLinearSolver::SparseLinearSolver() : factors_(std::make_unique<Factors>()) {}
 SparseLinearSolver::~SparseLinearSolver() = default;
 SparseLinearSolver::SparseLinearSolver(SparseLinearSolver&&) noexcept = default;
@@ -106,11 +111,7 @@ void SparseLinearSolver::Factorize(const SparseMat& matrix_in, MatrixSymmetry sy
   if (!same_pattern) {
     ldlt_analyzed_ = false;
     lu_analyzed_ = false;
-    // Band fill n·b against the entries already there (see the header for the measurements).
-    const double band_fill = static_cast<double>(matrix.rows()) *
-                             static_cast<double>(HalfBandwidth(matrix));
-    natural_order_ = band_fill <= 8.0 * static_cast<double>(std::max<Eigen::Index>(
-                                            matrix.nonZeros(), 1));
+    natural_order_ = FactorizeInOwnOrder(matrix);  // see the header for the measurements
   }
   matrix_ = std::move(matrix);
   factorized_ = false;

@@ -66,4 +66,8 @@ class SparseLinearSolver {
 // Half bandwidth max |i − j| over the non-zero entries.
 Eigen::Index HalfBandwidth(const SparseMat& matrix);
 
+// The ordering rule of the header: factorize in the matrix's own order when its band is narrow,
+// i.e. the band fill n · HalfBandwidth is at most 8 times the entries already there.
+bool FactorizeInOwnOrder(const SparseMat& matrix);
+
 }  // namespace drillflex::solvers

@@ -23,17 +23,28 @@ int NegativePivots(const SparseMat& matrix) {
   return negative;
 }
 
+// Negative pivots of K_s − σM for the symmetric part K_s, in the ordering of linear_solver.hpp.
+int NegativePivotsOfShifted(const SparseMat& symmetric, const SparseMat& M, double sigma) {
+  SparseMat shifted = symmetric - sigma * M;
+  shifted.makeCompressed();
+  if (shifted.rows() == 0) return 0;
+  return FactorizeInOwnOrder(shifted) ? NegativePivots<Eigen::NaturalOrdering<int>>(shifted)
+                                      : NegativePivots<Eigen::AMDOrdering<int>>(shifted);
+}
+
+SparseMat SymmetricPart(const SparseMat& K) { return 0.5 * (K + SparseMat(K.transpose())); }
+
 }  // namespace
 
 int CountEigenvaluesBelow(const SparseMat& K, const SparseMat& M, double sigma) {
-  SparseMat shifted = SparseMat(0.5 * (K + SparseMat(K.transpose()))) - sigma * M;
-  shifted.makeCompressed();
-  if (shifted.rows() == 0) return 0;
-  // The ordering rule of linear_solver.hpp: a narrow band in its own order, any other by AMD.
-  const bool narrow = static_cast<double>(shifted.rows()) * static_cast<double>(HalfBandwidth(shifted)) <=
-                      8.0 * static_cast<double>(shifted.nonZeros());
-  return narrow ? NegativePivots<Eigen::NaturalOrdering<int>>(shifted)
-                : NegativePivots<Eigen::AMDOrdering<int>>(shifted);
+  return NegativePivotsOfShifted(SymmetricPart(K), M, sigma);
+}
+
+int CountEigenvaluesBetween(const SparseMat& K, const SparseMat& M, double lowest, double highest) {
+  const SparseMat symmetric = SymmetricPart(K);
+  const int below_highest = NegativePivotsOfShifted(symmetric, M, highest);
+  const int below_lowest = NegativePivotsOfShifted(symmetric, M, lowest);
+  return below_highest >= 0 && below_lowest >= 0 ? below_highest - below_lowest : -1;
 }
 
 }  // namespace drillflex::solvers

@@ -15,4 +15,8 @@ namespace drillflex::solvers {
 // σ on an eigenvalue.
 int CountEigenvaluesBelow(const SparseMat& K, const SparseMat& M, double sigma);
 
+// The count of eigenvalues λ in [lowest, highest) (two factorizations of one symmetric part); -1 when
+// either fails.
+int CountEigenvaluesBetween(const SparseMat& K, const SparseMat& M, double lowest, double highest);
+
 }  // namespace drillflex::solvers

@@ -37,6 +37,8 @@ TEST(SpectrumCount, CountsTheEigenvaluesOfAChainBelowEveryShift) {
     const double between = 0.5 * (lambda(j) + lambda(j + 1));
     EXPECT_EQ(CountEigenvaluesBelow(stiffness, mass, between), j + 1) << j;
   }
+  // A band from between λ_3 and λ_4 to between λ_20 and λ_21 holds λ_4 … λ_20: 17 of them.
+  EXPECT_EQ(CountEigenvaluesBetween(stiffness, mass, 0.5 * (lambda(3) + lambda(4)), 0.5 * (lambda(20) + lambda(21))), 17);
 }
 
 TEST(SpectrumCount, AnUnsymmetricStiffnessIsCountedByItsSymmetricPart) {
