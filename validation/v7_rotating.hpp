@@ -1,6 +1,5 @@
 // V7's references (validation.md; the derivation in torque_drag_test.cpp's header) and the check of
-// a rotating off-bottom static case against them, shared by the 1000 ft case (label `validation`)
-// and the 10,000 ft one (label `slow-validation`).
+// a rotating off-bottom static case against them, shared by the 10,000 ft case and the 1000 ft one.
 #pragma once
 
 #include <cmath>

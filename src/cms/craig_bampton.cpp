@@ -340,6 +340,19 @@ ReducedBody Reduce(const fe::BodyFeModel& model, const ReductionOptions& options
   body.modal_geometric_stiffness = u.transpose() * (model.geometric_stiffness * u);
   body.modal_geometric_stiffness =
       0.5 * (body.modal_geometric_stiffness + body.modal_geometric_stiffness.transpose()).eval();
+  // The turn about x (ReducedBody::twist_generator): S and E_⊥ act on each node's (u, v, w) and
+  // (θx, θy, θz) alike.
+  MatX turned = MatX::Zero(u.rows(), u.cols()), across = MatX::Zero(u.rows(), u.cols());
+  for (Eigen::Index node = 0; node < u.rows() / fe::kDofPerNode; ++node) {
+    for (const Eigen::Index first : {fe::kDofPerNode * node, fe::kDofPerNode * node + 3}) {
+      turned.row(first + 1) = -u.row(first + 2);  // e_x × (a, b, c) = (0, −c, b)
+      turned.row(first + 2) = u.row(first + 1);
+      across.row(first + 1) = u.row(first + 1);
+      across.row(first + 2) = u.row(first + 2);
+    }
+  }
+  body.twist_generator = mu.transpose() * turned;
+  body.transverse_projection = mu.transpose() * across;
   body.rigid_mass = rigid_fields.transpose() * (model.mass * rigid_fields);
   body.rigid_flexible_mass = rigid_fields.transpose() * mu;
   body.mode_shapes = std::move(u);

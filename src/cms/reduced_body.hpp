@@ -51,6 +51,14 @@ struct ReducedBody {
   MatX modal_damping;              // D_ff = diag(2 ζ_s ω_j)
   MatX modal_mass;                 // M_ff = Uᵀ M U with the reduction's own M (identity)
   MatX modal_geometric_stiffness;  // K_G,ff = Uᵀ K_G U per unit axial force (tension +), 1/m
+  // The body's shape turned about its x axis, in modal coordinates: a nodal field turned by φ,
+  // R_x(φ) = E_x + cos φ E_⊥ + sin φ S (S u = e_x × u on each node's translation and rotation, E_⊥
+  // the projection across x), is η ↦ G(φ) η = η − (1 − cos φ) P_⊥ η + sin φ J η, with
+  // J = Uᵀ M S U and P_⊥ = Uᵀ M E_⊥ U (the mass-weighted projections; Uᵀ M U = I). Exact when the
+  // modes span a subspace closed under the turn (an axisymmetric body with both modes of each
+  // bending pair kept).
+  MatX twist_generator;        // J, n_f × n_f
+  MatX transverse_projection;  // P_⊥, n_f × n_f
 
   // Consistent inertia at η = 0 from the reduction's mass M. Rigid coordinates (t, θ): node k
   // moves by t + θ × ρ_k and rotates by θ (fe::RigidBodyFields), about the body origin.

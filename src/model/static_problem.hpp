@@ -18,7 +18,8 @@ class StaticModelProblem : public solvers::StaticProblem {
 
   int num_positions() const override { return model_.num_positions(); }
   int num_velocities() const override { return model_.num_velocities(); }
-  VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
+  // Twists keep the bodies' shapes (SystemModel::IncrementKeepingShape).
+  VecX Increment(const VecX& q, const VecX& dv) const override { return model_.IncrementKeepingShape(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
     return model_.Residual(t, q, v, a, load_factor_);
   }
@@ -35,6 +36,7 @@ class StaticModelProblem : public solvers::StaticProblem {
     return model_.LargestLateralNodeTranslation(q, dv);
   }
   VecX StateResolution(const VecX& q) const override { return model_.StateResolution(q); }
+  std::string DescribeCoordinate(int index) const override { return model_.DescribeCoordinate(index); }
   double load_factor() const { return load_factor_; }
 
  private:

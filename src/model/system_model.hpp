@@ -35,6 +35,16 @@ class SystemModel {
 
   VecX ReferencePositions() const;
   VecX Increment(const VecX& q, const VecX& dv) const;
+  // The same to first order (the same derivative at dv = 0, so the same tangent matrices), but a
+  // body's turn φ about its own axis (the x part of its frame rotation δθ) moves none of its points:
+  // the frame is tilted by the rest of δθ first and then turned about its new axis,
+  // A ← A exp(δθ_⊥) Rx(φ), and the modes keep the shape they held, η ← G(−φ)(η + φ J η + δη)
+  // (cms::ReducedBody::twist_generator). Plain Increment turns the bending with the frame (an
+  // error of ½φ²|J²η|) and tilts about an axis turned by ~φ/2, errors the stiff couplings amplify:
+  // a long rotating string twists by radians (V7's 10,000 ft pipe: 21 rad at the bit), and Newton's
+  // steps of tenths of a radian there then failed. For the static solver; the time integrator
+  // keeps Increment.
+  VecX IncrementKeepingShape(const VecX& q, const VecX& dv) const;
   // One rounding unit of each coordinate of q, as an increment (solvers::StaticProblem::
   // StateResolution): ε·max(|Δr|∞, L) for a frame's displacement (added to node offsets up to the
   // body length L), ε for its rotation (a unit quaternion's
@@ -61,6 +71,9 @@ class SystemModel {
   void FillState(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v, double t,
                  double load_factor, ElementState& state) const;
   int IndexOf(const Body* body) const;
+  // Where velocity coordinate `index` sits, for messages: its body, the body's span from the bit
+  // and the coordinate's kind (frame translation or rotation, or mode j).
+  std::string DescribeCoordinate(int index) const;
 
   // The body and node at a distance s from the bit (the nearest node; at a joint, the upper body).
   std::pair<int, int> NodeAt(double s) const;

@@ -24,7 +24,16 @@ struct StepOutcome {
   int iterations = 0;
   std::vector<double> history;
   std::string reason;  // why it failed
+  std::string largest;  // the largest residual entry at residual_norm and where (LargestEntry)
 };
+
+// The largest entry of a residual and where it sits (StaticProblem::DescribeCoordinate).
+std::string LargestEntry(const StaticProblem& problem, const VecX& residual) {
+  if (residual.size() == 0 || !residual.allFinite()) return "no finite residual";
+  Eigen::Index row = 0;
+  const double largest = residual.cwiseAbs().maxCoeff(&row);
+  return fmt::format("largest {:.3e} at {}", largest, problem.DescribeCoordinate(static_cast<int>(row)));
+}
 
 // Newton iterations at the load factor currently set on the problem.
 class NewtonStepper {
@@ -241,6 +250,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
     }
     const double norm = residual.norm();
     out.residual_norm = norm;
+    out.largest = LargestEntry(problem_, residual);
     out.history.push_back(norm);
     if (first_norm < 0.0) first_norm = norm;
     if (norm <= tolerance_) {
@@ -311,12 +321,13 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
       return out;
     }
     if (options_.log) {
-      options_.log(fmt::format("  Newton {:3d}: |R| {:.4e} N -> {:.4e} N, step {:.3e}{}", out.iterations, norm,
+      options_.log(fmt::format("  Newton {:3d}: |R| {:.4e} N -> {:.4e} N, step {:.3e}{}; {}", out.iterations, norm,
                                search.residual.allFinite() ? search.residual.norm() : -1.0,
                                search.step * problem_.StepLength(out.q, dv),
                                options_.mass_shift ? fmt::format(" (shift {:.3e})", shift)
                                : options_.max_increment > 0.0 ? fmt::format(" (trust radius {:.3e})", radius)
-                                                              : ""));
+                                                              : "",
+                               LargestEntry(problem_, search.residual)));
     }
     fresh = false;
     out.q = std::move(search.q);
@@ -394,9 +405,9 @@ std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place
   }
   return fmt::format(
       "static Newton solver failed {}: {}; residual norm {:.4g} N against the tolerance {:.4g} N "
-      "(force scale {:.4g} N) after {} iterations in this step, {} in all",
+      "(force scale {:.4g} N{}) after {} iterations in this step, {} in all",
       where, outcome.reason, outcome.residual_norm, tolerance, scale,
-      outcome.iterations, total_iterations);
+      outcome.largest.empty() ? std::string() : fmt::format("; {}", outcome.largest), outcome.iterations, total_iterations);
 }
 
 // How much |R| at q changes when every coordinate moves by one rounding unit

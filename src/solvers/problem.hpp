@@ -9,6 +9,8 @@
 // A position increment dv (same size as v) is applied with the Lie-group update q ⊕ dv.
 #pragma once
 
+#include <string>
+
 #include "core/types.hpp"
 
 namespace drillflex::solvers {
@@ -65,6 +67,10 @@ class StaticProblem : public Problem {
   // say where the system is (a position 3 km from the origin only to ~4.5e-13 m). The solver
   // measures with it the round-off floor of the residual (SolveStatic). Empty: not known, no floor.
   virtual VecX StateResolution(const VecX& /*q*/) const { return {}; }
+
+  // Where coordinate `index` of v (or a residual row) sits in the problem, for messages: e.g. the
+  // body and its distance from the bit. Default: the index alone.
+  virtual std::string DescribeCoordinate(int index) const { return "coordinate " + std::to_string(index); }
 };
 
 // cK·K + cD·D + cM·M of `problem` by central differences of its residual: the position

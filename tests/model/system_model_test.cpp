@@ -6,6 +6,8 @@
 
 #include <random>
 
+#include <fmt/format.h>
+
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
@@ -41,6 +43,17 @@ TEST(SystemModelThreads, ResidualAndIterationMatrixIdenticalOnOneAndTwoThreads) 
   EXPECT_GT(r1.norm(), 0.0);
   ASSERT_EQ(m1.nonZeros(), m2.nonZeros());
   for (Eigen::Index k = 0; k < m1.nonZeros(); ++k) ASSERT_EQ(m1.valuePtr()[k], m2.valuePtr()[k]) << "entry " << k;
+}
+
+// Solver messages say where a residual row sits: the body, its span from the bit, the coordinate.
+TEST(SystemModel, DescribeCoordinateNamesTheBodyAndTheCoordinate) {
+  cms::ReductionCache cache;
+  const BuiltModel built = BuildSystemModel(testing::RodInput(2, 4, 3), cache);
+  const Body& upper = built.system.bodies()[1];
+  EXPECT_EQ(built.system.DescribeCoordinate(upper.v_offset + 4), "body 1 (2.54–5.08 m from the bit), frame rotation y");
+  EXPECT_EQ(built.system.DescribeCoordinate(upper.v_offset + 6 + 2), "body 1 (2.54–5.08 m from the bit), mode 3");
+  EXPECT_EQ(built.system.DescribeCoordinate(1), "body 0 (0.00–2.54 m from the bit), frame translation y");
+  EXPECT_EQ(built.system.DescribeCoordinate(built.system.num_velocities()), fmt::format("coordinate {}", built.system.num_velocities()));
 }
 
 }  // namespace
