@@ -58,7 +58,7 @@ bool BlockTridiagonalLu::Analyze(Eigen::Index rows, Eigen::Index cols,
   }
   storage_.assign(size, Complex(0.0, 0.0));
   coupled_.resize(blocks - 1);
-  factors_.assign(blocks, Eigen::PartialPivLU<ComplexMat>());
+  factors_.assign(blocks, SmallComplexLu());
   for (std::size_t k = 0; k + 1 < blocks; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k + 1));
   analyzed_ = true;
   return true;

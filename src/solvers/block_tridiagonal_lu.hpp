@@ -3,7 +3,7 @@
 // coordinates numbered body by body, couples each body only with its two neighbours (the coupling
 // elements), so with D_k the diagonal blocks and L_k, U_k the couplings below and above,
 //   S_0 = D_0,   X_k = S_k⁻¹ U_k,   S_{k+1} = D_{k+1} − L_k X_k,
-// each S_k factorized by dense LU with partial pivoting (Eigen::PartialPivLU). Solve: forward
+// each S_k factorized by dense LU with partial pivoting (solvers/small_complex_lu.hpp). Solve: forward
 // w_k = S_k⁻¹ (f_k − L_{k−1} w_{k−1}), back x_k = w_k − X_k x_{k+1}.
 //
 // Why: the symbolic work of a general sparse LU (depth-first searches, supernode bookkeeping) costs
@@ -22,12 +22,14 @@
 // misses; smallest_pivot() reports the smallest |u_jj| of all the S_k.
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/LU>
-#include <Eigen/SparseCore>
 #include <complex>
 #include <utility>
 #include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "solvers/small_complex_lu.hpp"
 
 namespace drillflex::solvers {
 
@@ -87,7 +89,7 @@ class BlockTridiagonalLu {
   std::vector<Complex> storage_;  // D_0, U_0, L_0, D_1, U_1, L_1, …, D_N (each column major)
   std::vector<std::size_t> diagonal_at_, upper_at_, lower_at_;  // where D_k, U_k, L_k begin
   std::vector<std::size_t> slot_offsets_;
-  std::vector<Eigen::PartialPivLU<ComplexMat>> factors_;  // LU of S_k
+  std::vector<SmallComplexLu> factors_;  // LU of S_k
   std::vector<ComplexMat> coupled_;                     // X_k = S_k⁻¹ U_k
   ComplexMat schur_;                                    // S_k being formed
   double smallest_pivot_ = 0.0;
