@@ -389,17 +389,30 @@ struct FailurePlace {
   double load_factor_converged = 0.0;
   double step = 1.0;
   int rejected_steps = 0;
+  bool after_converged_step = false;  // the budget ran out right after a step that converged
+  bool budget_spent = false;          // the budget ran out in a step (not the step cut too small)
 };
 
 std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place,
                            const NewtonOptions& options, double scale, double tolerance, int total_iterations) {
+  if (place.after_converged_step) {
+    // Not a step that failed: the continuation was still converging its steps when it ran out.
+    return fmt::format(
+        "static Newton solver stopped at load factor {:.6g}, the last it converged (load step {:.3g}, {} "
+        "cuts so far): {}; that step ended at a residual norm of {:.4g} N within its tolerance {:.4g} N "
+        "(force scale {:.4g} N) after {} iterations, {} in all",
+        place.load_factor_converged, place.step, place.rejected_steps, outcome.reason, outcome.residual_norm,
+        tolerance, scale, outcome.iterations, total_iterations);
+  }
   std::string where;
   if (options.load_stepping.enabled) {
-    where = fmt::format(
-        "at load factor {:.6g} (last converged {:.6g}; load step {:.3g} cut below the minimum "
-        "{:.3g} after {} cuts)",
-        place.load_factor_tried, place.load_factor_converged, place.step,
-        options.load_stepping.min_step, place.rejected_steps);
+    where = place.budget_spent
+                ? fmt::format("at load factor {:.6g} (last converged {:.6g}; load step {:.3g}, {} cuts so far)",
+                              place.load_factor_tried, place.load_factor_converged, place.step, place.rejected_steps)
+                : fmt::format("at load factor {:.6g} (last converged {:.6g}; load step {:.3g} cut below the minimum "
+                              "{:.3g} after {} cuts)",
+                              place.load_factor_tried, place.load_factor_converged, place.step,
+                              options.load_stepping.min_step, place.rejected_steps);
   } else {
     where = "at load factor 1 (load stepping off)";
   }
@@ -477,7 +490,7 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
         last_failure = std::move(outcome);
         last_failure.converged = false;
         last_failure.reason = fmt::format("the budget of {} iterations in all is spent", options.max_total_iterations);
-        place = {load_factor, load_factor, step, result.rejected_steps};
+        place = {load_factor, load_factor, step, result.rejected_steps, true};
         failed = true;
         break;
       }
@@ -490,6 +503,7 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
     place = {trial, load_factor, trial_step, result.rejected_steps};
     step = 0.5 * trial_step;
     const bool over_budget = options.max_total_iterations > 0 && result.iterations >= options.max_total_iterations;
+    place.budget_spent = over_budget;
     if (over_budget) {
       outcome.reason = fmt::format("{}; the budget of {} iterations in all is spent", outcome.reason,
                                    options.max_total_iterations);

@@ -17,6 +17,7 @@ namespace drillflex::solvers {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using testing::ScalarProblem;
 using testing::SpringChain;
 using testing::VonMisesTruss;
@@ -109,6 +110,8 @@ TEST(SolveStatic, AnIterationBudgetEndsALongContinuationWithAMessage) {
     FAIL() << "expected a SolverError";
   } catch (const SolverError& error) {
     EXPECT_THAT(std::string(error.what()), HasSubstr("the budget of 8 iterations in all is spent"));
+    // The step was not cut below the minimum step: the message does not say so.
+    EXPECT_THAT(std::string(error.what()), Not(HasSubstr("cut below the minimum")));
   }
   stepping.throw_on_failure = false;
   const StaticResult stopped = SolveStatic(chain, VecX::Zero(n), stepping);
@@ -116,6 +119,27 @@ TEST(SolveStatic, AnIterationBudgetEndsALongContinuationWithAMessage) {
   EXPECT_LT(stopped.load_factor, 1.0);
   EXPECT_LE(stopped.iterations, 8 + stepping.max_iterations);
   EXPECT_TRUE(stopped.q.allFinite());
+}
+
+// A budget that runs out right after a load step converged: the message says where the
+// continuation stopped and that its last step converged, not that a step failed.
+TEST(SolveStatic, ABudgetSpentAfterAConvergedStepSaysTheStepConverged) {
+  const int n = 4;
+  SpringChain linear(n, 1.0, 0.0, 0.3);  // linear springs: one Newton iteration a load step
+  NewtonOptions stepping = PlainNewton();
+  stepping.load_stepping.enabled = true;
+  stepping.load_stepping.initial_step = 0.25;
+  stepping.load_stepping.max_step = 0.25;
+  stepping.max_total_iterations = 1;
+  try {
+    SolveStatic(linear, VecX::Zero(n), stepping);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& error) {
+    const std::string message = error.what();
+    EXPECT_THAT(message, HasSubstr("stopped at load factor 0.25, the last it converged"));
+    EXPECT_THAT(message, HasSubstr("the budget of 1 iterations in all is spent"));
+    EXPECT_THAT(message, Not(HasSubstr("failed")));
+  }
 }
 
 TEST(SolveStatic, FollowsAVonMisesTrussUpToNearItsLimitPoint) {
