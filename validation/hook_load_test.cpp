@@ -1,7 +1,7 @@
 // V7 of validation.md in time (v7_hook_load.hpp): 1000 ft of the V7 pipe pulled out and run in at
 // 0.5 ft/s; Johancsik's hook loads computed for that length, w_b L (cos I ± μ sin I) = 11,839 and
 // 4,684 lbf, within 3 %. The 10,000 ft string of validation.md (118,388 and 46,841 lbf) is
-// hook_load_slow_test.cpp.
+// hook_load_10000_ft_test.cpp.
 #include "v7_hook_load.hpp"
 
 namespace drillflex::validation {

@@ -1,5 +1,5 @@
 // V3 of validation.md, the Wu rod-in-pipe experiment (the paper's test 3.2) on to the full helix
-// (v3-wu-rod/full-helix.yaml; label slow-validation, ~15 s): the onset case's rod (16 bodies of
+// (v3-wu-rod/full-helix.yaml; label `validation`, ~5 s): the onset case's rod (16 bodies of
 // 0.25 m), wall friction 0.2, pushed at 0.04 mm/s to 0.8 mm (49 N). From transient.csv:
 //  * the helical run of a sample: the longest stretch of consecutive probes (0.1 m apart) on the
 //    wall whose contact direction turns the same way from each to the next; the helix is full at the
@@ -47,7 +47,7 @@ HelicalRun LongestHelicalRun(const PushRun& run, std::size_t i) {
   return best;
 }
 
-TEST(V3WuRodSlow, LoadAtFullHelixWithin10PercentOf44N) {
+TEST(V3WuRod, LoadAtFullHelixWithin10PercentOf44N) {
   const auto results = RunCase("transient", "v3-wu-rod/full-helix.yaml");
   ASSERT_TRUE(results.contains("transient"));
   const PushRun run = ReadRun("full-helix", 4e-5);  // pushed at 0.04 mm/s
