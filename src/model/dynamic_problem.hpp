@@ -23,6 +23,13 @@ class DynamicModelProblem final : public solvers::Problem {
                             double cM) const override {
     return model_.IterationMatrix(t, q, v, a, 1.0, cK, cD, cM);
   }
+  // The bodies, numbered along the string (each coupled only to its neighbours).
+  std::vector<Eigen::Index> CoordinateBlocks() const override {
+    std::vector<Eigen::Index> starts;
+    for (const Body& body : model_.bodies()) starts.push_back(body.v_offset);
+    starts.push_back(model_.num_velocities());
+    return starts;
+  }
 
  private:
   const SystemModel& model_;

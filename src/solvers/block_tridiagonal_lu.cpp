@@ -10,7 +10,8 @@
 
 namespace drillflex::solvers {
 
-bool BlockTridiagonalLu::Analyze(Eigen::Index rows, Eigen::Index cols,
+template <typename Scalar>
+bool BlockTridiagonalLuOf<Scalar>::Analyze(Eigen::Index rows, Eigen::Index cols,
                                  const std::vector<std::pair<Eigen::Index, Eigen::Index>>& entries,
                                  std::vector<Eigen::Index> starts) {
   analyzed_ = false;
@@ -56,20 +57,28 @@ bool BlockTridiagonalLu::Analyze(Eigen::Index rows, Eigen::Index cols,
       return false;
     }
   }
-  storage_.assign(size, Complex(0.0, 0.0));
+  storage_.assign(size, Scalar(0.0));
   coupled_.resize(blocks - 1);
-  factors_.assign(blocks, SmallComplexLu());
+  factors_.assign(blocks, SmallLu<Scalar>());
   for (std::size_t k = 0; k + 1 < blocks; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k + 1));
   analyzed_ = true;
   return true;
 }
 
-std::pair<double, double> BlockTridiagonalLu::Norms() const {
+namespace {
+
+double Magnitude(double a) { return std::abs(a); }
+double Magnitude(const std::complex<double>& z) { return std::abs(z.real()) + std::abs(z.imag()); }
+
+}  // namespace
+
+template <typename Scalar>
+std::pair<double, double> BlockTridiagonalLuOf<Scalar>::Norms() const {
   double row_sum_norm = 0.0, largest2 = 0.0;  // max |a|² (no hypot per entry)
   Eigen::VectorXd rows;
   auto add = [&](const ConstBlock& block) {
     for (Eigen::Index j = 0; j < block.cols(); ++j) {
-      rows += (block.col(j).real().cwiseAbs() + block.col(j).imag().cwiseAbs());
+      rows += block.col(j).unaryExpr([](const Scalar& a) { return Magnitude(a); });
       largest2 = std::max(largest2, block.col(j).cwiseAbs2().maxCoeff());
     }
   };
@@ -83,17 +92,19 @@ std::pair<double, double> BlockTridiagonalLu::Norms() const {
   return {row_sum_norm, std::sqrt(largest2)};
 }
 
-void BlockTridiagonalLu::Factorize(const ComplexSparse& matrix) {
+template <typename Scalar>
+void BlockTridiagonalLuOf<Scalar>::Factorize(const Sparse& matrix) {
   if (!analyzed_ || matrix.nonZeros() != static_cast<Eigen::Index>(slot_offsets_.size()) || !matrix.isCompressed()) {
     throw LogicError(fmt::format("BlockTridiagonalLu::Factorize: the matrix ({} entries) does not have the analysed "
                                  "pattern ({} entries)", matrix.nonZeros(), slot_offsets_.size()));
   }
-  const Complex* values = matrix.valuePtr();
+  const Scalar* values = matrix.valuePtr();
   for (std::size_t s = 0; s < slot_offsets_.size(); ++s) storage_[slot_offsets_[s]] = values[s];
   Factorize();
 }
 
-void BlockTridiagonalLu::Factorize() {
+template <typename Scalar>
+void BlockTridiagonalLuOf<Scalar>::Factorize() {
   if (!analyzed_) throw LogicError("BlockTridiagonalLu::Factorize before a successful Analyze");
   double smallest2 = std::numeric_limits<double>::infinity();  // min |u_jj|², no hypot per pivot
   auto factor = [&](std::size_t k, const auto& schur) {
@@ -103,7 +114,8 @@ void BlockTridiagonalLu::Factorize() {
   };
   factor(0, Diagonal(0));
   for (std::size_t k = 0; k + 1 < diagonal_at_.size(); ++k) {
-    coupled_[k] = factors_[k].solve(Upper(k));
+    coupled_[k] = Upper(k);
+    factors_[k].solveInPlace(coupled_[k]);
     schur_ = Diagonal(k + 1);
     schur_.noalias() -= Lower(k).lazyProduct(coupled_[k]);
     factor(k + 1, schur_);
@@ -111,12 +123,13 @@ void BlockTridiagonalLu::Factorize() {
   smallest_pivot_ = std::sqrt(smallest2);
 }
 
-BlockTridiagonalLu::ComplexMat BlockTridiagonalLu::Solve(const ComplexMat& rhs) const {
+template <typename Scalar>
+typename BlockTridiagonalLuOf<Scalar>::Matrix BlockTridiagonalLuOf<Scalar>::Solve(const Matrix& rhs) const {
   if (!analyzed_ || rhs.rows() != starts_.back()) {
     throw LogicError("BlockTridiagonalLu::Solve: no factorization, or a right-hand side of the wrong size");
   }
-  ComplexMat x = rhs;
-  ComplexMat block;
+  Matrix x = rhs;
+  Matrix block;
   const std::size_t blocks = diagonal_at_.size();
   for (std::size_t k = 0; k < blocks; ++k) {  // w_k = S_k⁻¹ (f_k − L_{k−1} w_{k−1})
     block = x.middleRows(starts_[k], BlockSize(k));
@@ -129,9 +142,26 @@ BlockTridiagonalLu::ComplexMat BlockTridiagonalLu::Solve(const ComplexMat& rhs) 
   return x;
 }
 
-BlockTridiagonalLu::ComplexMat BlockTridiagonalLu::Multiply(const ComplexMat& x) const {
+template <typename Scalar>
+void BlockTridiagonalLuOf<Scalar>::SolveInPlace(Vector& x) const {
+  if (!analyzed_ || x.size() != starts_.back()) {
+    throw LogicError("BlockTridiagonalLu::SolveInPlace: no factorization, or a right-hand side of the wrong size");
+  }
+  const std::size_t blocks = diagonal_at_.size();
+  for (std::size_t k = 0; k < blocks; ++k) {  // w_k = S_k⁻¹ (f_k − L_{k−1} w_{k−1})
+    auto block = x.segment(starts_[k], BlockSize(k));
+    if (k > 0) block.noalias() -= Lower(k - 1) * x.segment(starts_[k - 1], BlockSize(k - 1));
+    factors_[k].solveInPlace(block);
+  }
+  for (std::size_t k = blocks - 1; k-- > 0;) {  // x_k = w_k − X_k x_{k+1}
+    x.segment(starts_[k], BlockSize(k)).noalias() -= coupled_[k] * x.segment(starts_[k + 1], BlockSize(k + 1));
+  }
+}
+
+template <typename Scalar>
+typename BlockTridiagonalLuOf<Scalar>::Matrix BlockTridiagonalLuOf<Scalar>::Multiply(const Matrix& x) const {
   if (!analyzed_ || x.rows() != starts_.back()) throw LogicError("BlockTridiagonalLu::Multiply: wrong size or no pattern");
-  ComplexMat y(x.rows(), x.cols());
+  Matrix y(x.rows(), x.cols());
   const std::size_t blocks = diagonal_at_.size();
   for (std::size_t k = 0; k < blocks; ++k) {
     auto row = y.middleRows(starts_[k], BlockSize(k));
@@ -141,5 +171,8 @@ BlockTridiagonalLu::ComplexMat BlockTridiagonalLu::Multiply(const ComplexMat& x)
   }
   return y;
 }
+
+template class BlockTridiagonalLuOf<double>;
+template class BlockTridiagonalLuOf<std::complex<double>>;
 
 }  // namespace drillflex::solvers

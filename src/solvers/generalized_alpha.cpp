@@ -26,7 +26,9 @@ GeneralizedAlphaParameters GeneralizedAlphaParameters::FromSpectralRadius(double
 GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Problem& problem, const GeneralizedAlphaOptions& options)
     : problem_(problem),
       options_(options),
-      parameters_(GeneralizedAlphaParameters::FromSpectralRadius(options.rho_infinity)) {
+      parameters_(GeneralizedAlphaParameters::FromSpectralRadius(options.rho_infinity)),
+      lu_(IterationMatrixLuOptions{options.dense_limit, options.band_storage_limit}) {
+  if (options_.block_tridiagonal) lu_.SetBlocks(problem_.CoordinateBlocks());
   if (!(options_.initial_step > 0.0) || !(options_.min_step > 0.0) || !(options_.max_step >= options_.min_step)) {
     throw LogicError("generalized-α: the step sizes must satisfy 0 < min_step ≤ max_step and initial_step > 0");
   }
@@ -127,23 +129,7 @@ bool GeneralizedAlphaIntegrator::Factorize(double h, std::string& reason) {
   const double cM = (1.0 - p.alpha_m) / ((1.0 - p.alpha_f) * p.beta * h * h);
   try {
     const SparseMat matrix = problem_.IterationMatrix(state_.time + h, trial_q_, trial_v_, trial_acceleration_, 1.0, cD, cM);
-    dense_ = matrix.rows() <= options_.dense_limit;
-    if (dense_) {
-      dense_lu_.compute(MatX(matrix));
-      const auto pivots = dense_lu_.matrixLU().diagonal();
-      if (!pivots.allFinite() || pivots.cwiseAbs().minCoeff() <= 1e-14 * pivots.cwiseAbs().maxCoeff()) {
-        throw SolverError(fmt::format("the dense {}x{} matrix is singular or not finite", matrix.rows(), matrix.cols()));
-      }
-    } else {
-      const auto [lower, upper] = BandWidths(matrix);
-      banded_ = static_cast<double>(2 * lower + upper + 1) * static_cast<double>(matrix.rows()) <=
-                options_.band_storage_limit * static_cast<double>(matrix.nonZeros());
-      if (banded_) {
-        band_lu_.Factorize(matrix);
-      } else {
-        solver_.Factorize(matrix);
-      }
-    }
+    lu_.Factorize(matrix);
   } catch (const SolverError& e) {
     reason = fmt::format("the iteration matrix could not be factorized ({})", e.what());
     has_factorization_ = false;
@@ -188,14 +174,8 @@ GeneralizedAlphaIntegrator::Attempt GeneralizedAlphaIntegrator::Iterate(double h
     }
     VecX correction;
     try {
-      if (dense_) {
-        correction = -dense_lu_.solve(residual);
-      } else if (banded_) {
-        correction = -residual;
-        band_lu_.SolveInPlace(correction);
-      } else {
-        correction = -solver_.Solve(residual);
-      }
+      correction = -residual;
+      lu_.SolveInPlace(correction);
       if (!correction.allFinite()) throw SolverError("the correction is not finite");
     } catch (const SolverError& e) {
       attempt.reason = fmt::format("the linear solve failed ({})", e.what());

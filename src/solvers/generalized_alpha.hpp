@@ -52,11 +52,8 @@
 #include <limits>
 #include <string>
 
-#include <Eigen/LU>
-
 #include "core/types.hpp"
-#include "solvers/band_lu.hpp"
-#include "solvers/linear_solver.hpp"
+#include "solvers/iteration_matrix_lu.hpp"
 #include "solvers/problem.hpp"
 
 namespace drillflex::solvers {
@@ -87,8 +84,11 @@ struct GeneralizedAlphaOptions {
   // Up to this many velocity coordinates the iteration matrix is factorized dense (partial-pivot
   // LU): for a 72-coordinate cantilever a solve takes ~2 µs against ~12 µs sparse.
   int dense_limit = 200;
-  // Above it, a matrix whose LAPACK band storage ((2 kl + ku + 1) n values) is at most this many
-  // times its entries is factorized banded (solvers/band_lu.hpp), any other by SparseLinearSolver.
+  // Above it: block tridiagonal on the problem's CoordinateBlocks if the matrix has that shape;
+  // otherwise a matrix whose LAPACK band storage ((2 kl + ku + 1) n values) is at most this many
+  // times its entries banded (solvers/band_lu.hpp), any other by SparseLinearSolver
+  // (solvers/iteration_matrix_lu.hpp).
+  bool block_tridiagonal = true;
   double band_storage_limit = 4.0;
   double reuse_contraction = 0.3;   // an iteration contracting less than this refactorizes
   double refactor_step_ratio = 0.25;  // |h/h_factorized − 1| above this refactorizes
@@ -164,11 +164,7 @@ class GeneralizedAlphaIntegrator {
   GeneralizedAlphaParameters parameters_;
   GeneralizedAlphaState state_;
   GeneralizedAlphaStatistics statistics_;
-  SparseLinearSolver solver_;           // above dense_limit coordinates, not banded
-  BandLuSolver band_lu_;                // above dense_limit coordinates, banded
-  Eigen::PartialPivLU<MatX> dense_lu_;  // up to dense_limit coordinates
-  bool dense_ = false;
-  bool banded_ = false;
+  IterationMatrixLu lu_;
   bool has_factorization_ = false;
   double factorized_step_ = 0.0;
   double step_ = 0.0;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/types.hpp"
 
@@ -41,6 +42,12 @@ class Problem {
   // True when the iteration matrix may be reused between iterations and steps (it does not
   // depend, or barely depends, on the state: e.g. a linear problem). A hint, never a duty.
   virtual bool CanReuseIterationMatrix() const { return false; }
+
+  // Blocks of v's coordinates (the first of each, ascending from 0, then num_velocities) such that
+  // the iteration matrix couples every block only with the one before and the one after it (a
+  // string's bodies, joined to their neighbours): a hint for a block-tridiagonal factorization,
+  // which the solver checks against the matrix's pattern. Empty: none.
+  virtual std::vector<Eigen::Index> CoordinateBlocks() const { return {}; }
 };
 
 // A problem for the static Newton solver: a load factor λ in [0, 1] scales the applied loads

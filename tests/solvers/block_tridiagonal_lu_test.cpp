@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/types.hpp"
 #include "solvers/harmonic.hpp"
+#include "random_block_tridiagonal.hpp"
 
 namespace drillflex::solvers {
 namespace {
@@ -23,26 +24,8 @@ namespace {
 using Complex = std::complex<double>;
 using ComplexSparse = Eigen::SparseMatrix<Complex>;
 
-// A random block-tridiagonal matrix on the blocks `starts`, every block dense; the diagonal blocks
-// get `shift` on their diagonal.
 ComplexSparse RandomBlockTridiagonal(const std::vector<Eigen::Index>& starts, Complex shift, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  std::vector<Eigen::Triplet<Complex>> entries;
-  const std::size_t blocks = starts.size() - 1;
-  for (std::size_t bi = 0; bi < blocks; ++bi) {
-    for (std::size_t bj = bi > 0 ? bi - 1 : 0; bj < std::min(blocks, bi + 2); ++bj) {
-      for (Eigen::Index i = starts[bi]; i < starts[bi + 1]; ++i) {
-        for (Eigen::Index j = starts[bj]; j < starts[bj + 1]; ++j) {
-          entries.emplace_back(i, j, Complex(uniform(random), uniform(random)) + (i == j ? shift : 0.0));
-        }
-      }
-    }
-  }
-  ComplexSparse matrix(starts.back(), starts.back());
-  matrix.setFromTriplets(entries.begin(), entries.end());
-  matrix.makeCompressed();
-  return matrix;
+  return testing::RandomBlockTridiagonal<Complex>(starts, shift, seed);
 }
 
 TEST(BlockTridiagonalLu, MatchesADenseLuOnBlocksOfDifferentSizes) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <vector>
 
 #include "core/so3.hpp"
 #include "core/types.hpp"
@@ -28,6 +29,10 @@ class LinearOscillator final : public Problem {
     return MatX(cK * stiffness_ + cD * damping_ + cM * mass_).sparseView();
   }
   bool CanReuseIterationMatrix() const override { return true; }
+  std::vector<Eigen::Index> CoordinateBlocks() const override { return blocks; }
+
+  // The coordinate blocks CoordinateBlocks() reports (none unless set).
+  std::vector<Eigen::Index> blocks;
 
   // ½ vᵀ M v + ½ qᵀ K q (J).
   double Energy(const VecX& q, const VecX& v) const {

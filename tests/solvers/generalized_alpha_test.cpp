@@ -409,10 +409,11 @@ TEST(GeneralizedAlpha, StepLimitStopsWithAMessage) {
 namespace drillflex::solvers {
 namespace {
 
-// The three factorizations of the iteration matrix (dense LU up to dense_limit, LAPACK's banded LU
-// above it, SparseLinearSolver for a matrix whose band is too wide) give the same motion of a
-// 40-mass spring chain with an unsymmetric (gyroscopic-like) coupling, to round-off.
-TEST(GeneralizedAlpha, DenseBandedAndSparseFactorizationsGiveTheSameMotion) {
+// The four factorizations of the iteration matrix (dense LU up to dense_limit, block tridiagonal on
+// the problem's coordinate blocks, LAPACK's banded LU, SparseLinearSolver for a matrix whose band is
+// too wide) give the same motion of a 40-mass spring chain with an unsymmetric (gyroscopic-like)
+// coupling, to round-off.
+TEST(GeneralizedAlpha, DenseBlockBandedAndSparseFactorizationsGiveTheSameMotion) {
   const int n = 40;
   MatX mass = MatX::Identity(n, n), damping = MatX::Zero(n, n), stiffness = MatX::Zero(n, n);
   for (int i = 0; i < n; ++i) {
@@ -423,11 +424,13 @@ TEST(GeneralizedAlpha, DenseBandedAndSparseFactorizationsGiveTheSameMotion) {
       damping(i + 1, i) = -3.0;
     }
   }
-  const LinearOscillator chain(mass, damping, stiffness);
-  auto run = [&](int dense_limit, double band_storage_limit) {
+  LinearOscillator chain(mass, damping, stiffness);
+  for (int k = 0; k <= 8; ++k) chain.blocks.push_back(5 * k);  // 8 blocks of 5 masses
+  auto run = [&](int dense_limit, double band_storage_limit, bool block_tridiagonal = false) {
     GeneralizedAlphaOptions options;
     options.dense_limit = dense_limit;
     options.band_storage_limit = band_storage_limit;
+    options.block_tridiagonal = block_tridiagonal;
     options.initial_step = 1e-3;
     GeneralizedAlphaIntegrator integrator(chain, options);
     integrator.Initialize(0.0, VecX::LinSpaced(n, 0.0, 0.01), VecX::Zero(n));
@@ -437,8 +440,10 @@ TEST(GeneralizedAlpha, DenseBandedAndSparseFactorizationsGiveTheSameMotion) {
   const VecX dense = run(200, 4.0);
   const VecX banded = run(0, 4.0);
   const VecX sparse = run(0, 0.0);
+  const VecX blocked = run(0, 0.0, true);
   EXPECT_GT(dense.norm(), 1e-3);  // it moved
   EXPECT_LT((banded - dense).norm(), 1e-10 * dense.norm());
+  EXPECT_LT((blocked - dense).norm(), 1e-10 * dense.norm());
   EXPECT_LT((sparse - dense).norm(), 1e-10 * dense.norm());
 }
 

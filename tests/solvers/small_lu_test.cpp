@@ -1,4 +1,4 @@
-// solvers/small_complex_lu: P A = L U with partial pivoting on |Re| + |Im|, and A⁻¹ B, against the
+// solvers/small_lu: P A = L U with partial pivoting (complex: on |Re| + |Im|), and A⁻¹ B, against the
 // matrix itself (backward error at round-off) and against Eigen's PartialPivLU.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include <Eigen/LU>
 
-#include "solvers/small_complex_lu.hpp"
+#include "solvers/small_lu.hpp"
 
 namespace drillflex::solvers {
 namespace {
