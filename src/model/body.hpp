@@ -39,6 +39,10 @@ struct Body {
   // ReferenceMassMatrix − NodalReferenceMassMatrix (cms/reduced_body.hpp): the constant
   // correction that makes the node-sum mass exact for a consistent FE mass at η = 0.
   MatX mass_correction;
+  // The mass in the body-frame velocities (Aᵀṙ, ω, η̇) at η = 0: the node sum there
+  // (cms::NodalReferenceMassMatrix) plus mass_correction, i.e. cms::ReferenceMassMatrix.
+  // (6 + n_f)², kg, kg·m, kg·m². Whoever changes the node masses recomputes it.
+  MatX reference_mass;
 
   double length() const { return reduced->length; }
   int velocity_count() const { return 6 + flexible_count; }

@@ -10,32 +10,39 @@ using so3::Skew;
 MatX BodyMassMatrix(const Body& body, const BodyPose& pose) {
   const cms::ReducedBody& reduced = *body.reduced;
   const int nf = body.flexible_count;
-  const int n = 6 + nf;
-  // Accumulate in the body-frame velocities w = (Aᵀṙ, ω, η̇), then rotate the translational rows.
-  MatX mass = MatX::Zero(n, n);
-  Eigen::Matrix<double, 3, Eigen::Dynamic> rows(3, n), weighted(3, n), rotation_rows(3, nf);
-  for (int k = 0; k < reduced.node_count(); ++k) {
-    const Mat3 node_mass = reduced.NodeTranslationalMass(k);
-    const Mat3 offset_skew = Skew(pose.NodeOffset(body, k));
-    const auto& phi = reduced.node_translation_modes[k];
-    const auto& psi = reduced.node_rotation_modes[k];
-    const Mat3& inertia = reduced.node_rotary_inertia[k];
-    // Translation: L = [I, −ũ, Φ] in w; Lᵀ m L. The 3-row products are written as lazy
-    // (coefficient-wise) products: as general matrix products they went through Eigen's blocked
-    // GEMM and its temporaries, a third of the bundled example's iteration-matrix assembly.
-    rows.leftCols<3>().setIdentity();
-    rows.middleCols<3>(3) = -offset_skew;
-    rows.rightCols(nf) = phi;
-    weighted.noalias() = node_mass.lazyProduct(rows);
-    mass.noalias() += rows.transpose().lazyProduct(weighted);
-    // Rotation: [0, I, Ψ].
-    rotation_rows.noalias() = inertia.lazyProduct(psi);
-    mass.block<3, 3>(3, 3) += inertia;
-    mass.block(3, 6, 3, nf) += rotation_rows;
-    mass.block(6, 3, nf, 3) += rotation_rows.transpose();
-    mass.block(6, 6, nf, nf).noalias() += psi.transpose().lazyProduct(rotation_rows);
+  const int nodes = reduced.node_count();
+  // In the body-frame velocities w = (Aᵀṙ, ω, η̇) the node sum Σ L_kᵀ diag(M_k, J_k) L_k, with
+  // L_k = [I, −ũ_k, Φ_k] for translation and [0, I, Ψ_k] for rotation, depends on η only through
+  // the offsets u_k = ρ_k + d_k, d_k = Φ_k η, in the ω rows and columns. So M_w = M_w(0) + ΔM with
+  // M_w(0) the exact reference mass (node sum at η = 0 plus mass_correction) and
+  //   ΔM_tω = −Σ M_k d̃_k,  ΔM_ωω = Σ (ũ_kᵀ M_k ũ_k − ρ̃_kᵀ M_k ρ̃_k),  ΔM_ωη = −Σ d̃_kᵀ M_k Φ_k,
+  // the last one product of a 3 × 6N row block with the mode shapes U (6 rows a node).
+  MatX mass = body.reference_mass;
+  if (nf > 0 && !pose.eta.isZero(0.0)) {
+    thread_local VecX displacement;
+    thread_local Eigen::Matrix<double, 3, Eigen::Dynamic> weighted;  // −d̃_kᵀ M_k per node, 0 for rotations
+    displacement.noalias() = reduced.mode_shapes * pose.eta;
+    weighted.setZero(3, 6 * nodes);
+    Mat3 translation_rotation = Mat3::Zero(), rotation_rotation = Mat3::Zero();
+    for (int k = 0; k < nodes; ++k) {
+      const Mat3 node_mass = reduced.NodeTranslationalMass(k);
+      const Mat3 reference_skew = Skew(reduced.node_positions[k]);
+      const Mat3 displacement_skew = Skew(displacement.segment<3>(6 * k));
+      const Mat3 weighted_displacement = displacement_skew.transpose() * node_mass;  // d̃ᵀ M
+      translation_rotation.noalias() -= node_mass * displacement_skew;
+      // (ρ̃ + d̃)ᵀ M (ρ̃ + d̃) − ρ̃ᵀ M ρ̃ = ρ̃ᵀ M d̃ + d̃ᵀ M ρ̃ + d̃ᵀ M d̃.
+      const Mat3 cross = reference_skew.transpose() * node_mass * displacement_skew;
+      rotation_rotation.noalias() += cross + cross.transpose() + weighted_displacement * displacement_skew;
+      weighted.middleCols<3>(6 * k) = -weighted_displacement;
+    }
+    mass.block<3, 3>(0, 3) += translation_rotation;
+    mass.block<3, 3>(3, 0) += translation_rotation.transpose();
+    mass.block<3, 3>(3, 3) += rotation_rotation;
+    Eigen::Matrix<double, 3, Eigen::Dynamic> rotation_modal(3, nf);
+    rotation_modal.noalias() = weighted.lazyProduct(reduced.mode_shapes);
+    mass.block(3, 6, 3, nf) += rotation_modal;
+    mass.block(6, 3, nf, 3) += rotation_modal.transpose();
   }
-  mass += body.mass_correction;
   // ṙ = A (Aᵀṙ): M_v = Wᵀ M_w W with W = diag(Aᵀ, I, I).
   mass.topRows<3>() = pose.A * mass.topRows<3>();
   mass.leftCols<3>() = mass.leftCols<3>() * pose.A.transpose();

@@ -24,27 +24,47 @@ std::string NodalLoadElement::Describe() const {
 void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
   const Body& body = *bodies()[0];
   const BodyPose& pose = *state.poses[0];
+  const cms::ReducedBody& reduced = *body.reduced;
   const int nf = body.flexible_count;
+  const int nodes = body.node_count();
   const double lambda = state.load_factor;
-  for (int k = 0; k < body.node_count(); ++k) {
+  // Per node, in the body frame, F̂_k = AᵀF_k and M̂_k = AᵀM_k. The residual carries −f_ext:
+  //   −λ (Σ F_k;  Σ u_k × F̂_k + M̂_k;  Σ Φ_kᵀ F̂_k + Ψ_kᵀ M̂_k),
+  // the modal sum one product Uᵀ (F̂_k, M̂_k)_k with the mode shapes (6 rows a node). With
+  // δ(AᵀF) = F̂̃ δθ and δu_k = Φ_k δη, the stiffness rows are
+  //   θθ: −λ Σ (ũ_k F̂̃_k + M̂̃_k),  θη: λ Σ F̂̃_k Φ_k,  ηθ: −λ Σ (Φ_kᵀ F̂̃_k + Ψ_kᵀ M̂̃_k),
+  // the last two products of the stacked skew matrices with U.
+  thread_local VecX nodal;
+  thread_local Eigen::Matrix<double, Eigen::Dynamic, 3> skews;  // (F̂̃_k; M̂̃_k) per node
+  nodal.setZero(6 * nodes);
+  if (with_matrices) skews.setZero(6 * nodes, 3);
+  Vec3 force_sum = Vec3::Zero(), moment_sum = Vec3::Zero();
+  Mat3 rotation_rotation = Mat3::Zero();
+  for (int k = 0; k < nodes; ++k) {
     if (forces_[k].isZero(0.0) && moments_[k].isZero(0.0)) continue;
     const Vec3 offset = pose.NodeOffset(body, k);
     const Vec3 force_body = pose.A.transpose() * forces_[k];
     const Vec3 moment_body = pose.A.transpose() * moments_[k];
-    const auto& phi = body.reduced->node_translation_modes[k];
-    const auto& psi = body.reduced->node_rotation_modes[k];
-    // Residual carries −f_ext.
-    out.force.head<3>() -= lambda * forces_[k];
-    out.force.segment<3>(3) -= lambda * (offset.cross(force_body) + moment_body);
-    out.force.tail(nf).noalias() -= lambda * (phi.transpose() * force_body + psi.transpose() * moment_body);
+    nodal.segment<3>(6 * k) = force_body;
+    nodal.segment<3>(6 * k + 3) = moment_body;
+    force_sum += forces_[k];
+    moment_sum += offset.cross(force_body) + moment_body;
     if (!with_matrices) continue;
-    // δ(AᵀF) = skew(AᵀF) δθ; δu = Φ δη.
     const Mat3 skew_f = Skew(force_body);
     const Mat3 skew_m = Skew(moment_body);
-    out.stiffness.block<3, 3>(3, 3) -= lambda * (Skew(offset) * skew_f + skew_m);
-    out.stiffness.block(3, 6, 3, nf) -= lambda * (-skew_f * phi);
-    out.stiffness.block(6, 3, nf, 3) -= lambda * (phi.transpose() * skew_f + psi.transpose() * skew_m);
+    rotation_rotation += Skew(offset) * skew_f + skew_m;
+    skews.middleRows<3>(6 * k) = skew_f;
+    skews.middleRows<3>(6 * k + 3) = skew_m;
   }
+  out.force.head<3>() -= lambda * force_sum;
+  out.force.segment<3>(3) -= lambda * moment_sum;
+  out.force.tail(nf).noalias() -= lambda * (reduced.mode_shapes.transpose() * nodal);
+  if (!with_matrices) return;
+  out.stiffness.block<3, 3>(3, 3) -= lambda * rotation_rotation;
+  out.stiffness.block(6, 3, nf, 3).noalias() -= lambda * reduced.mode_shapes.transpose().lazyProduct(skews);
+  // θη: only the force rows (F̂̃_k, the translations Φ_k); F̂̃ᵀ = −F̂̃.
+  for (int k = 0; k < nodes; ++k) skews.middleRows<3>(6 * k + 3).setZero();
+  out.stiffness.block(3, 6, 3, nf).noalias() -= lambda * skews.transpose().lazyProduct(reduced.mode_shapes);
 }
 
 double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {

@@ -45,9 +45,13 @@ TEST(GyroscopicModes, ProjectionMatchesTheFullStateSpaceSolve) {
   }
   std::sort(frequencies.begin(), frequencies.end());
   ASSERT_GE(frequencies.size(), 6u);
-  // The truncation of the basis (22 modes of 72 coordinates): measured at most 3.0e-6 (modes 4–6).
+  // The reference is the less accurate side: the dense state-space solve of a matrix whose stiff
+  // supports and couplings (entries to 8e13 N/m against masses of ~45 kg) leave its frequencies
+  // good to ~1e-5. Measured: a change of summation order in the assembly (K, D, M equal to the last
+  // bit, 2.4e-4 N/m at 2e12 N/m) moved the full solve's modes 1–6 by up to 2.4e-5 and the projected
+  // ones by 3e-10; the two agreed to 3.0e-6 before that change and 1.15e-5 after it.
   for (std::size_t m = 0; m < 6; ++m) {
-    EXPECT_NEAR(projected.modes[m].frequency_hz / frequencies[m], 1.0, 1e-5) << "mode " << m + 1;
+    EXPECT_NEAR(projected.modes[m].frequency_hz / frequencies[m], 1.0, 5e-5) << "mode " << m + 1;
   }
 }
 

@@ -148,6 +148,7 @@ SystemModel BodiesWithLateralMass(const SystemModel& model, double fraction) {
     auto reduced = std::make_shared<cms::ReducedBody>(*body.reduced);
     for (int k = 0; k < reduced->node_count(); ++k) reduced->node_lateral_mass[k] = fraction * reduced->node_mass[k];
     body.reduced = reduced;
+    body.reference_mass = cms::NodalReferenceMassMatrix(*reduced) + body.mass_correction;
   }
   return SystemModel(std::move(bodies), {}, model.length());
 }

@@ -10,7 +10,6 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <complex>
-#include <random>
 #include <vector>
 
 #include "core/error.hpp"
