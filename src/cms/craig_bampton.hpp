@@ -34,7 +34,8 @@ struct CraigBamptonBasis {
 
 // Steps 2–5. K and M are the (symmetric) model matrices; K_ii must be positive definite (the
 // boundary restrains every rigid motion), M_ii at least semi-definite with the H kept modes
-// massive. Fixed-interface modes are mass-normalised (φᵀ M_ii φ = 1). Throws InputError when
+// massive. Fixed-interface modes are mass-normalised (φᵀ M_ii φ = 1); H is mode_count, or one more
+// when the count would keep only one mode of an equal pair (y and z bending). Throws InputError when
 // mode_count is negative or exceeds the internal DOF count, LogicError on a bad boundary list or
 // an unrestrained interior.
 CraigBamptonBasis BuildCraigBamptonBasis(const SparseMat& stiffness, const SparseMat& mass,

@@ -32,7 +32,7 @@ using Matrix6X = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 struct ReducedBody {
   fe::BodySpec spec;                   // what was reduced (element matrices can be rebuilt from it)
   double length = 0.0;                 // m
-  int fixed_interface_mode_count = 0;  // H (modes_per_body)
+  int fixed_interface_mode_count = 0;  // H (modes_per_body, one more to complete a cut pair)
   int flexible_count = 0;              // n_f = 6 n_interface − 6 + H (6 + H for two end nodes)
   std::vector<int> interface_nodes;    // node indices used as the Craig–Bampton interface
   double structural_damping = 0.0;     // ζ_s

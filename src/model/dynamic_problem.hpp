@@ -23,6 +23,10 @@ class DynamicModelProblem final : public solvers::Problem {
                             double cM) const override {
     return model_.IterationMatrix(t, q, v, a, 1.0, cK, cD, cM);
   }
+  // Each body's coordinates turned by its spin (SystemModel::TurnCoordinates).
+  void TransportCoordinates(const VecX& dv, VecX& x, bool inverse) const override {
+    model_.TurnCoordinates(dv, x, inverse);
+  }
   // The bodies, numbered along the string (each coupled only to its neighbours).
   std::vector<Eigen::Index> CoordinateBlocks() const override {
     std::vector<Eigen::Index> starts;

@@ -103,6 +103,24 @@ VecX SystemModel::IncrementKeepingShape(const VecX& q, const VecX& dv) const {
   return result;
 }
 
+void SystemModel::TurnCoordinates(const VecX& dv, VecX& x, bool inverse) const {
+  thread_local VecX eta;
+  for (const Body& body : bodies_) {
+    const int vo = body.v_offset, modes = body.flexible_count;
+    const double turn = inverse ? -dv[vo + 3] : dv[vo + 3];
+    if (turn == 0.0) continue;
+    const double c = std::cos(turn), s = std::sin(turn);
+    const double y = x[vo + 4], z = x[vo + 5];  // δθ ← Rx(φ) δθ
+    x[vo + 4] = c * y - s * z;
+    x[vo + 5] = s * y + c * z;
+    if (modes == 0) continue;
+    const cms::ReducedBody& reduced = *body.reduced;
+    eta = x.segment(vo + 6, modes);  // η ← G(φ) η = η − (1 − cos φ) P_⊥ η + sin φ J η
+    x.segment(vo + 6, modes).noalias() -= (1.0 - c) * (reduced.transverse_projection * eta);
+    x.segment(vo + 6, modes).noalias() += s * (reduced.twist_generator * eta);
+  }
+}
+
 VecX SystemModel::StateResolution(const VecX& q) const {
   constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
   VecX resolution(num_velocities_);

@@ -45,6 +45,12 @@ class SystemModel {
   // steps of tenths of a radian there then failed. For the static solver; the time integrator
   // keeps Increment.
   VecX IncrementKeepingShape(const VecX& q, const VecX& dv) const;
+  // x ← P x (inverse: Pᵀ x) with P = diag over the bodies of (I, Rx(φ_b), G(φ_b)), φ_b = dv's x
+  // part of body b's frame rotation: a vector of v's coordinates at a state whose bodies have since
+  // turned by φ_b about their axes (their shapes kept) written in the coordinates of the earlier
+  // state. P is orthogonal (G(φ)ᵀ = G(−φ)), and for axisymmetric bodies whose modes are closed
+  // under the turn the iteration matrix after the turn is Pᵀ S P of the one before it.
+  void TurnCoordinates(const VecX& dv, VecX& x, bool inverse) const;
   // One rounding unit of each coordinate of q, as an increment (solvers::StaticProblem::
   // StateResolution): ε·max(|Δr|∞, L) for a frame's displacement (added to node offsets up to the
   // body length L), ε for its rotation (a unit quaternion's

@@ -138,6 +138,7 @@ bool GeneralizedAlphaIntegrator::Factorize(double h, std::string& reason) {
   ++statistics_.factorizations;
   has_factorization_ = true;
   factorized_step_ = h;
+  factorized_displacement_ = accumulated_ + increment_;
   return true;
 }
 
@@ -174,8 +175,12 @@ GeneralizedAlphaIntegrator::Attempt GeneralizedAlphaIntegrator::Iterate(double h
     }
     VecX correction;
     try {
+      // With the matrix of an earlier state, in that state's coordinates (Problem::TransportCoordinates).
       correction = -residual;
+      moved_ = accumulated_ + increment_ - factorized_displacement_;
+      problem_.TransportCoordinates(moved_, correction, false);
       lu_.SolveInPlace(correction);
+      problem_.TransportCoordinates(moved_, correction, true);
       if (!correction.allFinite()) throw SolverError("the correction is not finite");
     } catch (const SolverError& e) {
       attempt.reason = fmt::format("the linear solve failed ({})", e.what());

@@ -167,6 +167,8 @@ class GeneralizedAlphaIntegrator {
   IterationMatrixLu lu_;
   bool has_factorization_ = false;
   double factorized_step_ = 0.0;
+  VecX factorized_displacement_;  // Σ increments from the start to the state factorized at
+  VecX moved_;                    // ... and from that state to the present iterate
   double step_ = 0.0;
   double step_ceiling_ = std::numeric_limits<double>::infinity();  // after Newton failures (header)
   int stale_failures_ = 0;  // steps in a row whose attempt with an earlier step's matrix failed

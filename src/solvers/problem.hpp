@@ -48,6 +48,14 @@ class Problem {
   // string's bodies, joined to their neighbours): a hint for a block-tridiagonal factorization,
   // which the solver checks against the matrix's pattern. Empty: none.
   virtual std::vector<Eigen::Index> CoordinateBlocks() const { return {}; }
+
+  // For solving with an iteration matrix factorized at an earlier state: x ← P x (inverse: Pᵀ x),
+  // P orthogonal, taking v's coordinates at the present state to those of the earlier one, `dv`
+  // the sum of the increments between them, such that the present matrix is ≈ Pᵀ S P. A model
+  // whose bodies spin about their axes turns their body-frame coordinates with them (a matrix
+  // factorized 0.04 rad of spin earlier is otherwise off by the stiff couplings turned with the
+  // frames). Default: P = I.
+  virtual void TransportCoordinates(const VecX& /*dv*/, VecX& /*x*/, bool /*inverse*/) const {}
 };
 
 // A problem for the static Newton solver: a load factor λ in [0, 1] scales the applied loads

