@@ -49,7 +49,8 @@ class SystemModel {
   // part of body b's frame rotation: a vector of v's coordinates at a state whose bodies have since
   // turned by φ_b about their axes (their shapes kept) written in the coordinates of the earlier
   // state. P is orthogonal (G(φ)ᵀ = G(−φ)), and for axisymmetric bodies whose modes are closed
-  // under the turn the iteration matrix after the turn is Pᵀ S P of the one before it.
+  // under the turn the iteration matrix after the turn is Pᵀ S P of the one before it. Turns below
+  // 1e-6 rad are taken as 0.
   void TurnCoordinates(const VecX& dv, VecX& x, bool inverse) const;
   // One rounding unit of each coordinate of q, as an increment (solvers::StaticProblem::
   // StateResolution): ε·max(|Δr|∞, L) for a frame's displacement (added to node offsets up to the

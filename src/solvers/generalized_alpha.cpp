@@ -216,7 +216,9 @@ GeneralizedAlphaIntegrator::Attempt GeneralizedAlphaIntegrator::Iterate(double h
     }
     // Too slow with a matrix of an earlier iterate (the iteration matrix depends on the state, e.g.
     // through the accelerations of stiff modes): refactorize at this one. Without reuse, always.
-    const bool slow = iteration > 1 && norm > options_.reuse_contraction * previous_norm;
+    const double keep = lu_.method() == IterationMatrixLu::Method::kDense ? options_.reuse_contraction
+                                                                           : options_.reuse_contraction_factored;
+    const bool slow = iteration > 1 && norm > keep * previous_norm;
     if ((slow || !options_.reuse_iteration_matrix) && factorized_at < iteration) {
       if (!Factorize(h, attempt.reason)) return attempt;
       factorized_at = iteration;

@@ -90,7 +90,12 @@ struct GeneralizedAlphaOptions {
   // (solvers/iteration_matrix_lu.hpp).
   bool block_tridiagonal = true;
   double band_storage_limit = 4.0;
-  double reuse_contraction = 0.5;   // an iteration contracting less than this refactorizes (0.3: 14.0 s, 0.5: 13.1 s, 0.65: 13.6 s for the bundled example's 10 s)
+  // An iteration contracting less than this refactorizes: for a dense matrix (up to dense_limit,
+  // a factorization costing about a residual) and for the others (a string's assembly and block LU,
+  // 6–10 residuals). Measured back to back: the V1 cantilever's 1 s 293–306 ms at 0.3, 330–357 ms at
+  // 0.5; the bundled example's 10 s on two threads 14.0 s at 0.3, 13.1 s at 0.5, 13.6 s at 0.65.
+  double reuse_contraction = 0.3;
+  double reuse_contraction_factored = 0.5;
   double refactor_step_ratio = 0.25;  // |h/h_factorized − 1| above this refactorizes
   long max_steps = 100'000'000;     // accepted plus rejected steps per AdvanceTo
   double failure_ceiling = 0.5;     // after a Newton failure at h, adaptive steps stay below this · h

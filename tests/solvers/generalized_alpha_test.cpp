@@ -431,6 +431,7 @@ TEST(GeneralizedAlpha, DenseBlockBandedAndSparseFactorizationsGiveTheSameMotion)
     options.dense_limit = dense_limit;
     options.band_storage_limit = band_storage_limit;
     options.block_tridiagonal = block_tridiagonal;
+    options.reuse_contraction_factored = options.reuse_contraction;  // the same Newton path for all
     options.initial_step = 1e-3;
     GeneralizedAlphaIntegrator integrator(chain, options);
     integrator.Initialize(0.0, VecX::LinSpaced(n, 0.0, 0.01), VecX::Zero(n));
