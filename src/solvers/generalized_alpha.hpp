@@ -14,13 +14,16 @@
 // increment by β h² β'' Δv̇ (β'' = (1 − α_f)/(1 − α_m)), so the iteration matrix is, divided by
 // β h² β'', S = K + γ/(β h) D + (1 − α_m)/((1 − α_f) β h²) M (Problem::IterationMatrix; the tangent
 // operator of the Lie-group increment is taken as the identity, as Brüls et al. do: it changes only
-// the convergence rate, O(h)). S is factorized by a dense LU (small problems), LAPACK's banded LU
-// (a string's block-banded matrix, solvers/band_lu.hpp) or SparseLinearSolver (any other), and is
-// kept factorized across iterations and steps while Newton converges fast (modified Newton); it is
-// refactorized at the current iterate when a correction is
-// more than `reuse_contraction` times the one before (slow, linear convergence), when Newton fails
-// with a matrix of an earlier step, or when h has changed by more than `refactor_step_ratio`.
-// Without reuse it is refactorized at every iterate (full Newton).
+// the convergence rate, O(h)). S is factorized by a dense LU (small problems), block tridiagonal on
+// the problem's coordinate blocks (a string's bodies), LAPACK's banded LU or SparseLinearSolver
+// (solvers/iteration_matrix_lu.hpp), and is kept factorized across iterations and steps while
+// Newton converges fast (modified Newton), a matrix of an earlier state used in that state's
+// coordinates (Problem::TransportCoordinates: a spinning string's bodies turned back); it is
+// refactorized at the current iterate when a correction is more than `reuse_contraction` (dense)
+// or `reuse_contraction_factored` times the one before (slow, linear convergence), when Newton
+// fails with a matrix of an earlier step, or when h has changed by more than `refactor_step_ratio`.
+// Without reuse it is refactorized at every iterate (full Newton). Output times are met in equal
+// steps (AdvanceTo).
 //
 // Convergence and error are measured in a weighted RMS norm of position increments:
 // ‖x‖ = sqrt(mean((x_i / (atol + rtol · s_i))²)), s_i the largest |q_i − q_i(start)| so far
