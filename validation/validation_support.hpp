@@ -30,8 +30,11 @@ inline std::string ResultsDirectory(const std::string& relative_case) {
       .string();
 }
 
-inline nlohmann::json RunCase(const std::string& command, const std::string& relative_case) {
-  const std::string output = ResultsDirectory(relative_case);
+// `run_name` gives the run its own results directory: two tests of one case run concurrently under
+// ctest -j, and each clears its directory first (the other then read a half-written one).
+inline nlohmann::json RunCase(const std::string& command, const std::string& relative_case,
+                              const std::string& run_name = "") {
+  const std::string output = ResultsDirectory(relative_case) + (run_name.empty() ? "" : "-" + run_name);
   std::filesystem::remove_all(output);
   const std::string log = output + ".log";
   std::filesystem::create_directories(std::filesystem::path(log).parent_path());

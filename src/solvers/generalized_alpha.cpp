@@ -163,11 +163,15 @@ GeneralizedAlphaIntegrator::Attempt GeneralizedAlphaIntegrator::Iterate(double h
   // is on. With ρ∞ = 1 the unresolved stiff modes keep their accelerations, which flip sign every
   // step, and with them the inertia terms of the iteration matrix: a carried θ is then wrong every
   // other step, and stopping on it left 2.6 % of the energy of a free vibration in 10 000 steps.
-  // "The same step" to round-off: an interval split in equal pieces (AdvanceTo) gives steps that
-  // differ in the last bits, and an exact comparison lost the carried θ of the fixed-step V1
-  // cantilever (1.95 Newton iterations a step instead of 1.6).
-  const bool carry = options_.rho_infinity < 1.0 && factorized_at < 0 &&
-                     std::abs(h - factorized_step_) <= 1e-9 * factorized_step_;
+  // With fixed steps, "the same step" to round-off: an interval split in equal pieces (AdvanceTo)
+  // gives steps that differ in the last bits, and an exact comparison lost the carried θ of the V1
+  // cantilever (1.95 Newton iterations a step instead of 1.5). Adaptive steps keep the exact
+  // comparison: carried between the equal pieces of their intervals, θ let Newton stop at its first
+  // iteration more often and the error estimate then rejected and shortened more steps (bundled
+  // example, 10 s: 3 431 steps and 12 476 iterations against 3 019 and 11 133).
+  const bool same_step = options_.adaptive ? h == factorized_step_
+                                           : std::abs(h - factorized_step_) <= 1e-9 * factorized_step_;
+  const bool carry = options_.rho_infinity < 1.0 && factorized_at < 0 && same_step;
   double contraction_estimate = carry ? std::pow(std::max(contraction_, 1e-16), 0.8) : 1.0;
   for (int iteration = 1; iteration <= options_.max_newton_iterations; ++iteration) {
     const VecX residual = problem_.Residual(state_.time + h, trial_q_, trial_v_, trial_acceleration_);
