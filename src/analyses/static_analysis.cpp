@@ -87,11 +87,31 @@ solvers::NewtonOptions DefaultNewtonOptions() {
 }
 
 std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q, double load_factor) {
+  std::vector<int> all(StringStations(model).size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  return StaticNodeResults(model, q, load_factor, all);
+}
+
+std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q, double load_factor,
+                                                std::span<const int> station_indices) {
+  const std::vector<Station> stations = StringStations(model);
+  // Only the bodies and joints the listed stations read.
+  std::vector<int> bodies, joints;
+  for (const int i : station_indices) {
+    const Station& station = stations.at(static_cast<std::size_t>(i));
+    if (station.lower_body >= 0) {
+      joints.push_back(station.lower_body);
+    } else {
+      bodies.push_back(station.body);
+    }
+  }
   const auto poses = model.Poses(q);
-  const auto forces = model::ComputeInternalForces(model, q, load_factor);
-  const auto joints = model::JointInternalForces(model, q, VecX::Zero(model.num_velocities()));
+  const auto forces = model::ComputeInternalForces(model, q, load_factor, bodies);
+  const auto joint_forces = model::JointInternalForces(model, q, VecX::Zero(model.num_velocities()), joints);
   std::vector<StaticNodeResult> nodes;
-  for (const Station& station : StringStations(model)) {
+  nodes.reserve(station_indices.size());
+  for (const int i : station_indices) {
+    const Station& station = stations[i];
     const model::Body& body = model.bodies()[station.body];
     const NodeMotion motion = ComputeNodeMotion(body, poses[station.body], station.node);
     StaticNodeResult node;
@@ -103,7 +123,7 @@ std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model,
     // Internal forces rotated from the body frame (at a joint: the lower body's) to the string frame.
     const Mat3 frame = body.reference_orientation.toRotationMatrix();
     const bool joint = station.lower_body >= 0;
-    const model::SectionForces& section = joint ? joints[station.lower_body] : forces[station.body][station.node];
+    const model::SectionForces& section = joint ? joint_forces[station.lower_body] : forces[station.body][station.node];
     const Mat3 to_string = frame.transpose() * poses[joint ? station.lower_body : station.body].A;
     node.force = to_string * section.force;
     node.moment = to_string * section.moment;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
@@ -106,6 +107,10 @@ StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltM
 // between the two bodies; a point load at the joint acts on the upper body's node, above it).
 std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
                                                 double load_factor = 1.0);
+// The same at the listed stations only (indices into StringStations(model)), in that order: a
+// transient run's samples (the bit, the top, the probes) without the forces of the whole string.
+std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q, double load_factor,
+                                                std::span<const int> station_indices);
 std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q);
 
 // Newton options recommended for this model (model-orientation notes): increment tolerance 1e-10,

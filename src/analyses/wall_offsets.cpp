@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -64,11 +65,23 @@ void SetFromContact(const model::WallContactResult& contact, double contact_radi
 }  // namespace
 
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes) {
+  std::vector<int> all(nodes.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  if (!built.contact_elements.empty() && nodes.size() != StringStations(built.system).size()) {
+    throw LogicError(fmt::format("AddWallOffsets: {} node results for {} stations", nodes.size(),
+                                 StringStations(built.system).size()));
+  }
+  AddWallOffsets(built, q, nodes, all);
+}
+
+void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes,
+                    std::span<const int> station_indices) {
   if (built.contact_elements.empty()) return;
   const model::SystemModel& system = built.system;
   const std::vector<Station> stations = StringStations(system);
-  if (stations.size() != nodes.size()) {
-    throw LogicError(fmt::format("AddWallOffsets: {} node results for {} stations", nodes.size(), stations.size()));
+  if (station_indices.size() != nodes.size()) {
+    throw LogicError(fmt::format("AddWallOffsets: {} node results for {} stations", nodes.size(),
+                                 station_indices.size()));
   }
   const std::vector<ContactAtStation> contacts = ContactsByStation(built);
   const auto poses = system.Poses(q);
@@ -80,6 +93,7 @@ void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<S
 
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     StaticNodeResult& node = nodes[i];
+    const Station& station = stations.at(static_cast<std::size_t>(station_indices[i]));
     const ContactAtStation& nearest = NearestContact(contacts, node.s);
     if (std::abs(nearest.s - node.s) <= kSameStationTolerance) {
       const model::WallContactElement& contact = *nearest.element;
@@ -91,12 +105,12 @@ void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<S
     // No contact here (a bit node): a contact circle of the body's contact diameter, evaluated only.
     // Start its closest-point search at the nearest contact's MD shifted by the distance along the
     // string (MD decreases up the string).
-    const model::Body& body = system.bodies()[stations[i].body];
+    const model::Body& body = system.bodies()[station.body];
     model::WallContactParameters parameters = nearest.element->parameters();
     parameters.contact_radius = 0.5 * body.contact_diameter;
     const model::WallContactResult nearest_result =
         nearest.element->Result(system.StateOf(*nearest.element, poses, rest, 0.0, 1.0));
-    const model::WallContactElement probe(&body, stations[i].node, wellbore, parameters,
+    const model::WallContactElement probe(&body, station.node, wellbore, parameters,
                                           nearest_result.md + (nearest.s - node.s));
     SetFromContact(probe.Result(system.StateOf(probe, poses, rest, 0.0, 1.0)), parameters.contact_radius, node);
   }

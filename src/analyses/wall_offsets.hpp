@@ -12,6 +12,7 @@
 // string frame of a body is its chord's, not the hole's cross-section.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "analyses/static_analysis.hpp"
@@ -28,5 +29,9 @@ namespace drillflex::analyses {
 // (has_wall = true, wall_contact = false). Without wall contacts (no well) nothing changes
 // (has_wall = false). Throws LogicError when `nodes` is not one per station.
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes);
+// The same for results at the listed stations only (nodes[i] at station station_indices[i], as
+// StaticNodeResults(model, q, load_factor, station_indices) gives them).
+void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes,
+                    std::span<const int> station_indices);
 
 }  // namespace drillflex::analyses

@@ -149,36 +149,51 @@ std::vector<SectionForces> BodyInternalForces(const Body& body, const VecX& eta,
 
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
                                                               double load_factor) {
+  std::vector<int> all(model.bodies().size());
+  for (std::size_t b = 0; b < all.size(); ++b) all[b] = static_cast<int>(b);
+  return ComputeInternalForces(model, q, load_factor, all);
+}
+
+std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
+                                                              double load_factor, std::span<const int> bodies) {
   const std::vector<BodyPose> poses = model.Poses(q);
   const auto axial_loads = AxialNodalLoads(model, poses, load_factor);
   ElementMatrixCache cache;
   std::vector<std::vector<SectionForces>> result(model.bodies().size());
-  for (std::size_t b = 0; b < result.size(); ++b) {
-    const Body& body = model.bodies()[b];
+  for (const int b : bodies) {
+    const Body& body = model.bodies().at(static_cast<std::size_t>(b));
     result[b] = ForcesOfBody(body, cache.Get(body), poses[b].eta, axial_loads[b]);
   }
   return result;
 }
 
 std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v) {
+  std::vector<int> all(model.bodies().size() > 0 ? model.bodies().size() - 1 : 0);
+  for (std::size_t j = 0; j < all.size(); ++j) all[j] = static_cast<int>(j);
+  return JointInternalForces(model, q, v, all);
+}
+
+std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v,
+                                               std::span<const int> joints) {
   const std::size_t bodies = model.bodies().size();
-  std::vector<SectionForces> joints(bodies > 0 ? bodies - 1 : 0);
-  std::vector<bool> found(joints.size(), false);
+  std::vector<SectionForces> result(bodies > 0 ? bodies - 1 : 0);
+  std::vector<bool> wanted(result.size(), false), found(result.size(), false);
+  for (const int j : joints) wanted.at(static_cast<std::size_t>(j)) = true;
   const std::vector<BodyPose> poses = model.Poses(q);
   for (const auto& element : model.elements()) {
     const auto* coupling = dynamic_cast<const CouplingElement*>(element.get());
     if (coupling == nullptr) continue;
     const int lower = model.IndexOf(coupling->bodies()[0]);
-    if (model.IndexOf(coupling->bodies()[1]) != lower + 1) continue;
+    if (model.IndexOf(coupling->bodies()[1]) != lower + 1 || !wanted[lower]) continue;
     const Vec6 force = coupling->Force(model.StateOf(*coupling, poses, v, 0.0, 1.0));
-    joints[lower].force = force.head<3>();
-    joints[lower].moment = force.tail<3>();
+    result[lower].force = force.head<3>();
+    result[lower].moment = force.tail<3>();
     found[lower] = true;
   }
-  for (std::size_t j = 0; j < joints.size(); ++j) {
+  for (const int j : joints) {
     if (!found[j]) throw LogicError(fmt::format("JointInternalForces: no coupling between bodies {} and {}", j, j + 1));
   }
-  return joints;
+  return result;
 }
 
 }  // namespace drillflex::model

@@ -24,6 +24,7 @@
 // ends agree with it).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/types.hpp"
@@ -57,6 +58,10 @@ struct SectionForces {
 // friction, fluid) and axial inertia inside a body are not resolved this way.
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
                                                               double load_factor = 1.0);
+// The same for the listed bodies only (result[b] empty for the others): what a transient run reads
+// at its output times (the bit, the top, the probes) without the whole string.
+std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
+                                                              double load_factor, std::span<const int> bodies);
 
 // The internal forces of one body from its modal coordinates η (body frame); `axial_loads` are
 // the dead axial nodal loads a_j (N, along the body axis), one per node, or empty.
@@ -72,5 +77,8 @@ Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta,
 // the coupling force f = K e + C ė (CouplingElement::Force) in the lower body's frame, which is
 // the force the upper body exerts on the lower one. Throws LogicError if a joint has no coupling.
 std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v);
+// The same for the listed joints only (the others left zero).
+std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v,
+                                               std::span<const int> joints);
 
 }  // namespace drillflex::model

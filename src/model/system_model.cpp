@@ -321,16 +321,24 @@ SparseMat SystemModel::MassMatrix(const VecX& q) const {
 }
 
 Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, double load_factor) const {
-  Energies energies;
   const auto poses = Poses(q);
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+  const bool parallel = bodies_.size() >= kParallelBodies;
+  // Each term on any thread, the sums in the model's order: the same for any number of threads.
+  std::vector<double> kinetic(bodies_.size()), elastic(bodies_.size()), potential(elements_.size());
+  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
     const Body& body = bodies_[b];
-    energies.kinetic += BodyKineticEnergy(body, poses[b], v.segment(body.v_offset, body.velocity_count()));
-    energies.elastic += BodyElasticEnergy(body, poses[b]);
+    kinetic[b] = BodyKineticEnergy(body, poses[b], v.segment(body.v_offset, body.velocity_count()));
+    elastic[b] = BodyElasticEnergy(body, poses[b]);
+  });
+  ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
+    potential[e] = elements_[e]->PotentialEnergy(StateOf(*elements_[e], poses, v, 0.0, load_factor));
+  });
+  Energies energies;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    energies.kinetic += kinetic[b];
+    energies.elastic += elastic[b];
   }
-  for (const auto& element : elements_) {
-    energies.potential += element->PotentialEnergy(StateOf(*element, poses, v, 0.0, load_factor));
-  }
+  for (const double term : potential) energies.potential += term;
   return energies;
 }
 

@@ -66,9 +66,10 @@ HoleGeometry LocateInHole(const Wellbore& wellbore, const Vec3& x, double md_hin
     center = end + along * g.tangent;
   } else {
     g.md = closest.md;
-    center = path.Position(g.md);
-    g.tangent = path.Tangent(g.md);
-    g.curvature = path.Curvature(g.md);
+    const well::Trajectory::PathPoint point = path.Evaluate(g.md);
+    center = point.position;
+    g.tangent = point.tangent;
+    g.curvature = point.curvature;
   }
   Vec3 offset = x - center;
   offset -= offset.dot(g.tangent) * g.tangent;  // the root's rounding residue along t

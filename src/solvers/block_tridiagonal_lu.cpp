@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 
 #include <fmt/format.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "core/error.hpp"
 
@@ -58,9 +62,11 @@ bool BlockTridiagonalLuOf<Scalar>::Analyze(Eigen::Index rows, Eigen::Index cols,
     }
   }
   storage_.assign(size, Scalar(0.0));
-  coupled_.resize(blocks - 1);
+  middle_ = blocks / 2;
+  coupled_.assign(blocks, Matrix());
   factors_.assign(blocks, SmallLu<Scalar>());
-  for (std::size_t k = 0; k + 1 < blocks; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k + 1));
+  for (std::size_t k = 0; k < middle_; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k + 1));
+  for (std::size_t k = middle_ + 1; k < blocks; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k - 1));
   analyzed_ = true;
   return true;
 }
@@ -103,24 +109,134 @@ void BlockTridiagonalLuOf<Scalar>::Factorize(const Sparse& matrix) {
   Factorize();
 }
 
+namespace {
+
+// The smallest |u_jj|² of an LU factorization (no hypot per pivot).
+template <typename Lu>
+double SmallestPivot2(const Lu& lu) {
+  double smallest2 = std::numeric_limits<double>::infinity();
+  const auto pivots = lu.matrixLU().diagonal();
+  for (Eigen::Index j = 0; j < pivots.size(); ++j) smallest2 = std::min(smallest2, std::norm(pivots(j)));
+  return smallest2;
+}
+
+// Below this many blocks both sweeps run on the calling thread: a thread's start costs more.
+constexpr std::size_t kParallelBlocks = 16;
+
+// Runs the two independent sweeps, side by side on two OpenMP threads when `parallel` and the caller
+// allows more than one thread, one after the other otherwise; an exception in either is rethrown here.
+template <typename First, typename Second>
+void RunBoth(bool parallel, const First& first, const Second& second) {
+#ifdef _OPENMP
+  parallel = parallel && omp_get_max_threads() > 1;
+#else
+  parallel = false;
+#endif
+  std::exception_ptr failure;
+  auto guarded = [&failure](const auto& task) {
+    try {
+      task();
+    } catch (...) {
+#pragma omp critical(drillflex_block_lu_failure)
+      if (!failure) failure = std::current_exception();
+    }
+  };
+#pragma omp parallel sections num_threads(2) if (parallel)
+  {
+#pragma omp section
+    guarded(first);
+#pragma omp section
+    guarded(second);
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace
+
+template <typename Scalar>
+double BlockTridiagonalLuOf<Scalar>::FactorizeFromTop() {  // S_0 … S_{m−1} and X_k
+  double smallest2 = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < middle_; ++k) {
+    if (k == 0) {
+      factors_[0].compute(Diagonal(0));
+    } else {
+      top_schur_ = Diagonal(k);
+      top_schur_.noalias() -= Lower(k - 1).lazyProduct(coupled_[k - 1]);
+      factors_[k].compute(top_schur_);
+    }
+    smallest2 = std::min(smallest2, SmallestPivot2(factors_[k]));
+    coupled_[k] = Upper(k);
+    factors_[k].solveInPlace(coupled_[k]);
+  }
+  return smallest2;
+}
+
+template <typename Scalar>
+double BlockTridiagonalLuOf<Scalar>::FactorizeFromBottom() {  // T_{N−1} … T_{m+1} and Y_k
+  double smallest2 = std::numeric_limits<double>::infinity();
+  const std::size_t last = diagonal_at_.size() - 1;
+  for (std::size_t k = last; k > middle_; --k) {
+    if (k == last) {
+      factors_[k].compute(Diagonal(k));
+    } else {
+      bottom_schur_ = Diagonal(k);
+      bottom_schur_.noalias() -= Upper(k).lazyProduct(coupled_[k + 1]);
+      factors_[k].compute(bottom_schur_);
+    }
+    smallest2 = std::min(smallest2, SmallestPivot2(factors_[k]));
+    coupled_[k] = Lower(k - 1);
+    factors_[k].solveInPlace(coupled_[k]);
+  }
+  return smallest2;
+}
+
 template <typename Scalar>
 void BlockTridiagonalLuOf<Scalar>::Factorize() {
   if (!analyzed_) throw LogicError("BlockTridiagonalLu::Factorize before a successful Analyze");
-  double smallest2 = std::numeric_limits<double>::infinity();  // min |u_jj|², no hypot per pivot
-  auto factor = [&](std::size_t k, const auto& schur) {
-    factors_[k].compute(schur);
-    const auto pivots = factors_[k].matrixLU().diagonal();
-    for (Eigen::Index j = 0; j < pivots.size(); ++j) smallest2 = std::min(smallest2, std::norm(pivots(j)));
-  };
-  factor(0, Diagonal(0));
-  for (std::size_t k = 0; k + 1 < diagonal_at_.size(); ++k) {
-    coupled_[k] = Upper(k);
-    factors_[k].solveInPlace(coupled_[k]);
-    schur_ = Diagonal(k + 1);
-    schur_.noalias() -= Lower(k).lazyProduct(coupled_[k]);
-    factor(k + 1, schur_);
-  }
-  smallest_pivot_ = std::sqrt(smallest2);
+  const std::size_t blocks = diagonal_at_.size(), m = middle_;
+  double top2 = std::numeric_limits<double>::infinity(), bottom2 = top2;
+  RunBoth(blocks >= kParallelBlocks, [&] { top2 = FactorizeFromTop(); }, [&] { bottom2 = FactorizeFromBottom(); });
+  top_schur_ = Diagonal(m);  // S_m = D_m − L_{m−1} X_{m−1} − U_m Y_{m+1}
+  if (m > 0) top_schur_.noalias() -= Lower(m - 1).lazyProduct(coupled_[m - 1]);
+  if (m + 1 < blocks) top_schur_.noalias() -= Upper(m).lazyProduct(coupled_[m + 1]);
+  factors_[m].compute(top_schur_);
+  smallest_pivot_ = std::sqrt(std::min({top2, bottom2, SmallestPivot2(factors_[m])}));
+}
+
+template <typename Scalar>
+template <typename Target>
+void BlockTridiagonalLuOf<Scalar>::SolveColumns(Target& x) const {
+  const std::size_t blocks = diagonal_at_.size(), m = middle_;
+  const auto rows = [&](std::size_t k) { return x.middleRows(starts_[k], BlockSize(k)); };
+  const bool parallel = blocks >= kParallelBlocks;
+  RunBoth(
+      parallel,
+      [&] {  // w_k = S_k⁻¹ (f_k − L_{k−1} w_{k−1}), k < m
+        for (std::size_t k = 0; k < m; ++k) {
+          auto block = rows(k);
+          if (k > 0) block.noalias() -= Lower(k - 1) * rows(k - 1);
+          factors_[k].solveInPlace(block);
+        }
+      },
+      [&] {  // z_k = T_k⁻¹ (f_k − U_k z_{k+1}), k > m
+        for (std::size_t k = blocks - 1; k > m; --k) {
+          auto block = rows(k);
+          if (k + 1 < blocks) block.noalias() -= Upper(k) * rows(k + 1);
+          factors_[k].solveInPlace(block);
+        }
+      });
+  auto middle = rows(m);  // x_m = S_m⁻¹ (f_m − L_{m−1} w_{m−1} − U_m z_{m+1})
+  if (m > 0) middle.noalias() -= Lower(m - 1) * rows(m - 1);
+  if (m + 1 < blocks) middle.noalias() -= Upper(m) * rows(m + 1);
+  factors_[m].solveInPlace(middle);
+  RunBoth(
+      parallel,
+      [&] {  // x_k = w_k − X_k x_{k+1}, k < m
+        for (std::size_t k = m; k-- > 0;) rows(k).noalias() -= coupled_[k] * rows(k + 1);
+      },
+      [&] {  // x_k = z_k − Y_k x_{k−1}, k > m
+        for (std::size_t k = m + 1; k < blocks; ++k) rows(k).noalias() -= coupled_[k] * rows(k - 1);
+      });
 }
 
 template <typename Scalar>
@@ -129,16 +245,7 @@ typename BlockTridiagonalLuOf<Scalar>::Matrix BlockTridiagonalLuOf<Scalar>::Solv
     throw LogicError("BlockTridiagonalLu::Solve: no factorization, or a right-hand side of the wrong size");
   }
   Matrix x = rhs;
-  Matrix block;
-  const std::size_t blocks = diagonal_at_.size();
-  for (std::size_t k = 0; k < blocks; ++k) {  // w_k = S_k⁻¹ (f_k − L_{k−1} w_{k−1})
-    block = x.middleRows(starts_[k], BlockSize(k));
-    if (k > 0) block.noalias() -= Lower(k - 1) * x.middleRows(starts_[k - 1], BlockSize(k - 1));
-    x.middleRows(starts_[k], BlockSize(k)) = factors_[k].solve(block);
-  }
-  for (std::size_t k = blocks - 1; k-- > 0;) {  // x_k = w_k − X_k x_{k+1}
-    x.middleRows(starts_[k], BlockSize(k)).noalias() -= coupled_[k] * x.middleRows(starts_[k + 1], BlockSize(k + 1));
-  }
+  SolveColumns(x);
   return x;
 }
 
@@ -147,15 +254,7 @@ void BlockTridiagonalLuOf<Scalar>::SolveInPlace(Vector& x) const {
   if (!analyzed_ || x.size() != starts_.back()) {
     throw LogicError("BlockTridiagonalLu::SolveInPlace: no factorization, or a right-hand side of the wrong size");
   }
-  const std::size_t blocks = diagonal_at_.size();
-  for (std::size_t k = 0; k < blocks; ++k) {  // w_k = S_k⁻¹ (f_k − L_{k−1} w_{k−1})
-    auto block = x.segment(starts_[k], BlockSize(k));
-    if (k > 0) block.noalias() -= Lower(k - 1) * x.segment(starts_[k - 1], BlockSize(k - 1));
-    factors_[k].solveInPlace(block);
-  }
-  for (std::size_t k = blocks - 1; k-- > 0;) {  // x_k = w_k − X_k x_{k+1}
-    x.segment(starts_[k], BlockSize(k)).noalias() -= coupled_[k] * x.segment(starts_[k + 1], BlockSize(k + 1));
-  }
+  SolveColumns(x);
 }
 
 template <typename Scalar>

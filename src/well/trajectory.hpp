@@ -54,6 +54,13 @@ class Trajectory {
   PathFrame Frame(double md) const;
   // Curvature vector dt/ds (1/m): its norm is the curvature, its direction toward the arc centre.
   Vec3 Curvature(double md) const;
+  // The three at once (one arc lookup, one sine and cosine): what Position, Tangent and Curvature give.
+  struct PathPoint {
+    Vec3 position;
+    Vec3 tangent;
+    Vec3 curvature;
+  };
+  PathPoint Evaluate(double md) const;
   // Dogleg severity (rad/m) of the arc that contains md.
   double DoglegSeverity(double md) const;
   double Inclination(double md) const;  // rad
@@ -88,14 +95,8 @@ class Trajectory {
     Vec3 t1;
     Vec3 normal;             // unit, toward the arc centre; zero on a straight segment
   };
-  struct PathPoint {
-    Vec3 position;
-    Vec3 tangent;
-    Vec3 curvature;
-  };
 
   std::size_t SegmentIndex(double md) const;
-  PathPoint Evaluate(double md) const;
   static PathPoint EvaluateArc(const Arc& arc, double u);
 
   std::vector<SurveyStation> stations_;

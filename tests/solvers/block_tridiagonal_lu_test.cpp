@@ -1,15 +1,17 @@
 // The block LU of a block-tridiagonal complex matrix against a dense LU (blocks of different
-// sizes), its refusal of entries outside the structure, and the harmonic solver that uses it: the
+// sizes; real, from one block to 41, the same bits on one and two threads), its refusal of entries outside the structure, and the harmonic solver that uses it: the
 // same answers as the general sparse LU on a damped chain (at and between its resonances), and a
 // leading block singular at ω (a zero pivot inside the block LU although the whole matrix is
 // regular) solved by the general LU instead.
 #include "solvers/block_tridiagonal_lu.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <complex>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -48,6 +50,49 @@ TEST(BlockTridiagonalLu, MatchesADenseLuOnBlocksOfDifferentSizes) {
     lu.Factorize(other);
     EXPECT_LT((lu.Solve(rhs) - expected / Complex(0.5, -2.0)).norm(), 1e-11 * expected.norm());
   }
+}
+
+// The two sweeps meet at the middle block m = ⌊N/2⌋: one block (only the middle), two (no sweep from
+// the bottom), three, and enough blocks for the sweeps to run on two threads (from 16), odd and even.
+TEST(BlockTridiagonalLu, TwoWayEliminationMatchesADenseLuForAnyNumberOfBlocks) {
+  for (const int blocks : {1, 2, 3, 4, 16, 17, 41}) {
+    std::vector<Eigen::Index> starts{0};
+    for (int k = 0; k < blocks; ++k) starts.push_back(starts.back() + 2 + (k * 7) % 5);  // sizes 2 to 6
+    const Eigen::SparseMatrix<double> matrix = testing::RandomBlockTridiagonal<double>(starts, 0.0, 100 + blocks);
+    RealBlockTridiagonalLu lu;
+    ASSERT_TRUE(lu.Analyze(matrix, starts));
+    lu.Factorize(matrix);
+    const Eigen::Index n = starts.back();
+    const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(n, 2);
+    const Eigen::MatrixXd expected = Eigen::MatrixXd(matrix).partialPivLu().solve(rhs);
+    EXPECT_LT((lu.Solve(rhs) - expected).norm(), 1e-10 * expected.norm()) << blocks << " blocks";
+    Eigen::VectorXd x = rhs.col(1);
+    lu.SolveInPlace(x);
+    EXPECT_LT((x - expected.col(1)).norm(), 1e-10 * expected.col(1).norm()) << blocks << " blocks";
+  }
+}
+
+// The sweeps' arithmetic does not depend on the threads that run them: the same bits on one and two.
+TEST(BlockTridiagonalLu, SameBitsOnOneAndTwoThreads) {
+  std::vector<Eigen::Index> starts{0};
+  for (int k = 0; k < 40; ++k) starts.push_back(starts.back() + 18);
+  const Eigen::SparseMatrix<double> matrix = testing::RandomBlockTridiagonal<double>(starts, 2.0, 7);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::Random(starts.back());
+  const int previous = omp_get_max_threads();
+  auto solve = [&](int threads) {
+    omp_set_num_threads(threads);
+    RealBlockTridiagonalLu lu;
+    lu.Analyze(matrix, starts);
+    lu.Factorize(matrix);
+    Eigen::VectorXd x = rhs;
+    lu.SolveInPlace(x);
+    return std::make_pair(x, lu.smallest_pivot());
+  };
+  const auto one = solve(1);
+  const auto two = solve(2);
+  omp_set_num_threads(previous);
+  EXPECT_EQ(one.second, two.second);
+  EXPECT_TRUE((one.first.array() == two.first.array()).all());
 }
 
 TEST(BlockTridiagonalLu, RefusesEntriesOutsideTheStructureAndBadBlocks) {
