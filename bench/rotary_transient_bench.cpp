@@ -1,5 +1,5 @@
 // Transient speed on the bundled example: bench/cases/rotary-bha-rotating.yaml (the example's
-// well, string and model: 104 bodies, 1872 coordinates, 1013 wall contacts), turned from its static
+// well, string and model: 104 bodies, 1876 coordinates, 1013 wall contacts), turned from its static
 // equilibrium on bottom to 120 rpm by the top drive (ramp 2 s) under the case's WOB and TOB, for
 // 10 s of simulated time at the default adaptive steps (tolerance 1e-4, ρ∞ = 0.8). Timed:
 // analyses::RunTransient only (the start equilibrium is solved once, outside the loop), on 1 and 2
