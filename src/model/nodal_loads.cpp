@@ -15,6 +15,32 @@ NodalLoadElement::NodalLoadElement(const Body* body, std::vector<Vec3> forces, s
       static_cast<int>(moments_.size()) != body->node_count()) {
     throw LogicError("NodalLoadElement: one force and one moment per node expected");
   }
+  // The residual's node sums as products with A's entries (ResidualSums in the header), a = the
+  // entries column by column: (AᵀF)_i = Σ_j A(j, i) F(j) = Σ_j a_{j+3i} F(j).
+  const cms::ReducedBody& reduced = *body->reduced;
+  const int nf = body->flexible_count;
+  force_sum_.setZero();
+  moment_sum_.setZero();
+  modal_by_rotation_.setZero(nf, 9);
+  moment_by_rotation_.setZero();
+  offset_load_modes_.setZero(9, nf);
+  for (int k = 0; k < body->node_count(); ++k) {
+    const Vec3& force = forces_[k];
+    const Vec3& moment = moments_[k];
+    force_sum_ += force;
+    moment_sum_ += moment;
+    const auto& phi = reduced.node_translation_modes[k];
+    const auto& psi = reduced.node_rotation_modes[k];
+    const Vec3& position = reduced.node_positions[k];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const int c = j + 3 * i;
+        modal_by_rotation_.col(c) += force(j) * phi.row(i).transpose() + moment(j) * psi.row(i).transpose();
+        moment_by_rotation_.col(c) += force(j) * position.cross(Vec3::Unit(i));
+      }
+    }
+    for (int j = 0; j < 3; ++j) offset_load_modes_.middleRows<3>(3 * j) += force(j) * phi;
+  }
 }
 
 std::string NodalLoadElement::Describe() const {
@@ -34,6 +60,19 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
   // δ(AᵀF) = F̂̃ δθ and δu_k = Φ_k δη, the stiffness rows are
   //   θθ: −λ Σ (ũ_k F̂̃_k + M̂̃_k),  θη: λ Σ F̂̃_k Φ_k,  ηθ: −λ Σ (Φ_kᵀ F̂̃_k + Ψ_kᵀ M̂̃_k),
   // the last two products of the stacked skew matrices with U.
+  if (!with_matrices) {
+    // The node sums of the comment below by the products set up in the constructor: with
+    // p_j = Σ_k F_k(j) Φ_k η, Σ_k (Φ_k η) × AᵀF_k = Σ_i (Σ_j A(j, i) p_j) × e_i.
+    const Eigen::Map<const Eigen::Matrix<double, 9, 1>> a(pose.A.data());
+    const Eigen::Matrix<double, 9, 1> p = offset_load_modes_ * pose.eta;
+    const Mat3 elastic = Eigen::Map<const Mat3>(p.data()) * pose.A;  // column i: Σ_j A(j, i) p_j
+    Vec3 moment = moment_by_rotation_ * a + pose.A.transpose() * moment_sum_;
+    for (int i = 0; i < 3; ++i) moment += elastic.col(i).cross(Vec3::Unit(i));
+    out.force.head<3>() -= lambda * force_sum_;
+    out.force.segment<3>(3) -= lambda * moment;
+    out.force.tail(nf).noalias() -= lambda * (modal_by_rotation_ * a);
+    return;
+  }
   thread_local VecX nodal;
   thread_local Eigen::Matrix<double, Eigen::Dynamic, 3> skews;  // (F̂̃_k; M̂̃_k) per node
   nodal.setZero(6 * nodes);

@@ -25,6 +25,15 @@ class NodalLoadElement : public ForceElement {
  private:
   std::vector<Vec3> forces_;   // N, global, per node
   std::vector<Vec3> moments_;  // N·m, global, per node
+  // The residual without the node loop (a string's residual evaluates every body's loads each
+  // Newton iteration): the loads are fixed in the global frame, so with a = A's nine entries and
+  // u_k = x_k + Φ_k η every sum is linear in a or bilinear in a and η:
+  //   Σ F_k;   Σ u_k × AᵀF_k + AᵀM_k = H a + Σ_i (Σ_j A(j, i) p_j) × e_i + Aᵀ Σ M_k;   Σ Φ_kᵀ AᵀF_k + Ψ_kᵀ AᵀM_k = G a,
+  // p_j = P_j η with P_j = Σ_k F_k(j) Φ_k; G, H and P_j summed over the nodes once, here.
+  Vec3 force_sum_, moment_sum_;                          // Σ F_k, Σ M_k
+  Eigen::Matrix<double, Eigen::Dynamic, 9> modal_by_rotation_;  // G, n_f × 9
+  Eigen::Matrix<double, 3, 9> moment_by_rotation_;       // H: column j + 3i = Σ_k F_k(j) x_k × e_i
+  Eigen::Matrix<double, 9, Eigen::Dynamic> offset_load_modes_;  // P_0; P_1; P_2 stacked, 9 × n_f
 };
 
 // Work-equivalent nodal forces and moments of a uniform line load q (N/m, global) on a straight
