@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numeric>
 #include <span>
 
 #include <fmt/format.h>
@@ -65,12 +66,13 @@ void SetFromContact(const model::WallContactResult& contact, double contact_radi
 }  // namespace
 
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes) {
-  std::vector<int> all(nodes.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  if (!built.contact_elements.empty() && nodes.size() != StringStations(built.system).size()) {
-    throw LogicError(fmt::format("AddWallOffsets: {} node results for {} stations", nodes.size(),
-                                 StringStations(built.system).size()));
+  if (built.contact_elements.empty()) return;
+  const std::size_t stations = StringStations(built.system).size();
+  if (nodes.size() != stations) {
+    throw LogicError(fmt::format("AddWallOffsets: {} node results for {} stations", nodes.size(), stations));
   }
+  std::vector<int> all(stations);
+  std::iota(all.begin(), all.end(), 0);
   AddWallOffsets(built, q, nodes, all);
 }
 

@@ -222,6 +222,43 @@ TEST(WallOffsets, SlickStringBitDropsAsBeamTheorySays) {
   EXPECT_EQ(tendency.azimuth, AzimuthTendency::None);
 }
 
+// A transient sample reads a few stations only (StaticNodeResults and AddWallOffsets over a list
+// of stations): the bit's node (no contact of its own), a joint, an interior node and the top, in
+// any order, must come out as the whole string's results at those stations, to the bit.
+TEST(WallOffsets, ResultsAtListedStationsAreTheWholeStringsThere) {
+  const Solved& s = HorizontalHole();
+  ASSERT_TRUE(s.result.converged);
+  const std::vector<Station> stations = StringStations(s.built.system);
+  int joint = -1;
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    if (stations[i].lower_body >= 0) joint = static_cast<int>(i);
+  }
+  ASSERT_GE(joint, 0);
+  const int top = static_cast<int>(stations.size()) - 1;
+  const std::vector<int> listed = {top, 0, joint, top / 2, 0};
+  std::vector<StaticNodeResult> all = StaticNodeResults(s.built.system, s.result.q, 1.0);
+  AddWallOffsets(s.built, s.result.q, all);
+  std::vector<StaticNodeResult> some = StaticNodeResults(s.built.system, s.result.q, 1.0, listed);
+  AddWallOffsets(s.built, s.result.q, some, listed);
+  ASSERT_EQ(some.size(), listed.size());
+  for (std::size_t i = 0; i < listed.size(); ++i) {
+    const StaticNodeResult& expected = all[listed[i]];
+    const StaticNodeResult& got = some[i];
+    EXPECT_EQ(got.s, expected.s) << listed[i];
+    EXPECT_EQ(got.displacement, expected.displacement) << listed[i];
+    EXPECT_EQ(got.force, expected.force) << listed[i];
+    EXPECT_EQ(got.moment, expected.moment) << listed[i];
+    EXPECT_EQ(got.von_mises_stress, expected.von_mises_stress) << listed[i];
+    EXPECT_EQ(got.wall_contact, expected.wall_contact) << listed[i];
+    EXPECT_EQ(got.md, expected.md) << listed[i];
+    EXPECT_EQ(got.hole_offset, expected.hole_offset) << listed[i];
+    EXPECT_EQ(got.offset_high_side_angle, expected.offset_high_side_angle) << listed[i];
+    EXPECT_EQ(got.clearance, expected.clearance) << listed[i];
+  }
+  EXPECT_GT(all[joint].force.norm(), 0.0);
+  EXPECT_THROW(AddWallOffsets(s.built, s.result.q, some, std::vector<int>{0}), std::exception);
+}
+
 TEST(WallOffsets, WithoutAWellNothingIsSet) {
   model::ModelInput input = testing::V1Rod();
   input.supports = {testing::ClampAt(0.0)};
