@@ -23,7 +23,7 @@ inline std::string CasePath(const std::string& relative) {
 
 // Runs `drillflex <command> <case> -o <dir>` and returns results.json (fails the test on a
 // non-zero exit status).
-// The directory a case's results go to: build/validation-results/<case without its extension>.
+// The directory a case's results go to: build-test/validation-results/<case without its extension>.
 inline std::string ResultsDirectory(const std::string& relative_case) {
   return (std::filesystem::path(DRILLFLEX_BINARY_DIR "/validation-results") /
           std::filesystem::path(relative_case).replace_extension())

@@ -28,4 +28,11 @@ double ForceElement::PotentialEnergy(const ElementState& state) const {
   return DoPotentialEnergy(state);
 }
 
+double ForceElement::PotentialEnergyChange(const ElementState& from, const ElementState& to) const {
+  if (from.poses.size() != bodies_.size() || to.poses.size() != bodies_.size()) {
+    throw LogicError(Describe() + ": wrong number of poses");
+  }
+  return DoPotentialEnergyChange(from, to);
+}
+
 }  // namespace drillflex::model

@@ -38,12 +38,20 @@ class ForceElement {
   void Evaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const;
   // Potential energy (J) of a conservative element; 0 for dissipative or non-conservative parts.
   double PotentialEnergy(const ElementState& state) const;
+  // The change of the element's potential energy from one state to another (J), including the work
+  // a dead load does against the motion between them (−W: a dead moment has no potential of its
+  // own, but over a step its work −M·ψ, ψ the turn between the states, is what the static solver's
+  // energy merit needs). Default: PotentialEnergy(to) − PotentialEnergy(from).
+  double PotentialEnergyChange(const ElementState& from, const ElementState& to) const;
   virtual std::string Describe() const = 0;
 
  protected:
   explicit ForceElement(std::vector<const Body*> bodies);
   virtual void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const = 0;
   virtual double DoPotentialEnergy(const ElementState& state) const = 0;
+  virtual double DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
+    return DoPotentialEnergy(to) - DoPotentialEnergy(from);
+  }
 
  private:
   std::vector<const Body*> bodies_;

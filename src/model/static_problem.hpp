@@ -37,6 +37,9 @@ class StaticModelProblem : public solvers::StaticProblem {
   }
   VecX StateResolution(const VecX& q) const override { return model_.StateResolution(q); }
   std::string DescribeCoordinate(int index) const override { return model_.DescribeCoordinate(index); }
+  double EnergyChange(const VecX& from, const VecX& to) const override {
+    return model_.PotentialEnergyChange(from, to, load_factor_);
+  }
   double load_factor() const { return load_factor_; }
 
  private:

@@ -342,6 +342,27 @@ Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, double load_
   return energies;
 }
 
+double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, double load_factor) const {
+  const auto before = Poses(from);
+  const auto after = Poses(to);
+  const bool parallel = bodies_.size() >= kParallelBodies;
+  const VecX rest = VecX::Zero(num_velocities_);
+  std::vector<double> elastic(bodies_.size()), potential(elements_.size());
+  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
+    elastic[b] = BodyElasticEnergy(bodies_[b], after[b]) - BodyElasticEnergy(bodies_[b], before[b]);
+  });
+  ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
+    const ForceElement& element = *elements_[e];
+    potential[e] = element.PotentialEnergyChange(StateOf(element, before, rest, 0.0, load_factor),
+                                                 StateOf(element, after, rest, 0.0, load_factor));
+  });
+  // Summed in model order: the same for any number of threads.
+  double change = 0.0;
+  for (const double term : elastic) change += term;
+  for (const double term : potential) change += term;
+  return change;
+}
+
 std::pair<int, int> SystemModel::NodeAt(double s) const { return FindNodeAt(bodies_, s); }
 
 std::pair<int, int> FindNodeAt(const std::vector<Body>& bodies_, double s) {

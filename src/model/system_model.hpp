@@ -70,6 +70,11 @@ class SystemModel {
                             double cD, double cM) const;
   SparseMat MassMatrix(const VecX& q) const;
   Energies ComputeEnergies(const VecX& q, const VecX& v, double load_factor) const;
+  // Π(to) − Π(from) at rest (J): the bodies' elastic energies and the elements' potential energies
+  // (with the dead loads' work over the step, ForceElement::PotentialEnergyChange), each term's
+  // difference formed on its own before the sum, so that a small change of a large energy survives
+  // round-off. The static residual at load_factor is its gradient along Increment.
+  double PotentialEnergyChange(const VecX& from, const VecX& to, double load_factor) const;
 
   // The element's state at (q, v): its bodies' poses and velocities.
   ElementState StateOf(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v,

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -423,30 +422,6 @@ std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place
       outcome.largest.empty() ? std::string() : fmt::format("; {}", outcome.largest), outcome.iterations, total_iterations);
 }
 
-// How much |R| at q changes when every coordinate moves by one rounding unit
-// (StaticProblem::StateResolution) with signs from a fixed pseudo-random pattern: the noise below
-// which no state q can bring the residual. The 3 km bench string at c = 1000: 0.28 N, which then
-// sets its tolerance (1e-8 of its weight asks 0.009 N; the floor was 759 N while the state held
-// absolute frame origins). 0 when the problem does not say.
-double RoundoffResidual(StaticProblem& problem, const VecX& q, const NewtonOptions& options) {
-  const VecX resolution = problem.StateResolution(q);
-  if (resolution.size() != problem.num_velocities()) return 0.0;
-  VecX signed_resolution = resolution;
-  std::uint32_t state = 2463534242u;  // xorshift32 (Marsaglia 2003), a fixed sequence
-  for (Eigen::Index j = 0; j < signed_resolution.size(); ++j) {
-    state ^= state << 13;
-    state ^= state >> 17;
-    state ^= state << 5;
-    if (state & 1u) signed_resolution[j] = -signed_resolution[j];
-  }
-  const VecX zero = VecX::Zero(problem.num_velocities());
-  problem.SetLoadFactor(1.0);
-  const VecX here = problem.Residual(options.time, q, zero, zero);
-  const VecX moved = problem.Residual(options.time, problem.Increment(q, signed_resolution), zero, zero);
-  const double noise = (moved - here).norm();
-  return std::isfinite(noise) ? noise : 0.0;
-}
-
 }  // namespace
 
 StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
@@ -457,7 +432,8 @@ StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
   // The tolerance, but never below the residual's round-off floor: a residual at the floor is as
   // small as the state can make it.
   const double asked = options.residual_tolerance * result.force_scale;
-  result.tolerance = std::max(asked, RoundoffResidual(problem, q_start, options));
+  problem.SetLoadFactor(1.0);
+  result.tolerance = std::max(asked, ResidualRoundoffFloor(problem, q_start, options.time));
   if (options.log && result.tolerance > asked) {
     options.log(fmt::format("  Newton tolerance {:.4g} N: the residual's round-off floor (the relative tolerance "
                             "asks {:.4g} N)", result.tolerance, asked));

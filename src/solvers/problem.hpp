@@ -9,6 +9,7 @@
 // A position increment dv (same size as v) is applied with the Lie-group update q ⊕ dv.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -86,7 +87,21 @@ class StaticProblem : public Problem {
   // Where coordinate `index` of v (or a residual row) sits in the problem, for messages: e.g. the
   // body and its distance from the bit. Default: the index alone.
   virtual std::string DescribeCoordinate(int index) const { return "coordinate " + std::to_string(index); }
+
+  // Π(to) − Π(from), J: the change of the total potential energy between two states at the present
+  // load factor, for a problem whose residual (v = a = 0) is the gradient of Π along Increment
+  // (conservative loads; a dead moment by its work over the turn between the two states). Formed
+  // as a sum of differences, term by term, so that a small change of a large energy is not lost to
+  // round-off. NaN: the problem has no energy (solvers/energy_trust_region.hpp cannot be used).
+  virtual double EnergyChange(const VecX& /*from*/, const VecX& /*to*/) const {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 };
+
+// The residual's round-off floor at q and the problem's load factor: how much |R| changes when every coordinate
+// moves by one rounding unit (StaticProblem::StateResolution) with signs from a fixed pseudo-random
+// pattern; 0 when the problem does not say. No state can bring |R| below it.
+double ResidualRoundoffFloor(StaticProblem& problem, const VecX& q, double time = 0.0);
 
 // cK·K + cD·D + cM·M of `problem` by central differences of its residual: the position
 // perturbations go through Increment (q ⊕ ±h e_j), those of v and a are h·max(1, |x_j|).

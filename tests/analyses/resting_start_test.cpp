@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "field_parts.hpp"
+#include "well_cases.hpp"
 #include "analyses/resting_start.hpp"
 #include "model/builder.hpp"
 #include "model/spring_elements.hpp"
@@ -28,30 +29,6 @@ using testing::kFt;
 using testing::kIn;
 using testing::kLbf;
 using testing::Part;
-
-model::ModelInput KickOffToTheSouth() {
-  model::ModelInput input;
-  model::Component stabilizer = Part(model::ComponentType::Stabilizer, 6.75, 2.8125, 5.0);
-  stabilizer.blade_diameter = 8.375 * kIn;
-  stabilizer.blade_length = 1.5 * kFt;
-  model::Component pipe = Part(model::ComponentType::Pipe, 5.0, 4.276, 30.0, 30);
-  pipe.joint_diameter = 6.625 * kIn;
-  pipe.joint_inner_diameter = 3.25 * kIn;
-  input.string.components = {Part(model::ComponentType::Bit, 8.5, 2.0, 1.0), stabilizer,
-                             Part(model::ComponentType::Collar, 6.75, 2.8125, 30.0, 3), pipe};
-  input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, 7850.0};
-  input.gravity = 9.81;
-  input.fluid = model::FluidConfig{1258.0, 0.02, {}, -1.0};
-  // Vertical to 2000 ft, then 6°/100 ft toward the south while turning to 225°, held at 30°.
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0},
-                                                            {2000.0 * kFt, 0.0, 180.0 * kDegree},
-                                                            {2500.0 * kFt, 30.0 * kDegree, 225.0 * kDegree},
-                                                            {4000.0 * kFt, 30.0 * kDegree, 225.0 * kDegree}});
-  input.hole = {well::HoleSection{{}, 8.5 * kIn, {}}};
-  input.bit_md = 2700.0 * kFt;  // 1008 ft of string: the top is 308 ft up the vertical hole
-  input.operation.weight_on_bit = 20000.0 * kLbf;
-  return input;
-}
 
 // The soft-string axial force (tension positive) at `s` from the bit: −WOB + ∫ w_b cos I ds, with
 // cos I at each body's middle MD (Johancsik's straight-section weight term, body by body).
@@ -111,7 +88,7 @@ StartForces Measure(const model::ModelInput& input, const model::BuiltModel& bui
 }
 
 TEST(RestingStart, MeetsTheHookWithUnstrainedCouplingsAndNoJointInTheWall) {
-  const model::ModelInput input = KickOffToTheSouth();
+  const model::ModelInput input = testing::KickOffToTheSouth();
   cms::ReductionCache cache;
   const model::BuiltModel built = model::BuildSystemModel(input, cache);
   const VecX q = RestingStart(input, built);
@@ -142,7 +119,7 @@ TEST(RestingStart, MeetsTheHookWithUnstrainedCouplingsAndNoJointInTheWall) {
 }
 
 TEST(RestingStart, StretchesTheStringByItsSoftStringTension) {
-  model::ModelInput input = KickOffToTheSouth();
+  model::ModelInput input = testing::KickOffToTheSouth();
   input.operation.weight_on_bit = 0.0;
   cms::ReductionCache cache;
   const model::BuiltModel built = model::BuildSystemModel(input, cache);

@@ -1,0 +1,381 @@
+#include "solvers/energy_trust_region.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "solvers/shifted_cholesky.hpp"
+
+namespace drillflex::solvers {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Trust-region constants (Nocedal & Wright, Algorithm 4.1).
+constexpr double kAcceptRatio = 1e-4;   // ρ above which a step is taken
+constexpr double kShrinkRatio = 0.25;   // ρ below which Δ shrinks to a quarter of the step
+constexpr double kGrowRatio = 0.75;     // ρ above which a step at the boundary doubles Δ
+constexpr double kBoundaryFraction = 0.8;
+// Moré–Sorensen: ‖p(σ)‖ within 10 % of Δ is on the boundary (Nocedal & Wright §4.3 use ~this).
+constexpr double kBoundaryTolerance = 0.1;
+constexpr int kSecularIterations = 10;
+// The first shift tried when H is indefinite, × max H_ii / max M_ii (the bracket then grows ×10).
+constexpr double kFirstShift = 1e-12;
+constexpr int kBisections = 4;          // tightening the bracket of the positive-definite threshold
+constexpr int kInverseIterations = 8;   // for the direction of most negative curvature
+// A lowest eigenvalue of the pencil above −this × max H_ii / max M_ii is round-off, not instability.
+constexpr double kNeutralCurvature = 1e-12;
+constexpr double kSmallestRadius = 1e-12;  // m: a trust radius below this ends the solve
+
+struct Step {
+  VecX p;
+  double shift = 0.0;         // σ of the factorization p was solved with
+  bool interior = false;      // the full Newton step (σ = 0) inside the region
+  bool negative_curvature = false;
+  double predicted = 0.0;     // m(0) − m(p) > 0, J
+  std::string failure;        // no step could be formed
+};
+
+class Minimizer {
+ public:
+  Minimizer(StaticProblem& problem, const EnergyTrustRegionOptions& options)
+      : problem_(problem), options_(options), zero_(VecX::Zero(problem.num_velocities())) {}
+
+  EnergyTrustRegionResult Run(const VecX& q_start);
+
+ private:
+  VecX Residual(const VecX& q) const { return problem_.Residual(options_.time, q, zero_, zero_); }
+  double MassNorm(const SparseMat& m, const VecX& p) const { return std::sqrt(std::max(p.dot(m * p), 0.0)); }
+  // The subproblem min m(p), ‖p‖_M ≤ radius (unscaled mass norm), by Moré–Sorensen.
+  Step Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radius, EnergyTrustRegionResult& result);
+  // The second-order correction at the trial point q (changed in place): a Newton step on the stiff
+  // directions only, −(H(q) + σ_c M)⁻¹ R(q) with σ_c the geometric mean of the step's shift and the
+  // stiffness scale, so that a spring stretched by the step's second-order error (k/m ≫ σ_c) is
+  // closed again while the soft motions (k/m ≪ σ_c) stay as the step left them. The tangent at the
+  // trial point, not the old one: a spring the step turned must close along its new direction.
+  // False when no correction could be formed.
+  bool SecondOrderCorrection(const VecX& residual, double shift, VecX& q, EnergyTrustRegionResult& result) const;
+  // The lowest eigenpair of (H, M) by inverse iteration on the factorization held (shift σ > −λ₁).
+  std::pair<double, VecX> LowestMode(ShiftedCholesky& cholesky) const;
+  // p + τz on the boundary ‖p + τz‖_M = radius, τ of the sign that lowers the model more.
+  VecX ToBoundary(const ShiftedCholesky& cholesky, const VecX& g, const VecX& p, const VecX& z, double radius) const;
+  double Predicted(const ShiftedCholesky& cholesky, const VecX& g, const VecX& p) const {
+    return -(g.dot(p) + 0.5 * p.dot(cholesky.stiffness() * p));
+  }
+  void Log(const std::string& line) const {
+    if (options_.log) options_.log(line);
+  }
+
+  StaticProblem& problem_;
+  const EnergyTrustRegionOptions& options_;
+  const VecX zero_;
+  double shift_scale_ = 0.0;  // max H_ii / max M_ii
+  double last_shift_ = 0.0;   // σ of the previous indefinite subproblem, a start for the next
+  double current_lowest_ = std::numeric_limits<double>::quiet_NaN();  // λ₁ of the last subproblem's H (NaN: positive definite)
+};
+
+std::pair<double, VecX> Minimizer::LowestMode(ShiftedCholesky& cholesky) const {
+  const SparseMat& m = cholesky.metric();
+  const Eigen::Index n = m.rows();
+  // A fixed start with every coordinate present (xorshift32, Marsaglia 2003).
+  VecX z(n);
+  std::uint32_t state = 2463534242u;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    state ^= state << 13;
+    state ^= state >> 17;
+    state ^= state << 5;
+    z[j] = static_cast<double>(state) / 4294967296.0 - 0.5;
+  }
+  for (int k = 0; k < kInverseIterations; ++k) {
+    z = cholesky.Solve(m * z);
+    const double norm = MassNorm(m, z);
+    if (!(norm > 0.0) || !std::isfinite(norm)) break;
+    z /= norm;
+  }
+  const double mass = z.dot(m * z);
+  const double curvature = mass > 0.0 ? z.dot(cholesky.stiffness() * z) / mass : 0.0;
+  return {curvature, z};
+}
+
+bool Minimizer::SecondOrderCorrection(const VecX& residual, double shift, VecX& q,
+                                      EnergyTrustRegionResult& result) const {
+  const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
+  const SparseMat m = problem_.IterationMatrix(options_.time, q, zero_, zero_, 0.0, 0.0, 1.0);
+  ShiftedCholesky cholesky(k, m);
+  double sigma = std::sqrt(std::max(shift, kFirstShift * shift_scale_) * shift_scale_);
+  bool positive = false;
+  for (int attempt = 0; attempt < 3 && !(positive = cholesky.Factorize(sigma)); ++attempt) sigma *= 10.0;
+  result.factorizations += cholesky.factorizations();
+  if (!positive) return false;
+  q = problem_.Increment(q, -cholesky.Solve(residual));
+  return true;
+}
+
+VecX Minimizer::ToBoundary(const ShiftedCholesky& cholesky, const VecX& g, const VecX& p, const VecX& z,
+                           double radius) const {
+  const SparseMat& m = cholesky.metric();
+  const VecX mz = m * z;
+  const double a = z.dot(mz), b = 2.0 * p.dot(mz), c = p.dot(m * p) - radius * radius;
+  if (!(a > 0.0)) return p;
+  const double root = std::sqrt(std::max(b * b - 4.0 * a * c, 0.0));
+  const VecX plus = p + ((-b + root) / (2.0 * a)) * z;
+  const VecX minus = p + ((-b - root) / (2.0 * a)) * z;
+  return Predicted(cholesky, g, plus) >= Predicted(cholesky, g, minus) ? plus : minus;
+}
+
+Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radius,
+                           EnergyTrustRegionResult& result) {
+  const SparseMat& m = cholesky.metric();
+  Step step;
+  current_lowest_ = std::numeric_limits<double>::quiet_NaN();
+  double lower = 0.0;        // σ at or below which H + σM is not (known) positive definite / p too long
+  double upper = kInfinity;  // σ above which p is too short
+  double threshold = 0.0;    // −λ₁ when H is indefinite: σ must exceed it
+  bool indefinite = false;
+  VecX z;
+  double sigma = 0.0;
+  if (cholesky.Factorize(0.0)) {
+    step.p = -cholesky.Solve(g);
+    if (MassNorm(m, step.p) <= radius) {
+      step.interior = true;
+      step.predicted = Predicted(cholesky, g, step.p);
+      return step;
+    }
+  } else {
+    // Bracket the threshold of positive definiteness from below by decades, then tighten it.
+    indefinite = true;
+    double failed = 0.0;
+    sigma = std::max(last_shift_, kFirstShift * shift_scale_);
+    while (!cholesky.Factorize(sigma)) {
+      failed = sigma;
+      sigma *= 10.0;
+      if (!std::isfinite(sigma) || sigma > 1e30 * std::max(shift_scale_, 1.0)) {
+        step.failure = "H + σM is not positive definite for any shift (a non-finite or unbounded tangent)";
+        return step;
+      }
+    }
+    double good = sigma;
+    for (int k = 0; k < kBisections && failed > 0.0; ++k) {
+      const double middle = std::sqrt(failed * good);
+      if (cholesky.Factorize(middle)) {
+        good = middle;
+      } else {
+        failed = middle;
+      }
+    }
+    if (!cholesky.has_factorization() || cholesky.shift() != good) cholesky.Factorize(good);
+    sigma = good;
+    double lowest = 0.0;
+    std::tie(lowest, z) = LowestMode(cholesky);
+    current_lowest_ = lowest;
+    result.lowest_curvature = std::isnan(result.lowest_curvature) ? lowest : std::min(result.lowest_curvature, lowest);
+    threshold = std::max({-lowest, failed, 0.0});
+    lower = threshold;
+    step.p = -cholesky.Solve(g);
+    // The hard case: even at the threshold the step stays inside; go along z to the boundary.
+    if (MassNorm(m, step.p) <= radius && lowest < 0.0) {
+      step.p = ToBoundary(cholesky, g, step.p, z, radius);
+      step.shift = sigma;
+      step.negative_curvature = true;
+      step.predicted = Predicted(cholesky, g, step.p);
+      last_shift_ = sigma;
+      return step;
+    }
+  }
+  // Secular iterations on φ(σ) = 1/Δ − 1/‖p(σ)‖ (Nocedal & Wright, Algorithm 4.3, in the M-norm:
+  // d‖p‖²/dσ = −2 pᵀM (H + σM)⁻¹ M p), safeguarded by the bracket [lower, upper].
+  for (int k = 0; k < kSecularIterations; ++k) {
+    const double norm = MassNorm(m, step.p);
+    if (std::abs(norm - radius) <= kBoundaryTolerance * radius) break;
+    if (norm > radius) {
+      lower = std::max(lower, sigma);
+    } else {
+      upper = std::min(upper, sigma);
+    }
+    const VecX w = cholesky.Solve(m * step.p);
+    const double slope = step.p.dot(m * w);
+    double next = slope > 0.0 ? sigma + (norm * norm / slope) * (norm - radius) / radius : kInfinity;
+    if (!(next > lower && next < upper)) {
+      next = std::isfinite(upper) ? (lower > 0.0 ? std::sqrt(lower * upper) : 0.5 * upper)
+                                  : 10.0 * std::max({lower, sigma, kFirstShift * shift_scale_});
+    }
+    while (!cholesky.Factorize(next)) {
+      lower = next;
+      next = std::isfinite(upper) ? 0.5 * (lower + upper) : 10.0 * next;
+    }
+    sigma = next;
+    step.p = -cholesky.Solve(g);
+    if (indefinite && MassNorm(m, step.p) < radius && sigma <= threshold * (1.0 + 1e-3)) {
+      step.p = ToBoundary(cholesky, g, step.p, z, radius);
+      step.negative_curvature = true;
+      break;
+    }
+  }
+  // Still outside after the iterations: cut back to the boundary along p (a descent direction, since
+  // H + σM is positive definite).
+  const double norm = MassNorm(m, step.p);
+  if (norm > radius * (1.0 + kBoundaryTolerance)) step.p *= radius / norm;
+  step.shift = sigma;
+  if (indefinite) last_shift_ = sigma;
+  step.predicted = Predicted(cholesky, g, step.p);
+  return step;
+}
+
+EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
+  EnergyTrustRegionResult result;
+  result.q = q_start;
+  VecX residual = Residual(result.q);
+  if (!residual.allFinite()) {
+    result.failure = "the residual of the start state is not finite (NaN or Inf)";
+    return result;
+  }
+  result.force_scale = options_.force_scale > 0.0 ? options_.force_scale : problem_.ForceScale();
+  if (!(result.force_scale > 0.0)) result.force_scale = residual.norm() > 0.0 ? residual.norm() : 1.0;
+  result.tolerance = std::max(options_.residual_tolerance * result.force_scale,
+                              ResidualRoundoffFloor(problem_, q_start, options_.time));
+  const double energy_noise = options_.energy_resolution * result.force_scale;
+  double mass_scale = 0.0;  // m̄ = trace(M)/3
+  double radius = options_.initial_radius;
+  bool full_newton_small = false;  // the last accepted step was a full Newton step within the increment tolerance
+  bool leaving_saddle = false;     // at a stationary point that is not a minimum, stepping off it
+  while (true) {
+    const double norm = residual.norm();
+    result.residual_norm = norm;
+    const SparseMat k = problem_.IterationMatrix(options_.time, result.q, zero_, zero_, 1.0, 0.0, 0.0);
+    const SparseMat m = problem_.IterationMatrix(options_.time, result.q, zero_, zero_, 0.0, 0.0, 1.0);
+    if (mass_scale <= 0.0) mass_scale = m.diagonal().sum() / 3.0;
+    const double largest_mass = m.diagonal().cwiseAbs().maxCoeff();
+    shift_scale_ = largest_mass > 0.0 ? k.diagonal().cwiseAbs().maxCoeff() / largest_mass : 0.0;
+    if (!(mass_scale > 0.0) || !(shift_scale_ > 0.0) || !std::isfinite(shift_scale_)) {
+      throw LogicError("MinimizeEnergy: the problem has no positive mass matrix (IterationMatrix with cM = 1), or "
+                       "its tangent is zero or not finite");
+    }
+    ShiftedCholesky cholesky(k, m);
+    const bool small = norm <= result.tolerance || full_newton_small;
+    if (small) {
+      const bool positive = cholesky.Factorize(0.0);
+      if (positive || !options_.require_stable) {
+        result.converged = true;
+        result.stable = positive;
+        result.factorizations += cholesky.factorizations();
+        return result;
+      }
+      // Stationary but not a minimum: unless the lowest curvature is round-off, step off along it,
+      // from at least the first radius (once: a refused step shrinks it as any other).
+      if (!leaving_saddle) radius = std::max(radius, options_.initial_radius);
+      leaving_saddle = true;
+    } else {
+      leaving_saddle = false;
+    }
+    if (result.iterations >= options_.max_iterations) {
+      result.factorizations += cholesky.factorizations();
+      result.failure = fmt::format("no stable equilibrium within {} trust-region iterations", options_.max_iterations);
+      return result;
+    }
+    ++result.iterations;
+    const double scaled_radius = radius * std::sqrt(mass_scale);
+    Step step = Subproblem(cholesky, residual, scaled_radius, result);
+    if (!step.failure.empty()) {
+      result.factorizations += cholesky.factorizations();
+      result.failure = step.failure;
+      return result;
+    }
+    if (small && !std::isnan(current_lowest_) && current_lowest_ > -kNeutralCurvature * shift_scale_) {
+      // The factorization failed on round-off of a positive semidefinite H: a neutral equilibrium.
+      result.factorizations += cholesky.factorizations();
+      result.converged = true;
+      result.stable = true;
+      return result;
+    }
+    const double step_length = std::sqrt(std::max(step.p.dot(m * step.p), 0.0) / mass_scale);
+    VecX trial = problem_.Increment(result.q, step.p);
+    VecX trial_residual = Residual(trial);
+    double released = trial_residual.allFinite() ? -problem_.EnergyChange(result.q, trial) : -kInfinity;
+    if (!std::isfinite(released)) released = -kInfinity;
+    double ratio = step.predicted > 0.0 ? released / step.predicted : -kInfinity;
+    bool corrected = false;
+    result.factorizations += cholesky.factorizations();
+    // Before a poor step is refused: its second-order correction.
+    if (ratio < kShrinkRatio && trial_residual.allFinite()) {
+      VecX corrected_q = trial;
+      if (SecondOrderCorrection(trial_residual, step.shift, corrected_q, result)) {
+        VecX corrected_residual = Residual(corrected_q);
+        const double corrected_released =
+            corrected_residual.allFinite() ? -problem_.EnergyChange(result.q, corrected_q) : -kInfinity;
+        if (std::isfinite(corrected_released) && corrected_released > released) {
+          trial = std::move(corrected_q);
+          trial_residual = std::move(corrected_residual);
+          released = corrected_released;
+          ratio = released / step.predicted;
+          corrected = true;
+        }
+      }
+    }
+    const double trial_norm = trial_residual.allFinite() ? trial_residual.norm() : kInfinity;
+    bool accept = false;
+    const char* judged = "energy";
+    if (step.interior && step.predicted < energy_noise) {
+      // Below the energy's resolution: a full Newton step is judged by |R|.
+      accept = trial_norm < norm;
+      judged = "|R|";
+    } else if (step.predicted < energy_noise) {
+      accept = released > -energy_noise && trial_norm < kInfinity;
+      judged = "noise";
+    } else {
+      accept = ratio > kAcceptRatio;
+    }
+    if (ratio < kShrinkRatio && !(step.interior && accept)) {
+      radius = kShrinkRatio * std::min(radius, step_length);
+    } else if (ratio > kGrowRatio && step_length >= kBoundaryFraction * radius) {
+      radius = std::min(2.0 * radius, options_.max_radius);
+    }
+    Log(fmt::format("  trust region {:3d}: |R| {:.4e} -> {:.4e} N, released {:.4e} J of {:.4e} ({} rho {:.3f}), "
+                    "step {:.3e} m {}{}{}, radius {:.3e} m{}",
+                    result.iterations, norm, trial_norm, released, step.predicted, judged, ratio, step_length,
+                    step.interior ? "Newton" : step.negative_curvature ? "negative curvature" : "boundary",
+                    step.shift > 0.0 ? fmt::format(" sigma {:.3e}", step.shift) : std::string(),
+                    corrected ? " +SOC" : "", radius, accept ? "" : "; refused"));
+    full_newton_small = false;
+    if (accept) {
+      result.q = std::move(trial);
+      residual = std::move(trial_residual);
+      result.energy_released += released;
+      if (step.negative_curvature) ++result.negative_curvature_steps;
+      if (corrected) ++result.second_order_corrections;
+      full_newton_small = step.interior && options_.increment_tolerance > 0.0 &&
+                          step.p.lpNorm<Eigen::Infinity>() <= options_.increment_tolerance;
+    }
+    if (radius < kSmallestRadius) {
+      result.residual_norm = residual.norm();
+      result.failure = fmt::format("the trust radius fell below {:.0e} m (no step releases energy; |R| {:.4g} N)",
+                                   kSmallestRadius, result.residual_norm);
+      return result;
+    }
+  }
+}
+
+}  // namespace
+
+EnergyTrustRegionResult MinimizeEnergy(StaticProblem& problem, const VecX& q_start,
+                                       const EnergyTrustRegionOptions& options) {
+  if (q_start.size() != problem.num_positions() || !q_start.allFinite()) {
+    throw LogicError("MinimizeEnergy: q_start has the wrong size or is not finite");
+  }
+  if (!(options.residual_tolerance > 0.0) || options.max_iterations < 1 || !(options.initial_radius > 0.0) ||
+      !(options.max_radius >= options.initial_radius)) {
+    throw LogicError("MinimizeEnergy: invalid options");
+  }
+  if (std::isnan(problem.EnergyChange(q_start, q_start))) {
+    throw LogicError("MinimizeEnergy: the problem has no energy (StaticProblem::EnergyChange)");
+  }
+  Minimizer minimizer(problem, options);
+  return minimizer.Run(q_start);
+}
+
+}  // namespace drillflex::solvers
