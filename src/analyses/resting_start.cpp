@@ -123,7 +123,14 @@ class RestingLine {
     }
   }
 
-  Vec3 At(double u) const { return trajectory_.Position(bit_md_ - u) + Offset(u); }
+  // Above the first survey station (a string whose top hangs at the surface and is stretched above
+  // it) the hole axis goes on straight along its first tangent (Trajectory clamps there).
+  Vec3 At(double u) const {
+    const double md = bit_md_ - u, start = trajectory_.start_md();
+    const Vec3 axis = md >= start ? trajectory_.Position(md)
+                                  : trajectory_.Position(start) + (md - start) * trajectory_.Tangent(start);
+    return axis + Offset(u);
+  }
 
   // The u > u_start whose point lies `chord` from `from` (the chord of a straight body), by the
   // secant method from u_start + chord; the line is nearly straight over a body, so two or three

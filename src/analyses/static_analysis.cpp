@@ -11,6 +11,7 @@
 #include "analyses/coupling_regap.hpp"
 #include "analyses/dynamic_relaxation.hpp"
 #include "analyses/resting_start.hpp"
+#include "analyses/static_minimum.hpp"
 #include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
 #include "model/internal_forces.hpp"
@@ -190,6 +191,7 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
     result.iterations = relaxed.steps;
     result.load_steps = 1;
     result.residual_norm = relaxed.residual_norm;
+    result.method = "dynamic-relaxation";
     return result;
   }
   model::StaticModelProblem problem(built.system);
@@ -236,7 +238,9 @@ StaticResult WithResults(const model::BuiltModel& built, StaticResult result) {
 }  // namespace
 
 StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start) {
-  return WithResults(built, SolveEquilibrium(built, settings, start));
+  StaticResult result = WithResults(built, SolveEquilibrium(built, settings, start));
+  if (result.method.empty()) result.method = "newton";
+  return result;
 }
 
 std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q) {
@@ -453,14 +457,38 @@ StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltM
   if (!input.supports.empty() || !input.trajectory || settings.method == StaticMethod::DynamicRelaxation) {
     return RunStatic(built, settings);
   }
+  const StaticMinimum minimum = SolveStaticMinimum(input, built, cache, settings);
+  if (minimum.converged) {
+    StaticResult result;
+    result.q = minimum.q;
+    result.iterations = minimum.iterations;
+    result.residual_norm = minimum.residual_norm;
+    result.converged = true;
+    result.stable = true;
+    result.method = input.static_sliding && !minimum.at_rest_only ? "energy-minimum+friction" : "energy-minimum";
+    if (minimum.at_rest_only) {
+      result.warnings.push_back("the equilibrium of the string at rest (no rotating friction): " + minimum.failure +
+                                "; the transient analysis follows such a string in time");
+    }
+    return WithResults(built, result);
+  }
+  Log(settings, fmt::format("static: the energy's minimum was not found ({}); the older paths follow", minimum.failure));
   try {
-    return WithResults(built, SolveFromRestingStart(input, built, cache, settings));
+    StaticResult result = WithResults(built, SolveFromRestingStart(input, built, cache, settings));
+    result.method = "coupling-stages";
+    result.warnings.push_back("found by the fallback path (coupling stages from the resting start) after the energy "
+                              "minimization stopped: " + minimum.failure + "; its stability is not checked");
+    return result;
   } catch (const SolverError& error) {
     Log(settings, fmt::format("static: the solve from the resting start failed: {}", error.what()));
     // A start the soft-string estimate got wrong (e.g. a string buckled in a vertical hole):
     // the slower path below does not depend on it.
   }
-  return WithResults(built, SolveByReleasingTheTop(input, built, cache, settings));
+  StaticResult result = WithResults(built, SolveByReleasingTheTop(input, built, cache, settings));
+  result.method = "centreline-release";
+  result.warnings.push_back("found by the fallback path (from the centreline, the top released onto the wall) after "
+                            "the energy minimization stopped: " + minimum.failure + "; its stability is not checked");
+  return result;
 }
 
 }  // namespace drillflex::analyses

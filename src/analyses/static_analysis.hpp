@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
@@ -78,6 +79,15 @@ struct StaticResult {
   std::vector<SupportReaction> reactions; // one per case support, in case order
   std::vector<ContactReport> contacts;     // wall contacts carrying force, from the bit upward
   std::optional<BitReport> bit;            // in a well, with a support at the bit
+  // How the equilibrium was found (results.json `static.method_used`): "newton" (load stepping),
+  // "energy-minimum" (the energy trust region from the resting start), "energy-minimum+friction"
+  // (then continued in the rotating friction), "coupling-stages" or "centreline-release" (the
+  // older paths, kept as fallbacks), "dynamic-relaxation".
+  std::string method;
+  // What the engineer must know about the answer (a fallback that was needed, a rotating string
+  // answered at rest), in words; also in results.json (`static.warnings`).
+  std::vector<std::string> warnings;
+  bool stable = false;  // the tangent stiffness has no negative eigenvalue (checked by the solver)
 };
 
 // The contacts carrying force and the bit report at a state (filled in by RunStatic).

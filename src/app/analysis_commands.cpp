@@ -37,8 +37,9 @@ std::string Show(const io::Case& c, double si, Quantity quantity, int digits = 5
 }
 
 void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
-  std::cout << fmt::format("static: converged in {} Newton iterations, {} load steps (|R| = {:.3g} N)\n",
-                           result.iterations, result.load_steps, result.residual_norm);
+  std::cout << fmt::format("static: converged ({}) in {} iterations (|R| = {:.3g} N){}\n", result.method,
+                           result.iterations, result.residual_norm, result.stable ? ", stable" : "");
+  for (const std::string& warning : result.warnings) std::cout << "  warning: " << warning << "\n";
   // Where along the string: s from the bit, and the MD with a well.
   auto where = [&](double s, double md) {
     return c.well ? fmt::format("{} from the bit (MD {})", Show(c, s, Quantity::Length), Show(c, md, Quantity::Length))

@@ -161,6 +161,8 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
                          {"moment", out.Vector(reaction.moment, Quantity::Moment)}});
   }
   files.json()["static"] = {{"converged", result.converged},
+                            {"method_used", result.method},
+                            {"warnings", result.warnings},
                             {"iterations", result.iterations},
                             {"load_steps", result.load_steps},
                             {"residual_norm", out(result.residual_norm, Quantity::Force)},

@@ -1,5 +1,7 @@
 #include "model/body.hpp"
 
+#include "core/so3.hpp"
+
 namespace drillflex::model {
 
 Vec3 BodyPose::NodeOffset(const Body& body, int node) const {
@@ -24,6 +26,15 @@ BodyPose PoseOf(const Body& body, const VecX& q) {
   pose.A = pose.rotation.toRotationMatrix();
   pose.eta = q.segment(body.q_offset + 7, body.flexible_count);
   return pose;
+}
+
+NodeMove NodeMoveBetween(const Body& body, const BodyPose& from, const BodyPose& to, int node) {
+  NodeMove move;
+  move.translation = (to.displacement - from.displacement) + to.A * to.NodeOffset(body, node) -
+                     from.A * from.NodeOffset(body, node);
+  move.rotation = so3::LogMap(to.A * from.A.transpose()) +
+                  0.5 * (to.A + from.A) * (to.NodeRotation(body, node) - from.NodeRotation(body, node));
+  return move;
 }
 
 void SetReferencePose(const Body& body, VecX& q) {

@@ -72,6 +72,17 @@ struct BodyPose {
 
 BodyPose PoseOf(const Body& body, const VecX& q);
 
+// How node k moved between two poses of its body, global: `translation` from the frames'
+// displacements (not their absolute origins, kilometres away: a move of 1e-7 m would keep six
+// digits), m; `rotation` the frame's turn log(A_to A_fromᵀ) plus the node's small elastic turn
+// Ψ_k Δη taken to global by the mean of the two frames, rad. Along an increment, the virtual
+// displacement and rotation the residual maps a nodal force and moment through.
+struct NodeMove {
+  Vec3 translation = Vec3::Zero();
+  Vec3 rotation = Vec3::Zero();
+};
+NodeMove NodeMoveBetween(const Body& body, const BodyPose& from, const BodyPose& to, int node);
+
 // Writes the undeformed placement of the body into q (η = 0).
 void SetReferencePose(const Body& body, VecX& q);
 

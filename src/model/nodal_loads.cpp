@@ -120,23 +120,11 @@ double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {
 
 double NodalLoadElement::DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
   const Body& body = *bodies()[0];
-  const BodyPose& before = *from.poses[0];
-  const BodyPose& after = *to.poses[0];
   double change = 0.0;
   for (int k = 0; k < body.node_count(); ++k) {
-    if (!forces_[k].isZero(0.0)) {
-      // The node's move from the frames' displacements (not their absolute origins, kilometres
-      // away: a move of 1e-7 m would keep only six digits).
-      const Vec3 moved = (after.displacement - before.displacement) + after.A * after.NodeOffset(body, k) -
-                         before.A * before.NodeOffset(body, k);
-      change -= forces_[k].dot(moved);
-    }
-    if (!moments_[k].isZero(0.0)) {
-      // The frame's turn exactly, the node's elastic turn Ψ_k Δη (body frame) as the residual has it,
-      // to global by the mean of the two frames.
-      const Vec3 elastic = after.NodeRotation(body, k) - before.NodeRotation(body, k);
-      change -= moments_[k].dot(so3::LogMap(after.A * before.A.transpose()) + 0.5 * (after.A + before.A) * elastic);
-    }
+    if (forces_[k].isZero(0.0) && moments_[k].isZero(0.0)) continue;
+    const NodeMove move = NodeMoveBetween(body, *from.poses[0], *to.poses[0], k);
+    change -= forces_[k].dot(move.translation) + moments_[k].dot(move.rotation);
   }
   return to.load_factor * change;
 }

@@ -21,10 +21,9 @@ class NodalLoadElement : public ForceElement {
   void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;
   // −λ Σ F_k · (r_k − r_k,ref) is path-dependent for the moments; only the forces' part is reported.
   double DoPotentialEnergy(const ElementState& state) const override;
-  // −λ Σ (F_k · (r_k,to − r_k,from) + M_k · ψ_k): the dead loads' work over a step, ψ_k the node's
-  // turn (global) between the states, log(A_to A_fromᵀ) + ½(A_from + A_to) Ψ_k Δη (the frame's turn,
-  // exact about a fixed axis as a twist under the torque on bit, and the node's small elastic turn
-  // as the residual has it): its derivative along an increment is the residual's virtual work.
+  // −λ Σ (F_k · Δx_k + M_k · Δψ_k): the dead loads' work over a step, Δx_k and Δψ_k the node's move
+  // and turn (model::NodeMoveBetween; the turn exact about a fixed axis, as a twist under the torque
+  // on bit): its derivative along an increment is the residual's virtual work.
   double DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const override;
 
  private:

@@ -13,21 +13,32 @@ namespace drillflex::model {
 
 class StaticModelProblem : public solvers::StaticProblem {
  public:
-  explicit StaticModelProblem(const SystemModel& model, double load_scale = 1.0)
-      : model_(model), load_scale_(load_scale), load_factor_(load_scale) {}
+  // What the solver's load factor λ (SetLoadFactor) ramps: the applied loads (load_scale × λ), or,
+  // with the loads at load_scale, the wall friction coefficients (friction factor λ: the string
+  // from at rest to rotating, static-solver.md §6).
+  enum class Ramp { kLoads, kFriction };
+
+  explicit StaticModelProblem(const SystemModel& model, double load_scale = 1.0, Ramp ramp = Ramp::kLoads)
+      : model_(model), load_scale_(load_scale), load_factor_(load_scale), ramp_(ramp) {}
 
   int num_positions() const override { return model_.num_positions(); }
   int num_velocities() const override { return model_.num_velocities(); }
   // Twists keep the bodies' shapes (SystemModel::IncrementKeepingShape).
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.IncrementKeepingShape(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
-    return model_.Residual(t, q, v, a, load_factor_);
+    return model_.Residual(t, q, v, a, Load());
   }
   SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double cK, double cD,
                             double cM) const override {
-    return model_.IterationMatrix(t, q, v, a, load_factor_, cK, cD, cM);
+    return model_.IterationMatrix(t, q, v, a, Load(), cK, cD, cM);
   }
-  void SetLoadFactor(double load_factor) override { load_factor_ = load_scale_ * load_factor; }
+  void SetLoadFactor(double load_factor) override {
+    if (ramp_ == Ramp::kLoads) {
+      load_factor_ = load_scale_ * load_factor;
+    } else {
+      friction_factor_ = load_factor;
+    }
+  }
   double ForceScale() const override { return std::abs(load_scale_) * model_.force_scale(); }
   bool IsIterationMatrixSymmetric() const override { return false; }
   // How far the increment moves the farthest node across the string (m): the trust radius then
@@ -38,14 +49,18 @@ class StaticModelProblem : public solvers::StaticProblem {
   VecX StateResolution(const VecX& q) const override { return model_.StateResolution(q); }
   std::string DescribeCoordinate(int index) const override { return model_.DescribeCoordinate(index); }
   double EnergyChange(const VecX& from, const VecX& to) const override {
-    return model_.PotentialEnergyChange(from, to, load_factor_);
+    return model_.PotentialEnergyChange(from, to, Load());
   }
   double load_factor() const { return load_factor_; }
 
  private:
+  LoadParameters Load() const { return {load_factor_, friction_factor_}; }
+
   const SystemModel& model_;
   double load_scale_ = 1.0;
-  double load_factor_ = 1.0;  // the model's load factor: load_scale × the solver's
+  double load_factor_ = 1.0;  // the model's load factor: load_scale × the solver's (Ramp::kLoads)
+  double friction_factor_ = 1.0;  // the solver's load factor with Ramp::kFriction
+  Ramp ramp_ = Ramp::kLoads;
 };
 
 }  // namespace drillflex::model

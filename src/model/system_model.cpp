@@ -161,16 +161,17 @@ std::vector<BodyPose> SystemModel::Poses(const VecX& q) const {
 }
 
 ElementState SystemModel::StateOf(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v,
-                                  double t, double load_factor) const {
+                                  double t, LoadParameters load) const {
   ElementState state;
-  FillState(element, poses, v, t, load_factor, state);
+  FillState(element, poses, v, t, load, state);
   return state;
 }
 
 void SystemModel::FillState(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v, double t,
-                            double load_factor, ElementState& state) const {
+                            LoadParameters load, ElementState& state) const {
   state.time = t;
-  state.load_factor = load_factor;
+  state.load_factor = load.load_factor;
+  state.friction_factor = load.friction_factor;
   state.poses.clear();
   state.velocity.resize(element.local_size());
   int offset = 0;
@@ -226,7 +227,7 @@ void ForEachIndex(std::size_t count, bool parallel, const Task& task) {
 // sum is bit for bit the same for any number of threads. The elements
 // of one body are evaluated by the thread that owns it, into per-thread scratch (no allocation once
 // warm); those of several bodies (couplings) beforehand, each once, and stored.
-VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor) const {
+VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load) const {
   VecX residual = VecX::Zero(num_velocities_);
   const auto poses = Poses(q);
   const bool moving = !v.isZero(0.0);
@@ -237,7 +238,7 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
     const int e = shared_elements_[i];
     thread_local ElementState state;
     ElementContribution contribution;
-    FillState(*elements_[e], poses, v, t, load_factor, state);
+    FillState(*elements_[e], poses, v, t, load, state);
     elements_[e]->Evaluate(state, false, contribution);
     shared_forces[e] = std::move(contribution.force);
   });
@@ -258,7 +259,7 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
         rows += shared_forces[e].segment(LocalOffset(e, static_cast<int>(b)), n);
         continue;
       }
-      FillState(*elements_[e], poses, v, t, load_factor, state);
+      FillState(*elements_[e], poses, v, t, load, state);
       elements_[e]->Evaluate(state, false, contribution);
       rows += contribution.force;
     }
@@ -266,13 +267,13 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
   return residual;
 }
 
-SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor,
+SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load,
                                        double cK, double cD, double cM) const {
   const auto poses = Poses(q);
   const bool parallel = bodies_.size() >= kParallelBodies;
   // cK ∂f/∂q + cD ∂f/∂v of an element, into contribution.stiffness.
   const auto element_block = [&](int e, ElementState& state, ElementContribution& contribution) {
-    FillState(*elements_[e], poses, v, t, load_factor, state);
+    FillState(*elements_[e], poses, v, t, load, state);
     elements_[e]->Evaluate(state, true, contribution);
     contribution.stiffness *= cK;
     if (cD != 0.0) contribution.stiffness.noalias() += cD * contribution.damping;
@@ -320,7 +321,7 @@ SparseMat SystemModel::MassMatrix(const VecX& q) const {
   return matrix;
 }
 
-Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, double load_factor) const {
+Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, LoadParameters load) const {
   const auto poses = Poses(q);
   const bool parallel = bodies_.size() >= kParallelBodies;
   // Each term on any thread, the sums in the model's order: the same for any number of threads.
@@ -331,7 +332,7 @@ Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, double load_
     elastic[b] = BodyElasticEnergy(body, poses[b]);
   });
   ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
-    potential[e] = elements_[e]->PotentialEnergy(StateOf(*elements_[e], poses, v, 0.0, load_factor));
+    potential[e] = elements_[e]->PotentialEnergy(StateOf(*elements_[e], poses, v, 0.0, load));
   });
   Energies energies;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -342,7 +343,7 @@ Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, double load_
   return energies;
 }
 
-double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, double load_factor) const {
+double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, LoadParameters load) const {
   const auto before = Poses(from);
   const auto after = Poses(to);
   const bool parallel = bodies_.size() >= kParallelBodies;
@@ -353,8 +354,8 @@ double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, doub
   });
   ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
     const ForceElement& element = *elements_[e];
-    potential[e] = element.PotentialEnergyChange(StateOf(element, before, rest, 0.0, load_factor),
-                                                 StateOf(element, after, rest, 0.0, load_factor));
+    potential[e] = element.PotentialEnergyChange(StateOf(element, before, rest, 0.0, load),
+                                                 StateOf(element, after, rest, 0.0, load));
   });
   // Summed in model order: the same for any number of threads.
   double change = 0.0;

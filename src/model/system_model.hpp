@@ -63,25 +63,25 @@ class SystemModel {
   // moves no node on it; axial motion (the stretch of a long string) closes no wall contact.
   double LargestLateralNodeTranslation(const VecX& q, const VecX& dv) const;
 
-  VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor) const;
+  VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load) const;
   // Both matrices have a fixed pattern (model/block_pattern.hpp): dense body blocks and the blocks of
   // bodies sharing an element, structural zeros included, the same at every state.
-  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, double load_factor, double cK,
+  SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load, double cK,
                             double cD, double cM) const;
   SparseMat MassMatrix(const VecX& q) const;
-  Energies ComputeEnergies(const VecX& q, const VecX& v, double load_factor) const;
+  Energies ComputeEnergies(const VecX& q, const VecX& v, LoadParameters load) const;
   // Π(to) − Π(from) at rest (J): the bodies' elastic energies and the elements' potential energies
   // (with the dead loads' work over the step, ForceElement::PotentialEnergyChange), each term's
   // difference formed on its own before the sum, so that a small change of a large energy survives
-  // round-off. The static residual at load_factor is its gradient along Increment.
-  double PotentialEnergyChange(const VecX& from, const VecX& to, double load_factor) const;
+  // round-off. The static residual at `load` is its gradient along Increment.
+  double PotentialEnergyChange(const VecX& from, const VecX& to, LoadParameters load) const;
 
   // The element's state at (q, v): its bodies' poses and velocities.
   ElementState StateOf(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v,
-                       double t, double load_factor) const;
+                       double t, LoadParameters load) const;
   // The same into `state`, reusing its storage.
   void FillState(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v, double t,
-                 double load_factor, ElementState& state) const;
+                 LoadParameters load, ElementState& state) const;
   int IndexOf(const Body* body) const;
   // Where velocity coordinate `index` sits, for messages: its body, the body's span from the bit
   // and the coordinate's kind (frame translation or rotation, or mode j).

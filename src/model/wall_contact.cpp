@@ -262,6 +262,16 @@ std::string WallContactElement::Describe() const {
   return fmt::format("wall contact at {:.4g} m from the bit", body.s_start + body.reduced->node_positions[node_].x());
 }
 
+namespace {
+// The parameters with the friction coefficients scaled by the state's friction factor.
+WallContactParameters WithFrictionFactor(const WallContactParameters& p, double factor) {
+  WallContactParameters scaled = p;
+  scaled.axial_friction *= factor;
+  scaled.tangential_friction *= factor;
+  return scaled;
+}
+}  // namespace
+
 void WallContactElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
   const Body& body = *bodies()[0];
   const BodyPose& pose = *state.poses[0];
@@ -269,7 +279,10 @@ void WallContactElement::DoEvaluate(const ElementState& state, bool with_matrice
   const HoleGeometry g = LocateInHole(*wellbore_, motion.position, md_hint_.load(std::memory_order_relaxed),
                                       parameters_.contact_radius);
   md_hint_.store(g.path_md, std::memory_order_relaxed);
-  const ContactForce c = ComputeContactForce(g, motion, parameters_, with_matrices);
+  const ContactForce c =
+      state.friction_factor == 1.0
+          ? ComputeContactForce(g, motion, parameters_, with_matrices)
+          : ComputeContactForce(g, motion, WithFrictionFactor(parameters_, state.friction_factor), with_matrices);
   if (!c.active) return;
   // The force acts at the contact point x + R_c n: moment R_c n × F about the node.
   AddPointForce(body, pose, node_, motion, c.force, parameters_.contact_radius * g.normal, &c.jacobian,
@@ -284,12 +297,23 @@ double WallContactElement::DoPotentialEnergy(const ElementState& state) const {
   return g.penetration > 0.0 ? 0.5 * parameters_.normal_stiffness * g.penetration * g.penetration : 0.0;
 }
 
+double WallContactElement::DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
+  const double elastic = DoPotentialEnergy(to) - DoPotentialEnergy(from);
+  if (parameters_.tangential_friction == 0.0 && parameters_.axial_friction == 0.0) return elastic;
+  const WallContactResult before = Result(from), after = Result(to);
+  if (!before.in_contact && !after.in_contact) return elastic;
+  const NodeMove move = NodeMoveBetween(*bodies()[0], *from.poses[0], *to.poses[0], node_);
+  const double work = 0.5 * (before.friction_force + after.friction_force).dot(move.translation) +
+                      0.5 * (before.moment + after.moment).dot(move.rotation);
+  return elastic - work;
+}
+
 WallContactResult WallContactElement::Result(const ElementState& state) const {
   const Body& body = *bodies()[0];
   const NodeMotion motion = ComputeNodeMotion(body, *state.poses[0], node_, state.velocity);
   const HoleGeometry g = LocateInHole(*wellbore_, motion.position, md_hint_.load(std::memory_order_relaxed),
                                       parameters_.contact_radius);
-  const ContactForce c = ComputeContactForce(g, motion, parameters_, false);
+  const ContactForce c = ComputeContactForce(g, motion, WithFrictionFactor(parameters_, state.friction_factor), false);
   WallContactResult r;
   r.in_contact = c.active;
   r.md = g.md;

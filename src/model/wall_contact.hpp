@@ -119,6 +119,11 @@ class WallContactElement : public ForceElement {
   void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;
   // ½ k_n δ² for δ > 0 (the elastic part of the normal force).
   double DoPotentialEnergy(const ElementState& state) const override;
+  // The elastic part's difference, and with friction (a rotating string's prescribed sliding, which
+  // has no potential) minus its work over the step by the trapezoidal rule, ½(F_t,from + F_t,to)·Δx
+  // + ½(M_from + M_to)·Δψ (model::NodeMoveBetween): the static solver's merit for a string whose
+  // friction acts around it, exact to second order in the step.
+  double DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const override;
 
  private:
   int node_;

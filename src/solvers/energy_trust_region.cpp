@@ -321,8 +321,9 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     bool accept = false;
     const char* judged = "energy";
     if (step.interior && step.predicted < energy_noise) {
-      // Below the energy's resolution: a full Newton step is judged by |R|.
-      accept = trial_norm < norm;
+      // Near the energy's resolution: a full Newton step is taken when it lowers |R|, or when the
+      // energy it released still agrees with the model (a ratio that noise would not give).
+      accept = trial_norm < norm || (ratio > kShrinkRatio && ratio < 1.0 / kShrinkRatio);
       judged = "|R|";
     } else if (step.predicted < energy_noise) {
       accept = released > -energy_noise && trial_norm < kInfinity;
@@ -330,7 +331,7 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     } else {
       accept = ratio > kAcceptRatio;
     }
-    if (ratio < kShrinkRatio && !(step.interior && accept)) {
+    if (!accept || (ratio < kShrinkRatio && !step.interior)) {
       radius = kShrinkRatio * std::min(radius, step_length);
     } else if (ratio > kGrowRatio && step_length >= kBoundaryFraction * radius) {
       radius = std::min(2.0 * radius, options_.max_radius);

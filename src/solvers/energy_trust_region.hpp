@@ -47,9 +47,10 @@ struct EnergyTrustRegionOptions {
   int max_iterations = 400;
   double initial_radius = 1e-3;      // Δ₀, m (the mass-weighted RMS displacement of a step)
   double max_radius = 10.0;          // m
-  // The energy change (J) per newton of force scale below which two energies are not told apart;
-  // there an interior Newton step is judged by |R|.
-  double energy_resolution = 1e-10;
+  // The energy change (J) per newton of force scale below which two energies are not told apart
+  // (a contact's ½ k δ² with δ from positions kilometres from the origin is known to ~1e-9 J); there
+  // an interior Newton step is also taken when it lowers |R|.
+  double energy_resolution = 1e-12;
   bool require_stable = true;  // false: a stationary point is an answer (no curvature check)
   double time = 0.0;           // t passed to Residual / IterationMatrix
   // One line per iteration (|R|, the energy released, ρ, Δ, σ, the kind of step); none when empty.

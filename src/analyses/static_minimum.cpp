@@ -1,0 +1,100 @@
+#include "analyses/static_minimum.hpp"
+
+#include <fmt/format.h>
+
+#include "analyses/resting_start.hpp"
+#include "analyses/static_analysis.hpp"
+#include "model/static_problem.hpp"
+#include "solvers/energy_trust_region.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+// The trust-region iterations of one solve (the bundled example takes ~30).
+constexpr int kMaxTrustRegionIterations = 1000;
+// The first trust radius, m (a mass-weighted RMS move of the string): a tenth of a typical
+// clearance's few centimetres, over the part of the string that moves.
+constexpr double kInitialRadius = 1e-3;
+// The friction continuation of a rotating string: the largest lateral move of a node in a Newton
+// step (m), the iterations of a step and of the whole continuation, its first and smallest step.
+constexpr double kWallStepLimit = 0.01;
+constexpr int kContinuationStepIterations = 30;
+constexpr int kContinuationIterations = 600;
+constexpr double kFirstFrictionStep = 0.25;
+constexpr double kSmallestFrictionStep = 1e-3;
+
+}  // namespace
+
+StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::BuiltModel& built,
+                                 cms::ReductionCache& /*cache*/, const StaticSettings& settings) {
+  // The string at rest: a rotating one's friction is switched off (friction factor 0) until the
+  // continuation below.
+  model::ModelInput still = input;
+  still.static_sliding.reset();
+  VecX q = RestingStart(still, built);
+  TwistUnderTorque(still, built, q);
+  if (settings.log) {
+    settings.log(fmt::format("static: the energy's minimum from the string resting on the wall (c = {:g})",
+                             input.settings.coupling_factor));
+  }
+  model::StaticModelProblem problem(built.system, 1.0, model::StaticModelProblem::Ramp::kFriction);
+  problem.SetLoadFactor(0.0);
+  const solvers::NewtonOptions newton = DefaultNewtonOptions();
+  solvers::EnergyTrustRegionOptions options;
+  options.residual_tolerance = newton.residual_tolerance;
+  options.increment_tolerance = newton.increment_tolerance;
+  options.force_scale = built.force_scale;
+  options.max_iterations = kMaxTrustRegionIterations;
+  options.initial_radius = kInitialRadius;
+  options.log = settings.log;
+  const solvers::EnergyTrustRegionResult solved = solvers::MinimizeEnergy(problem, q, options);
+  StaticMinimum result;
+  result.q = solved.q;
+  result.converged = solved.converged;
+  result.iterations = solved.iterations;
+  result.factorizations = solved.factorizations;
+  result.negative_curvature_steps = solved.negative_curvature_steps;
+  result.residual_norm = solved.residual_norm;
+  result.failure = solved.failure;
+  if (settings.log) {
+    settings.log(fmt::format("static: energy trust region {} after {} iterations ({} factorizations, {} steps along "
+                             "negative curvature, {} second-order corrections), |R| {:.4g} N{}",
+                             solved.converged ? "converged" : "stopped", solved.iterations, solved.factorizations,
+                             solved.negative_curvature_steps, solved.second_order_corrections, solved.residual_norm,
+                             solved.converged ? "" : ": " + solved.failure));
+  }
+  if (!result.converged || !input.static_sliding) return result;
+  // Rotating: the friction acts around the string and has no potential. From the minimum at rest, a
+  // continuation in the friction factor 0 → 1 by Newton (static-solver.md §6), its steps cut to
+  // kWallStepLimit across the hole.
+  solvers::NewtonOptions continuation = newton;
+  continuation.force_scale = built.force_scale;
+  continuation.max_increment = kWallStepLimit;
+  continuation.max_iterations = kContinuationStepIterations;
+  continuation.max_total_iterations = kContinuationIterations;
+  continuation.load_stepping.initial_step = kFirstFrictionStep;
+  continuation.load_stepping.min_step = kSmallestFrictionStep;
+  continuation.throw_on_failure = false;
+  continuation.log = settings.log;
+  if (settings.log) settings.log("static: rotating, the friction from 0 to its value");
+  const solvers::StaticResult rotating = solvers::SolveStatic(problem, result.q, continuation);
+  result.iterations += rotating.iterations;
+  if (rotating.converged) {
+    result.q = rotating.q;
+    result.residual_norm = rotating.residual_norm;
+  } else {
+    // The equilibrium at rest stands (result.q); the friction's own balance was not found.
+    result.at_rest_only = true;
+    result.failure = fmt::format("with the friction of the rotating string acting around it no static balance was "
+                                 "found beyond {:.3g} of its value (|R| {:.4g} N): the contacts walk around the hole, "
+                                 "as a string that whirls",
+                                 rotating.load_factor, rotating.residual_norm);
+  }
+  if (settings.log) {
+    settings.log(fmt::format("static: friction continuation {} after {} Newton iterations in {} steps", 
+                             rotating.converged ? "converged" : "stopped", rotating.iterations, rotating.load_steps));
+  }
+  return result;
+}
+
+}  // namespace drillflex::analyses
