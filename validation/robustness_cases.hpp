@@ -188,6 +188,20 @@ inline RobustnessCase MakeRobustnessCase(int index) {
   return c;
 }
 
+// The survey rows, the hole, the bit MD, the fluid and the string of a case file, after its `survey:`
+// line (both generators write them so).
+inline std::string WellAndStringYaml(const std::vector<Station>& survey, double hole_in, double bit_md_ft,
+                                     double mud_ppg, const std::vector<std::string>& string) {
+  std::string text;
+  for (const Station& s : survey) {
+    text.append(fmt::format("    - [{:.4f}, {:.4f}, {:.4f}]\n", s.md_ft, s.inclination_deg, s.azimuth_deg));
+  }
+  text.append(fmt::format("  hole: {}\n  bit_md: {:.3f}\n\nfluid: {{density: {:.3f}, viscosity: 20}}\n\nstring:\n",
+                          hole_in, bit_md_ft, mud_ppg));
+  for (const std::string& item : string) text.append("  - ").append(item).append("\n");
+  return text;
+}
+
 inline std::string ToYaml(const RobustnessCase& c) {
   std::string text = fmt::format(
       "# Robustness case {} (validation/robustness_test.cpp): seed {} + {}. Inclination {:.2f} deg, DLS {:.2f} "
@@ -195,12 +209,9 @@ inline std::string ToYaml(const RobustnessCase& c) {
       "name: robustness-{:03d}\nunits: field\n\nwell:\n  survey:\n",
       c.index, kRobustnessSeed, c.index, c.final_inclination_deg, c.dls_deg_per_100ft, c.clearance_in, c.wob_klbf,
       c.stabilizers, c.bha_length_ft, c.index);
-  for (const Station& s : c.survey) {
-    text.append(fmt::format("    - [{:.4f}, {:.4f}, {:.4f}]\n", s.md_ft, s.inclination_deg, s.azimuth_deg));
-  }
-  text.append(fmt::format("  hole: {}\n  bit_md: {:.3f}\n\nfluid: {{density: {:.3f}, viscosity: 20}}\n\nstring:\n",
-                          c.hole_in, c.bit_md_ft, c.mud_ppg));
-  for (const StringItem& item : c.string) text.append("  - ").append(item.yaml).append("\n");
+  std::vector<std::string> items;
+  for (const StringItem& item : c.string) items.push_back(item.yaml);
+  text.append(WellAndStringYaml(c.survey, c.hole_in, c.bit_md_ft, c.mud_ppg, items));
   text.append(fmt::format("\noperation: {{wob: {:.3f}, rpm: 0, torque_on_bit: {:.1f}}}\n\nanalyses:\n  static: {{}}\n",
                           c.wob_klbf, c.torque_ftlbf));
   return text;

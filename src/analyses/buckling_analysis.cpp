@@ -3,14 +3,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
+#include "analyses/static_minimum.hpp"
 #include "core/error.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
+#include "solvers/linear_solver.hpp"
 #include "solvers/newton.hpp"
 
 namespace drillflex::analyses {
@@ -21,15 +26,53 @@ struct Equilibrium {
   bool converged = false;
 };
 
-// The static equilibrium under λ × the case's loads, from the reference placement.
-Equilibrium SolveAt(const model::SystemModel& model, double load_factor) {
-  if (load_factor == 0.0) return {model.ReferencePositions(), true};
-  model::StaticModelProblem problem(model, load_factor);
-  solvers::NewtonOptions options = DefaultNewtonOptions();
-  options.throw_on_failure = false;
-  const solvers::StaticResult result = solvers::SolveStatic(problem, model.ReferencePositions(), options);
-  return {result.q, result.converged};
-}
+// The static equilibria under λ × the case's loads, by the path the static analysis takes: a string
+// in a well (no case supports) by the energy's minimum (analyses/static_minimum.hpp), each from the
+// equilibrium already found at the nearest λ (the first from the string resting on the wall); any
+// other string by Newton's load stepping from the reference placement.
+class EquilibriumSolver {
+ public:
+  // In a well the string at rest (a rotating string's friction left out: it buckles as it lies).
+  EquilibriumSolver(const model::ModelInput& input, const model::BuiltModel& built, const StaticSettings& settings)
+      : input_(input), built_(built), settings_(settings),
+        in_well_(input.trajectory.has_value() && !input.hole.empty() && input.supports.empty()) {
+    input_.static_sliding.reset();
+  }
+
+  const model::SystemModel& model() const { return built_.system; }
+  bool in_well() const { return in_well_; }
+
+  Equilibrium At(double load_factor) {
+    const model::SystemModel& model = built_.system;
+    if (load_factor == 0.0) return {model.ReferencePositions(), true};
+    if (!in_well_) {
+      model::StaticModelProblem problem(model, load_factor);
+      solvers::NewtonOptions options = DefaultNewtonOptions();
+      options.throw_on_failure = false;
+      const solvers::StaticResult result = solvers::SolveStatic(problem, model.ReferencePositions(), options);
+      return {result.q, result.converged};
+    }
+    const VecX* start = nullptr;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& [factor, q] : found_) {
+      if (std::abs(factor - load_factor) < nearest) {
+        nearest = std::abs(factor - load_factor);
+        start = &q;
+      }
+    }
+    const StaticMinimum minimum = SolveStaticMinimum(input_, built_, settings_, load_factor, start);
+    if (!minimum.converged || minimum.at_rest_only) return {minimum.q, false};
+    found_.emplace_back(load_factor, minimum.q);
+    return {minimum.q, true};
+  }
+
+ private:
+  model::ModelInput input_;
+  const model::BuiltModel& built_;
+  const StaticSettings& settings_;
+  const bool in_well_;
+  std::vector<std::pair<double, VecX>> found_;  // (λ, equilibrium) found so far
+};
 
 // The largest axial compression along the string at q (N, ≥ 0).
 double MaxCompression(const model::SystemModel& model, const VecX& q, double load_factor) {
@@ -66,11 +109,12 @@ struct LinearizedBuckling {
   double multiplier() const { return buckling.multipliers.size() > 0 ? buckling.multipliers[0] : std::nan(""); }
 };
 
-LinearizedBuckling BucklingAt(const model::SystemModel& model, const SparseMat& unloaded, double reference_factor,
+LinearizedBuckling BucklingAt(EquilibriumSolver& solver, const SparseMat& unloaded, double reference_factor,
                               int count) {
+  const model::SystemModel& model = solver.model();
   LinearizedBuckling result;
   result.reference_factor = reference_factor;
-  const Equilibrium loaded = SolveAt(model, reference_factor);
+  const Equilibrium loaded = solver.At(reference_factor);
   if (!loaded.converged) return result;
   result.converged = true;
   result.q = loaded.q;
@@ -82,14 +126,15 @@ LinearizedBuckling BucklingAt(const model::SystemModel& model, const SparseMat& 
 
 // (a) The linearized eigenproblem (header), with λ_ref iterated to μ by the secant method on
 // g(λ_ref) = μ(λ_ref) − λ_ref.
-void SolveEigenproblem(const model::SystemModel& model, const BucklingSettings& settings, BucklingResult& result) {
+void SolveEigenproblem(EquilibriumSolver& solver, const BucklingSettings& settings, BucklingResult& result) {
+  const model::SystemModel& model = solver.model();
   const VecX reference = model.ReferencePositions();
   const SparseMat unloaded = Linearize(model, reference, 0.0).stiffness;
   const int count = std::max(settings.modes, 1);
   // The first reference state: λ_ref = 1, halved while the equilibrium cannot be found.
-  LinearizedBuckling current = BucklingAt(model, unloaded, 1.0, count);
+  LinearizedBuckling current = BucklingAt(solver, unloaded, 1.0, count);
   while (!current.converged && current.reference_factor > 1.0 / 64.0) {
-    current = BucklingAt(model, unloaded, 0.5 * current.reference_factor, count);
+    current = BucklingAt(solver, unloaded, 0.5 * current.reference_factor, count);
   }
   if (!current.converged) throw SolverError("buckling: no static equilibrium found even at 1/64 of the loads");
   result.reference_compression =
@@ -111,11 +156,11 @@ void SolveEigenproblem(const model::SystemModel& model, const BucklingSettings& 
       }
     }
     if (!(next > 0.0) || !std::isfinite(next)) break;
-    LinearizedBuckling trial = BucklingAt(model, unloaded, next, count);
+    LinearizedBuckling trial = BucklingAt(solver, unloaded, next, count);
     // Beyond a limit point of a nonlinear prebuckling path: step back halfway.
     for (int cut = 0; cut < 4 && (!trial.converged || std::isnan(trial.multiplier())); ++cut) {
       next = 0.5 * (next + current.reference_factor);
-      trial = BucklingAt(model, unloaded, next, count);
+      trial = BucklingAt(solver, unloaded, next, count);
     }
     if (!trial.converged || std::isnan(trial.multiplier())) break;
     previous = std::move(current);
@@ -129,11 +174,118 @@ void SolveEigenproblem(const model::SystemModel& model, const BucklingSettings& 
   FillBuckledMode(model, current.q, buckling.modes.col(0), result);
 }
 
+// (a) in a well: the string is held laterally only by its contacts, which the reference placement on
+// the hole axis does not have (K_0 singular), so the problem is linearized about the case's own
+// stable equilibrium q_a at λ_a instead (the string at rest): K_a = K_T(q_a, λ_a), positive definite
+// (the static solve found a minimum), and K_G = dK_T/dλ along the equilibrium path with the contacts
+// as they are, dK_T/dλ = ∂K_T/∂λ + ∂K_T/∂q · dq/dλ, dq/dλ = −K_a⁻¹ ∂R/∂λ (the path's tangent), by
+// one difference over ε along it. (K_a + ν K_G) x = 0 gives μ = λ_a + ν; λ_a then moves halfway to
+// μ, re-linearized there, until μ repeats to kInWellTolerance (contacts take up load on the way).
+constexpr double kPathDifference = 1e-4;    // ε / λ_a of the difference along the path
+constexpr double kInWellTolerance = 1e-3;   // relative change of μ that ends the iteration
+constexpr int kInWellIterations = 8;
+
+// dK_T/dλ at the equilibrium q of λ, contacts as they are (above); `tangent` = K_T(q, λ).
+SparseMat PathStiffnessChange(const model::SystemModel& model, const VecX& q, double load_factor,
+                              const SparseMat& tangent) {
+  const VecX zero = VecX::Zero(model.num_velocities());
+  const double epsilon = kPathDifference * load_factor;
+  const model::LoadParameters here{load_factor, 0.0}, ahead{load_factor + epsilon, 0.0};
+  const VecX load_rate = (model.Residual(0.0, q, zero, zero, ahead) - model.Residual(0.0, q, zero, zero, here)) / epsilon;
+  solvers::SparseLinearSolver solver;
+  solver.Factorize(tangent, solvers::MatrixSymmetry::kSymmetric);
+  VecX path = -solver.Solve(load_rate);
+  // The torque on bit twists the string by radians per unit load: its bodies turn about their axes
+  // along the path, and their body-frame coordinates with them, which a stiffness of 1e13 N/m turns
+  // into changes of 1e14 that are no stiffness at all. The twist is left out of the path: K_G is the
+  // rate of the lateral and axial stiffness under the growing weight and WOB (the lateral buckling
+  // an engineer asks about), the torque's own (Greenhill) softening not in it.
+  for (const model::Body& body : model.bodies()) path[body.v_offset + 3] = 0.0;
+  const VecX moved = model.IncrementKeepingShape(q, epsilon * path);
+  SparseMat stiffness = Linearize(model, moved, ahead).stiffness;
+  // A contact at its onset that the small move closes or opens would put its whole k_n a aᵀ / ε into
+  // the difference: each is restored to the state it has at q (the contacts as they are).
+  const std::vector<solvers::PenaltyTerm> before = model.PenaltyTerms(q, here);
+  const std::vector<solvers::PenaltyTerm> after = model.PenaltyTerms(moved, ahead);
+  for (std::size_t c = 0; c < before.size() && c < after.size(); ++c) {
+    const bool touching = before[c].value > 0.0, touches = after[c].value > 0.0;
+    if (touching == touches) continue;
+    const solvers::PenaltyTerm& term = after[c];
+    const double sign = touching ? 1.0 : -1.0;
+    for (std::size_t i = 0; i < term.indices.size(); ++i) {
+      for (std::size_t j = 0; j < term.indices.size(); ++j) {
+        stiffness.coeffRef(term.indices[i], term.indices[j]) += sign * term.stiffness * term.gradient[i] * term.gradient[j];
+      }
+    }
+  }
+  const SparseMat change = (stiffness - tangent) / epsilon;
+  return (0.5 * (change + SparseMat(change.transpose()))).pruned();
+}
+
+void SolveEigenproblemInWell(EquilibriumSolver& solver, const BucklingSettings& settings, BucklingResult& result) {
+  const model::SystemModel& model = solver.model();
+  const int count = std::max(settings.modes, 1);
+  double reference = 1.0;
+  Equilibrium at = solver.At(reference);
+  if (!at.converged) throw SolverError("buckling: no static equilibrium found at the case's loads");
+  result.reference_compression = MaxCompression(model, at.q, 1.0);
+  double estimate = std::nan("");
+  solvers::BucklingResult buckling;
+  VecX mode_state = at.q;
+  for (int iteration = 0; iteration < kInWellIterations; ++iteration) {
+    // The string at rest: no rotating friction in its tangent.
+    const SparseMat tangent = Linearize(model, at.q, {reference, 0.0}).stiffness;
+    const SparseMat change = PathStiffnessChange(model, at.q, reference, tangent);
+    // Lateral buckling: the bodies' turns about their own axes (the string's twist, held only by the
+    // rotary table: 1e3 N·m/rad over hundreds of metres) are held, so that the twist, whose rate the
+    // path leaves out, does not pass for a buckling mode.
+    SparseMat held = tangent;
+    const double stiff = tangent.diagonal().cwiseAbs().maxCoeff();
+    SparseMat lateral = change;
+    for (const model::Body& body : model.bodies()) {
+      const int twist = body.v_offset + 3;
+      held.coeffRef(twist, twist) += stiff;
+      for (SparseMat::InnerIterator it(lateral, twist); it; ++it) it.valueRef() = 0.0;
+    }
+    lateral = SparseMat(lateral.transpose());
+    for (const model::Body& body : model.bodies()) {
+      for (SparseMat::InnerIterator it(lateral, body.v_offset + 3); it; ++it) it.valueRef() = 0.0;
+    }
+    solvers::BucklingResult trial = solvers::SolveBuckling(held, lateral.pruned(), count);
+    if (trial.multipliers.size() == 0) break;  // the loads stiffen the string from here on
+    const double next = reference + trial.multipliers[0];
+    buckling = std::move(trial);
+    mode_state = at.q;
+    result.reference_load_factor = reference;
+    const bool settled = std::isfinite(estimate) && std::abs(next - estimate) <= kInWellTolerance * next;
+    estimate = next;
+    if (settled) break;
+    // Halfway to the estimate, from the equilibrium there (still below it: a stable one).
+    const double closer = reference + 0.5 * (next - reference);
+    const Equilibrium there = solver.At(closer);
+    if (!there.converged) break;
+    reference = closer;
+    at = there;
+  }
+  if (!std::isfinite(estimate)) {
+    throw SolverError("buckling: the case's loads do not buckle the string in its hole (no positive load multiplier "
+                      "from its equilibrium: the loads stiffen it)");
+  }
+  result.load_factors.clear();
+  for (Eigen::Index i = 0; i < buckling.multipliers.size(); ++i) {
+    result.load_factors.push_back(result.reference_load_factor + buckling.multipliers[i]);
+  }
+  result.load_factor = estimate;
+  result.critical_load = result.load_factor * result.reference_compression;
+  FillBuckledMode(model, mode_state, buckling.modes.col(0), result);
+}
+
 // ω² (signed) of the lowest mode above the `rigid` rigid-body modes at λ, or NaN if no equilibrium.
-FrequencyLoadPoint FrequencyAt(const model::SystemModel& model, double load_factor, int rigid, double& eigenvalue) {
+FrequencyLoadPoint FrequencyAt(EquilibriumSolver& solver, double load_factor, int rigid, double& eigenvalue) {
+  const model::SystemModel& model = solver.model();
   FrequencyLoadPoint point;
   point.load_factor = load_factor;
-  const Equilibrium equilibrium = SolveAt(model, load_factor);
+  const Equilibrium equilibrium = solver.At(load_factor);
   eigenvalue = std::nan("");
   if (!equilibrium.converged) return point;
   const LinearizedSystem system = Linearize(model, equilibrium.q, load_factor);
@@ -177,13 +329,14 @@ double ExtrapolateRoot(std::vector<std::pair<double, double>> points, double est
 constexpr double kFrequencyTolerance = 1e-4;
 
 // (b) f² → 0 (header).
-void SolveByFrequencies(const model::SystemModel& model, const BucklingSettings& settings, BucklingResult& result) {
+void SolveByFrequencies(EquilibriumSolver& solver, const BucklingSettings& settings, BucklingResult& result) {
+  const model::SystemModel& model = solver.model();
   const VecX reference = model.ReferencePositions();
   const int rigid = CountRigidBodyModes(model, reference, Linearize(model, reference, 0.0));
   std::vector<std::pair<double, double>> samples;  // (λ, ω²)
   auto sample = [&](double load_factor) {
     double eigenvalue = 0.0;
-    const FrequencyLoadPoint point = FrequencyAt(model, load_factor, rigid, eigenvalue);
+    const FrequencyLoadPoint point = FrequencyAt(solver, load_factor, rigid, eigenvalue);
     if (std::isnan(eigenvalue)) return false;
     result.frequency_table.push_back(point);
     samples.emplace_back(load_factor, eigenvalue);
@@ -214,10 +367,18 @@ void SolveByFrequencies(const model::SystemModel& model, const BucklingSettings&
 
 }  // namespace
 
-BucklingResult RunBuckling(const model::BuiltModel& built, const BucklingSettings& settings) {
+BucklingResult RunBuckling(const model::ModelInput& input, const model::BuiltModel& built,
+                           const BucklingSettings& settings, const StaticSettings& static_settings) {
+  EquilibriumSolver solver(input, built, static_settings);
   BucklingResult result;
-  SolveEigenproblem(built.system, settings, result);
-  if (settings.frequency_method) SolveByFrequencies(built.system, settings, result);
+  if (solver.in_well()) {
+    SolveEigenproblemInWell(solver, settings, result);
+  } else {
+    SolveEigenproblem(solver, settings, result);
+  }
+  // In a well the sweep from λ = 0 starts on the hole axis without contacts; the eigenproblem about the
+  // equilibrium is the answer there.
+  if (settings.frequency_method && !solver.in_well()) SolveByFrequencies(solver, settings, result);
   return result;
 }
 

@@ -55,10 +55,13 @@ struct BucklingResult {
   std::vector<Vec3> mode_rotation;
 };
 
-// Throws SolverError if the case's loads do not buckle the string (no positive multiplier), no
-// static equilibrium is found even at 1/64 of the loads, or the eigenproblem fails (e.g. an
-// unsupported string: K_0 singular). The frequency method never throws: see
+// `built` made from `input`. Each equilibrium under λ × the loads is found as the static analysis
+// finds it (a string in a well: its energy's minimum, analyses/static_minimum.hpp; `static_settings`
+// for the log). Throws SolverError if the case's loads do not buckle the string (no positive
+// multiplier), no static equilibrium is found even at 1/64 of the loads, or the eigenproblem fails
+// (e.g. an unsupported string: K_0 singular). The frequency method never throws: see
 // frequency_method_converged.
-BucklingResult RunBuckling(const model::BuiltModel& built, const BucklingSettings& settings);
+BucklingResult RunBuckling(const model::ModelInput& input, const model::BuiltModel& built,
+                           const BucklingSettings& settings, const StaticSettings& static_settings = {});
 
 }  // namespace drillflex::analyses

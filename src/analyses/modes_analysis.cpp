@@ -291,14 +291,14 @@ const char* WhirlName(Whirl whirl) {
   return "unknown";
 }
 
-LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, double load_factor) {
+LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, model::LoadParameters load) {
   const VecX zero = VecX::Zero(model.num_velocities());
-  const SparseMat tangent = model.IterationMatrix(0.0, q, zero, zero, load_factor, 1.0, 0.0, 0.0);
+  const SparseMat tangent = model.IterationMatrix(0.0, q, zero, zero, load, 1.0, 0.0, 0.0);
   const SparseMat mass = model.MassMatrix(q);
   LinearizedSystem system;
   system.stiffness = (0.5 * (tangent + SparseMat(tangent.transpose()))).pruned();
   system.mass = (0.5 * (mass + SparseMat(mass.transpose()))).pruned();
-  system.damping = model.IterationMatrix(0.0, q, zero, zero, load_factor, 0.0, 1.0, 0.0).pruned();
+  system.damping = model.IterationMatrix(0.0, q, zero, zero, load, 0.0, 1.0, 0.0).pruned();
   return system;
 }
 

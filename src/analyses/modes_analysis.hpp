@@ -112,7 +112,8 @@ struct LinearizedSystem {
   SparseMat mass;
   SparseMat damping;
 };
-LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, double load_factor);
+// `load`: a bare number is the load factor (model::LoadParameters).
+LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, model::LoadParameters load);
 
 inline constexpr int kMaxModesSearched = 400;
 

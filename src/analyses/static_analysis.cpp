@@ -457,7 +457,7 @@ StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltM
   if (!input.supports.empty() || !input.trajectory || settings.method == StaticMethod::DynamicRelaxation) {
     return RunStatic(built, settings);
   }
-  const StaticMinimum minimum = SolveStaticMinimum(input, built, cache, settings);
+  const StaticMinimum minimum = SolveStaticMinimum(input, built, settings);
   if (minimum.converged) {
     StaticResult result;
     result.q = minimum.q;

@@ -26,18 +26,29 @@ constexpr double kSmallestFrictionStep = 1e-3;
 }  // namespace
 
 StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::BuiltModel& built,
-                                 cms::ReductionCache& /*cache*/, const StaticSettings& settings) {
+                                 const StaticSettings& settings, double load_scale, const VecX* start) {
   // The string at rest: a rotating one's friction is switched off (friction factor 0) until the
-  // continuation below.
+  // continuation below. The start knows the loads (scaled: the soft-string estimate of the string
+  // under load_scale × the case's weights, WOB and torque).
   model::ModelInput still = input;
   still.static_sliding.reset();
-  VecX q = RestingStart(still, built);
-  TwistUnderTorque(still, built, q);
-  if (settings.log) {
-    settings.log(fmt::format("static: the energy's minimum from the string resting on the wall (c = {:g})",
-                             input.settings.coupling_factor));
+  still.gravity *= load_scale;
+  still.operation.weight_on_bit *= load_scale;
+  still.operation.torque_on_bit *= load_scale;
+  VecX q;
+  if (start) {
+    q = *start;
+  } else {
+    q = RestingStart(still, built);
+    TwistUnderTorque(still, built, q);
   }
-  model::StaticModelProblem problem(built.system, 1.0, model::StaticModelProblem::Ramp::kFriction);
+  if (settings.log) {
+    settings.log(fmt::format("static: the energy's minimum from {} (c = {:g}{})",
+                             start ? "the given state" : "the string resting on the wall",
+                             input.settings.coupling_factor,
+                             load_scale == 1.0 ? std::string() : fmt::format(", loads × {:g}", load_scale)));
+  }
+  model::StaticModelProblem problem(built.system, load_scale, model::StaticModelProblem::Ramp::kFriction);
   problem.SetLoadFactor(0.0);
   const solvers::NewtonOptions newton = DefaultNewtonOptions();
   solvers::EnergyTrustRegionOptions options;

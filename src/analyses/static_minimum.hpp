@@ -31,9 +31,11 @@ struct StaticMinimum {
   bool at_rest_only = false;
 };
 
-// `input` with a trajectory and a hole and no case supports; `built` made from it. Never throws on a
-// failure to converge (see `failure`).
+// `input` with a trajectory and a hole and no case supports; `built` made from it. The loads are
+// load_scale × the case's (the buckling analysis); `start`, if given, replaces the resting start (a
+// nearby equilibrium). Never throws on a failure to converge (see `failure`).
 StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::BuiltModel& built,
-                                 cms::ReductionCache& cache, const StaticSettings& settings);
+                                 const StaticSettings& settings, double load_scale = 1.0,
+                                 const VecX* start = nullptr);
 
 }  // namespace drillflex::analyses

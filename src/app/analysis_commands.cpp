@@ -345,7 +345,10 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     io::AddVibrationResults(c, result, files);
   }
   if (requested.buckling) {
-    const auto result = analyses::RunBuckling(built, c.analyses.buckling.value_or(analyses::BucklingSettings{}));
+    analyses::StaticSettings static_settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
+    if (options.verbose) static_settings.log = [](const std::string& line) { std::cerr << line << '\n'; };
+    const auto result =
+        analyses::RunBuckling(input, built, c.analyses.buckling.value_or(analyses::BucklingSettings{}), static_settings);
     PrintBuckling(c, result);
     io::AddBucklingResults(c, result, files);
   }

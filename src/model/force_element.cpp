@@ -28,6 +28,11 @@ double ForceElement::PotentialEnergy(const ElementState& state) const {
   return DoPotentialEnergy(state);
 }
 
+bool ForceElement::Penalty(const ElementState& state, double& value, double& stiffness, VecX& gradient) const {
+  if (state.poses.size() != bodies_.size()) throw LogicError(Describe() + ": wrong number of poses");
+  return DoPenalty(state, value, stiffness, gradient);
+}
+
 double ForceElement::PotentialEnergyChange(const ElementState& from, const ElementState& to) const {
   if (from.poses.size() != bodies_.size() || to.poses.size() != bodies_.size()) {
     throw LogicError(Describe() + ": wrong number of poses");

@@ -55,6 +55,9 @@ class ForceElement {
   // own, but over a step its work −M·ψ, ψ the turn between the states, is what the static solver's
   // energy merit needs). Default: PotentialEnergy(to) − PotentialEnergy(from).
   double PotentialEnergyChange(const ElementState& from, const ElementState& to) const;
+  // A unilateral penalty ½ k ⟨δ⟩² that the element's energy is (a wall contact): δ, k and ∂δ/∂v over
+  // the element's local coordinates (`gradient`, local_size). False: the element has none.
+  bool Penalty(const ElementState& state, double& value, double& stiffness, VecX& gradient) const;
   virtual std::string Describe() const = 0;
 
  protected:
@@ -63,6 +66,10 @@ class ForceElement {
   virtual double DoPotentialEnergy(const ElementState& state) const = 0;
   virtual double DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
     return DoPotentialEnergy(to) - DoPotentialEnergy(from);
+  }
+  virtual bool DoPenalty(const ElementState& /*state*/, double& /*value*/, double& /*stiffness*/,
+                         VecX& /*gradient*/) const {
+    return false;
   }
 
  private:

@@ -51,6 +51,9 @@ class StaticModelProblem : public solvers::StaticProblem {
   double EnergyChange(const VecX& from, const VecX& to) const override {
     return model_.PotentialEnergyChange(from, to, Load());
   }
+  std::vector<solvers::PenaltyTerm> PenaltyTerms(const VecX& q) const override {
+    return model_.PenaltyTerms(q, Load());
+  }
   double load_factor() const { return load_factor_; }
 
  private:

@@ -364,6 +364,29 @@ double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, Load
   return change;
 }
 
+std::vector<solvers::PenaltyTerm> SystemModel::PenaltyTerms(const VecX& q, LoadParameters load) const {
+  const auto poses = Poses(q);
+  const VecX rest = VecX::Zero(num_velocities_);
+  std::vector<solvers::PenaltyTerm> terms;
+  VecX gradient;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const ForceElement& element = *elements_[e];
+    solvers::PenaltyTerm term;
+    if (!element.Penalty(StateOf(element, poses, rest, 0.0, load), term.value, term.stiffness, gradient)) continue;
+    int local = 0;
+    for (const int b : element_bodies_[e]) {
+      const Body& body = bodies_[b];
+      for (int j = 0; j < body.velocity_count(); ++j, ++local) {
+        if (gradient[local] == 0.0) continue;
+        term.indices.push_back(body.v_offset + j);
+        term.gradient.push_back(gradient[local]);
+      }
+    }
+    terms.push_back(std::move(term));
+  }
+  return terms;
+}
+
 std::pair<int, int> SystemModel::NodeAt(double s) const { return FindNodeAt(bodies_, s); }
 
 std::pair<int, int> FindNodeAt(const std::vector<Body>& bodies_, double s) {

@@ -11,6 +11,7 @@
 #include "model/block_pattern.hpp"
 #include "model/body.hpp"
 #include "model/force_element.hpp"
+#include "solvers/problem.hpp"
 
 namespace drillflex::model {
 
@@ -75,6 +76,8 @@ class SystemModel {
   // difference formed on its own before the sum, so that a small change of a large energy survives
   // round-off. The static residual at `load` is its gradient along Increment.
   double PotentialEnergyChange(const VecX& from, const VecX& to, LoadParameters load) const;
+  // The elements' unilateral penalties at q (ForceElement::Penalty), their gradients over v.
+  std::vector<solvers::PenaltyTerm> PenaltyTerms(const VecX& q, LoadParameters load) const;
 
   // The element's state at (q, v): its bodies' poses and velocities.
   ElementState StateOf(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v,

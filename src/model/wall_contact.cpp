@@ -308,6 +308,27 @@ double WallContactElement::DoPotentialEnergyChange(const ElementState& from, con
   return elastic - work;
 }
 
+bool WallContactElement::DoPenalty(const ElementState& state, double& value, double& stiffness, VecX& gradient) const {
+  const Body& body = *bodies()[0];
+  const BodyPose& pose = *state.poses[0];
+  const NodeMotion motion = ComputeNodeMotion(body, pose, node_, VecX::Zero(local_size()));
+  const HoleGeometry g = LocateInHole(*wellbore_, motion.position, md_hint_.load(std::memory_order_relaxed),
+                                      parameters_.contact_radius);
+  value = g.penetration;
+  stiffness = parameters_.normal_stiffness;
+  if (!(g.distance > 0.0)) {  // on the hole axis: no direction to the wall, so no gradient
+    gradient = VecX::Zero(local_size());
+    return true;
+  }
+  // The residual carries −Lᵀ F for a force F on the node: F = −∇δ gives Lᵀ ∇δ.
+  ElementContribution mapped;
+  mapped.force = VecX::Zero(local_size());
+  const Vec3 gradient_position = g.normal - (g.hole.slope / g.scale) * g.tangent;
+  AddPointForce(body, pose, node_, motion, -gradient_position, Vec3::Zero(), nullptr, false, mapped);
+  gradient = std::move(mapped.force);
+  return true;
+}
+
 WallContactResult WallContactElement::Result(const ElementState& state) const {
   const Body& body = *bodies()[0];
   const NodeMotion motion = ComputeNodeMotion(body, *state.poses[0], node_, state.velocity);

@@ -124,6 +124,9 @@ class WallContactElement : public ForceElement {
   // + ½(M_from + M_to)·Δψ (model::NodeMoveBetween): the static solver's merit for a string whose
   // friction acts around it, exact to second order in the step.
   double DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const override;
+  // δ, k_n and ∂δ/∂v = L_kᵀ ∇δ (L_k the node's translation Jacobian, ∇δ = n − R_h' t/c), also
+  // where the circle does not touch (δ < 0: the gap); on the hole axis (ρ = 0) the gradient is zero.
+  bool DoPenalty(const ElementState& state, double& value, double& stiffness, VecX& gradient) const override;
 
  private:
   int node_;

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -32,6 +35,10 @@ constexpr int kInverseIterations = 8;   // for the direction of most negative cu
 // A lowest eigenvalue of the pencil above −this × max H_ii / max M_ii is round-off, not instability.
 constexpr double kNeutralCurvature = 1e-12;
 constexpr double kSmallestRadius = 1e-12;  // m: a trust radius below this ends the solve
+constexpr int kActiveSetRounds = 6;        // of ContactStep's active-set prediction
+// σ_c of the second-order correction: at most this × the step's σ (and at most the geometric mean of
+// that σ and the stiffness scale).
+constexpr double kCorrectionShift = 1e3;
 
 struct Step {
   VecX p;
@@ -55,12 +62,22 @@ class Minimizer {
   // The subproblem min m(p), ‖p‖_M ≤ radius (unscaled mass norm), by Moré–Sorensen.
   Step Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radius, EnergyTrustRegionResult& result);
   // The second-order correction at the trial point q (changed in place): a Newton step on the stiff
-  // directions only, −(H(q) + σ_c M)⁻¹ R(q) with σ_c the geometric mean of the step's shift and the
-  // stiffness scale, so that a spring stretched by the step's second-order error (k/m ≫ σ_c) is
-  // closed again while the soft motions (k/m ≪ σ_c) stay as the step left them. The tangent at the
-  // trial point, not the old one: a spring the step turned must close along its new direction.
+  // directions, −(H(q) + σ_c M)⁻¹ R(q) with σ_c = min(√(σ k̄), 10³ σ) (σ the step's shift, k̄ the
+  // stiffness scale max H_ii / max M_ii), so that a spring stretched by the step's second-order error
+  // (k/m ≫ σ_c: couplings, and the wall where a contact slid around the curved hole and went in by
+  // t²/2ρ) is closed again while the soft motions stay as the step left them (k/m ≪ σ_c). The
+  // tangent at the trial point, not the old one: a spring the step turned must close along its new
+  // direction.
   // False when no correction could be formed.
   bool SecondOrderCorrection(const VecX& residual, double shift, VecX& q, EnergyTrustRegionResult& result) const;
+  // The step over a model that knows the wall contacts (StaticProblem::PenaltyTerms): the smooth
+  // part of Π (the contacts touching at q taken out of g and H) plus every contact's ½ k ⟨δ + a·p⟩²,
+  // piecewise quadratic. Minimized within the region by active-set rounds (a primal–dual active set,
+  // Hintermüller, Ito & Kunisch 2002): with the set A the model is quadratic (H + Σ_A k a aᵀ), its
+  // step predicts which contacts touch, and that is the next A, until the set repeats. Without
+  // terms, Subproblem on `plain` (H at q).
+  Step ContactStep(const SparseMat& k, const SparseMat& m, ShiftedCholesky& plain, const VecX& g, double radius,
+                   const std::vector<PenaltyTerm>& terms, EnergyTrustRegionResult& result);
   // The lowest eigenpair of (H, M) by inverse iteration on the factorization held (shift σ > −λ₁).
   std::pair<double, VecX> LowestMode(ShiftedCholesky& cholesky) const;
   // p + τz on the boundary ‖p + τz‖_M = radius, τ of the sign that lowers the model more.
@@ -108,9 +125,12 @@ bool Minimizer::SecondOrderCorrection(const VecX& residual, double shift, VecX& 
   const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
   const SparseMat m = problem_.IterationMatrix(options_.time, q, zero_, zero_, 0.0, 0.0, 1.0);
   ShiftedCholesky cholesky(k, m);
-  double sigma = std::sqrt(std::max(shift, kFirstShift * shift_scale_) * shift_scale_);
+  const double step_shift = std::max(shift, kFirstShift * shift_scale_);
+  double sigma = std::min(std::sqrt(step_shift * shift_scale_), kCorrectionShift * step_shift);
   bool positive = false;
-  for (int attempt = 0; attempt < 3 && !(positive = cholesky.Factorize(sigma)); ++attempt) sigma *= 10.0;
+  // Where the tangent at the trial point is indefinite (a buckling string), σ_c grows by decades until
+  // H + σ_c M is positive definite: the correction must still close the stiff springs.
+  for (int attempt = 0; attempt < 16 && !(positive = cholesky.Factorize(sigma)); ++attempt) sigma *= 10.0;
   result.factorizations += cholesky.factorizations();
   if (!positive) return false;
   q = problem_.Increment(q, -cholesky.Solve(residual));
@@ -218,13 +238,140 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
     }
   }
   // Still outside after the iterations: cut back to the boundary along p (a descent direction, since
-  // H + σM is positive definite).
+  // H + σM is positive definite). Still inside with H indefinite: σ is at the threshold, whatever the
+  // inverse iteration estimated it to be (near-double eigenvalues converge slowly): the hard case.
   const double norm = MassNorm(m, step.p);
-  if (norm > radius * (1.0 + kBoundaryTolerance)) step.p *= radius / norm;
+  if (norm > radius * (1.0 + kBoundaryTolerance)) {
+    step.p *= radius / norm;
+  } else if (indefinite && !step.negative_curvature && norm < radius * (1.0 - kBoundaryTolerance)) {
+    step.p = ToBoundary(cholesky, g, step.p, z, radius);
+    step.negative_curvature = true;
+  }
   step.shift = sigma;
   if (indefinite) last_shift_ = sigma;
   step.predicted = Predicted(cholesky, g, step.p);
   return step;
+}
+
+Step Minimizer::ContactStep(const SparseMat& k, const SparseMat& m, ShiftedCholesky& plain, const VecX& g,
+                            double radius, const std::vector<PenaltyTerm>& terms, EnergyTrustRegionResult& result) {
+  if (terms.empty()) return Subproblem(plain, g, radius, result);
+  const std::size_t count = terms.size();
+  auto along = [&](const PenaltyTerm& term, const VecX& p) {
+    double sum = 0.0;
+    for (std::size_t j = 0; j < term.indices.size(); ++j) sum += term.gradient[j] * p[term.indices[j]];
+    return sum;
+  };
+  auto add = [](const PenaltyTerm& term, double scale, VecX& v) {
+    for (std::size_t j = 0; j < term.indices.size(); ++j) v[term.indices[j]] += scale * term.gradient[j];
+  };
+  std::vector<char> touching(count), active(count);
+  VecX smooth = g;  // g without the touching contacts' k δ a
+  double constant = 0.0;  // −Σ_touching ½ k δ²: the model is 0 at p = 0
+  for (std::size_t c = 0; c < count; ++c) {
+    touching[c] = terms[c].value > 0.0;
+    if (!touching[c]) continue;
+    add(terms[c], -terms[c].stiffness * terms[c].value, smooth);
+    constant -= 0.5 * terms[c].stiffness * terms[c].value * terms[c].value;
+  }
+  // The piecewise model along a step, m(t p) for t in [0, 1]:
+  //   m(tp) = t smoothᵀp + ½ t² pᵀ(K − Σ_touching k a aᵀ)p + Σ ½ k ⟨δ + t a·p⟩² − Σ_touching ½ k δ²,
+  // quadratic between the t where a contact opens or closes (Nocedal & Wright §16.7, the piecewise
+  // search of a projected method). Returns its least value on (0, 1] and where (`best_t`).
+  auto search = [&](const VecX& p, double& best_t) {
+    const double linear = smooth.dot(p);
+    double curvature = p.dot(k * p);
+    std::vector<double> moved(count);
+    std::vector<double> breaks{0.0, 1.0};
+    for (std::size_t c = 0; c < count; ++c) {
+      moved[c] = along(terms[c], p);
+      if (touching[c]) curvature -= terms[c].stiffness * moved[c] * moved[c];
+      if (moved[c] != 0.0) {
+        const double t = -terms[c].value / moved[c];
+        if (t > 0.0 && t < 1.0) breaks.push_back(t);
+      }
+    }
+    auto model_at = [&](double t) {
+      double value = t * linear + 0.5 * t * t * curvature + constant;
+      for (std::size_t c = 0; c < count; ++c) {
+        const double reach = std::max(terms[c].value + t * moved[c], 0.0);
+        value += 0.5 * terms[c].stiffness * reach * reach;
+      }
+      return value;
+    };
+    std::sort(breaks.begin(), breaks.end());
+    best_t = 1.0;
+    double best = model_at(1.0);
+    for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
+      const double lo = breaks[b], hi = breaks[b + 1];
+      if (hi <= lo) continue;
+      // One quadratic on (lo, hi): its slope at t = 0 and curvature from the contacts touching there.
+      const double middle = 0.5 * (lo + hi);
+      double slope = linear, second = curvature;
+      for (std::size_t c = 0; c < count; ++c) {
+        if (terms[c].value + middle * moved[c] <= 0.0) continue;
+        slope += terms[c].stiffness * terms[c].value * moved[c];
+        second += terms[c].stiffness * moved[c] * moved[c];
+      }
+      const double candidates[3] = {lo, hi, second > 0.0 ? std::clamp(-slope / second, lo, hi) : hi};
+      for (const double t : candidates) {
+        if (t <= 0.0) continue;
+        const double value = model_at(t);
+        if (value < best) {
+          best = value;
+          best_t = t;
+        }
+      }
+    }
+    return best;
+  };
+  // Active-set rounds; each round's step is scored by the piecewise model (at its best length along
+  // it) and the best is kept, so that a set that cycles (a few contacts in and out) costs rounds, not
+  // the step.
+  active = touching;
+  Step best;
+  double best_model = kInfinity, best_t = 1.0;
+  for (int round = 0; round < kActiveSetRounds; ++round) {
+    Step step;
+    if (active == touching) {
+      step = Subproblem(plain, g, radius, result);
+    } else {
+      SparseMat h = k;
+      VecX gradient = smooth;
+      for (std::size_t c = 0; c < count; ++c) {
+        const PenaltyTerm& term = terms[c];
+        if (active[c]) add(term, term.stiffness * term.value, gradient);
+        if (active[c] == touching[c]) continue;
+        const double sign = active[c] ? 1.0 : -1.0;
+        for (std::size_t i = 0; i < term.indices.size(); ++i) {
+          for (std::size_t j = 0; j < term.indices.size(); ++j) {
+            h.coeffRef(term.indices[i], term.indices[j]) += sign * term.stiffness * term.gradient[i] * term.gradient[j];
+          }
+        }
+      }
+      ShiftedCholesky cholesky(h, m);
+      step = Subproblem(cholesky, gradient, radius, result);
+      result.factorizations += cholesky.factorizations();
+    }
+    if (!step.failure.empty()) return round == 0 ? step : best;
+    std::vector<char> predicted(count);
+    for (std::size_t c = 0; c < count; ++c) predicted[c] = terms[c].value + along(terms[c], step.p) > 0.0;
+    double t = 1.0;
+    const double model = search(step.p, t);
+    if (model < best_model) {
+      best_model = model;
+      best_t = t;
+      best = std::move(step);
+    }
+    if (predicted == active) break;  // settled: this set's step is its own prediction
+    active = std::move(predicted);
+  }
+  if (best_t < 1.0) {
+    best.p *= best_t;
+    best.interior = false;
+  }
+  best.predicted = -best_model;
+  return best;
 }
 
 EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
@@ -280,7 +427,7 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     }
     ++result.iterations;
     const double scaled_radius = radius * std::sqrt(mass_scale);
-    Step step = Subproblem(cholesky, residual, scaled_radius, result);
+    Step step = ContactStep(k, m, cholesky, residual, scaled_radius, problem_.PenaltyTerms(result.q), result);
     if (!step.failure.empty()) {
       result.factorizations += cholesky.factorizations();
       result.failure = step.failure;
@@ -301,8 +448,10 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     double ratio = step.predicted > 0.0 ? released / step.predicted : -kInfinity;
     bool corrected = false;
     result.factorizations += cholesky.factorizations();
-    // Before a poor step is refused: its second-order correction.
-    if (ratio < kShrinkRatio && trial_residual.allFinite()) {
+    // Every step with its second-order correction, the better of the two taken: a step the energy
+    // accepts still leaves its stiff directions strained by its second-order error (|R| of 1e5–1e6 N
+    // from a few joules released), which the next iteration would otherwise spend on.
+    if (trial_residual.allFinite()) {
       VecX corrected_q = trial;
       if (SecondOrderCorrection(trial_residual, step.shift, corrected_q, result)) {
         VecX corrected_residual = Residual(corrected_q);

@@ -17,6 +17,16 @@
 
 namespace drillflex::solvers {
 
+// A unilateral penalty term of a static problem's energy, ½ k ⟨δ(q)⟩² (⟨x⟩ = max(x, 0)): a wall
+// contact's compliance, with δ its penetration. Linearized at a state: δ(q ⊕ p) ≈ value + gradient·p,
+// the gradient sparse over v's coordinates.
+struct PenaltyTerm {
+  double value = 0.0;      // δ at the state (< 0: the gap), m
+  double stiffness = 0.0;  // k, N/m
+  std::vector<int> indices;       // the coordinates of v the gradient covers
+  std::vector<double> gradient;   // ∂δ/∂v there, one per index
+};
+
 class Problem {
  public:
   virtual ~Problem() = default;
@@ -96,6 +106,11 @@ class StaticProblem : public Problem {
   virtual double EnergyChange(const VecX& /*from*/, const VecX& /*to*/) const {
     return std::numeric_limits<double>::quiet_NaN();
   }
+
+  // The unilateral penalty terms of Π at q (every one, touching or not; those with δ > 0 are in the
+  // residual and the tangent), so that an energy solver can model contacts that a step closes or
+  // opens (solvers/energy_trust_region.hpp). Empty: none, or not known.
+  virtual std::vector<PenaltyTerm> PenaltyTerms(const VecX& /*q*/) const { return {}; }
 };
 
 // The residual's round-off floor at q and the problem's load factor: how much |R| changes when every coordinate

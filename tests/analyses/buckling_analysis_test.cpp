@@ -65,9 +65,9 @@ TEST(BucklingAnalysis, EulerLoadsByBothMethods) {
   const double reference = 1000.0;
   for (const EulerCase& c : cases) {
     cms::ReductionCache cache;
-    const model::BuiltModel built =
-        model::BuildSystemModel(Rod(c.supports(), {testing::PointLoad(kRodLength, Vec3(-reference, 0, 0))}), cache);
-    const BucklingResult result = RunBuckling(built, BucklingSettings{});
+    const model::ModelInput input = Rod(c.supports(), {testing::PointLoad(kRodLength, Vec3(-reference, 0, 0))});
+    const model::BuiltModel built = model::BuildSystemModel(input, cache);
+    const BucklingResult result = RunBuckling(input, built, BucklingSettings{});
     const double exact = EulerLoad(c.effective_length_factor);
     const double eigen_error = result.critical_load / exact - 1.0;
     const double frequency_error = result.frequency_critical_load / exact - 1.0;
@@ -85,11 +85,11 @@ TEST(BucklingAnalysis, EulerLoadsByBothMethods) {
 // The buckled mode of a pinned-pinned column is a half sine: zero at the pins, 1 at mid-span.
 TEST(BucklingAnalysis, PinnedPinnedModeIsAHalfSine) {
   cms::ReductionCache cache;
-  const model::BuiltModel built =
-      model::BuildSystemModel(Rod(PinnedPinned(), {testing::PointLoad(kRodLength, Vec3(-1000, 0, 0))}), cache);
+  const model::ModelInput input = Rod(PinnedPinned(), {testing::PointLoad(kRodLength, Vec3(-1000, 0, 0))});
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
   BucklingSettings settings;
   settings.frequency_method = false;
-  const BucklingResult result = RunBuckling(built, settings);
+  const BucklingResult result = RunBuckling(input, built, settings);
   ASSERT_EQ(result.s.size(), result.mode_displacement.size());
   for (std::size_t i = 0; i < result.s.size(); ++i) {
     const double lateral = result.mode_displacement[i].tail<2>().norm();
@@ -146,9 +146,9 @@ TEST(BucklingAnalysis, CantileverFrequencyUnderDeadTipLoad) {
 TEST(BucklingAnalysis, GreenhillSelfWeightColumn) {
   const double w = 1000.0;  // N/m, the reference load
   cms::ReductionCache cache;
-  const model::BuiltModel built =
-      model::BuildSystemModel(Rod(ClampedFree(), {testing::DistributedLoad(0.0, kRodLength, Vec3(-w, 0, 0))}), cache);
-  const BucklingResult result = RunBuckling(built, BucklingSettings{});
+  const model::ModelInput input = Rod(ClampedFree(), {testing::DistributedLoad(0.0, kRodLength, Vec3(-w, 0, 0))});
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  const BucklingResult result = RunBuckling(input, built, BucklingSettings{});
   const double exact = 7.8373 * kEI / std::pow(kRodLength, 3);
   const double eigen_error = result.load_factor * w / exact - 1.0;
   const double frequency_error = result.frequency_load_factor * w / exact - 1.0;
