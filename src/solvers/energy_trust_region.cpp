@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -69,14 +70,14 @@ class Minimizer {
   // tangent at the trial point, not the old one: a spring the step turned must close along its new
   // direction.
   // False when no correction could be formed.
-  bool SecondOrderCorrection(const VecX& residual, double shift, VecX& q, EnergyTrustRegionResult& result) const;
+  bool SecondOrderCorrection(const VecX& residual, double shift, VecX& q, EnergyTrustRegionResult& result);
   // The step over a model that knows the wall contacts (StaticProblem::PenaltyTerms): the smooth
   // part of Π (the contacts touching at q taken out of g and H) plus every contact's ½ k ⟨δ + a·p⟩²,
   // piecewise quadratic. Minimized within the region by active-set rounds (a primal–dual active set,
   // Hintermüller, Ito & Kunisch 2002): with the set A the model is quadratic (H + Σ_A k a aᵀ), its
   // step predicts which contacts touch, and that is the next A, until the set repeats. Without
   // terms, Subproblem on `plain` (H at q).
-  Step ContactStep(const SparseMat& k, const SparseMat& m, ShiftedCholesky& plain, const VecX& g, double radius,
+  Step ContactStep(const SparseMat& k, ShiftedCholesky& plain, const VecX& g, double radius,
                    const std::vector<PenaltyTerm>& terms, EnergyTrustRegionResult& result);
   // The lowest eigenpair of (H, M) by inverse iteration on the factorization held (shift σ > −λ₁).
   std::pair<double, VecX> LowestMode(ShiftedCholesky& cholesky) const;
@@ -95,6 +96,9 @@ class Minimizer {
   double shift_scale_ = 0.0;  // max H_ii / max M_ii
   double last_shift_ = 0.0;   // σ of the previous indefinite subproblem, a start for the next
   double current_lowest_ = std::numeric_limits<double>::quiet_NaN();  // λ₁ of the last subproblem's H (NaN: positive definite)
+  SparseMat metric_;          // M at the start
+  std::unique_ptr<ShiftedCholesky> tangent_;     // H + σM at the iterate, kept across iterations
+  std::unique_ptr<ShiftedCholesky> correction_;  // H + σ_c M at a trial point (the correction)
 };
 
 std::pair<double, VecX> Minimizer::LowestMode(ShiftedCholesky& cholesky) const {
@@ -121,17 +125,22 @@ std::pair<double, VecX> Minimizer::LowestMode(ShiftedCholesky& cholesky) const {
 }
 
 bool Minimizer::SecondOrderCorrection(const VecX& residual, double shift, VecX& q,
-                                      EnergyTrustRegionResult& result) const {
+                                      EnergyTrustRegionResult& result) {
   const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
-  const SparseMat m = problem_.IterationMatrix(options_.time, q, zero_, zero_, 0.0, 0.0, 1.0);
-  ShiftedCholesky cholesky(k, m);
+  if (!correction_) {
+    correction_ = std::make_unique<ShiftedCholesky>(k, metric_);
+  } else {
+    correction_->SetStiffness(k);
+  }
+  ShiftedCholesky& cholesky = *correction_;
+  const int factorized_before = cholesky.factorizations();
   const double step_shift = std::max(shift, kFirstShift * shift_scale_);
   double sigma = std::min(std::sqrt(step_shift * shift_scale_), kCorrectionShift * step_shift);
   bool positive = false;
   // Where the tangent at the trial point is indefinite (a buckling string), σ_c grows by decades until
   // H + σ_c M is positive definite: the correction must still close the stiff springs.
   for (int attempt = 0; attempt < 16 && !(positive = cholesky.Factorize(sigma)); ++attempt) sigma *= 10.0;
-  result.factorizations += cholesky.factorizations();
+  result.factorizations += cholesky.factorizations() - factorized_before;
   if (!positive) return false;
   q = problem_.Increment(q, -cholesky.Solve(residual));
   return true;
@@ -253,7 +262,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
   return step;
 }
 
-Step Minimizer::ContactStep(const SparseMat& k, const SparseMat& m, ShiftedCholesky& plain, const VecX& g,
+Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const VecX& g,
                             double radius, const std::vector<PenaltyTerm>& terms, EnergyTrustRegionResult& result) {
   if (terms.empty()) return Subproblem(plain, g, radius, result);
   const std::size_t count = terms.size();
@@ -334,24 +343,18 @@ Step Minimizer::ContactStep(const SparseMat& k, const SparseMat& m, ShiftedChole
   for (int round = 0; round < kActiveSetRounds; ++round) {
     Step step;
     if (active == touching) {
+      plain.RestoreStiffness();
       step = Subproblem(plain, g, radius, result);
     } else {
-      SparseMat h = k;
+      // H + Σ_A k a aᵀ on the same pattern: the contacts whose state differs from q's switched.
+      plain.RestoreStiffness();
       VecX gradient = smooth;
       for (std::size_t c = 0; c < count; ++c) {
         const PenaltyTerm& term = terms[c];
         if (active[c]) add(term, term.stiffness * term.value, gradient);
-        if (active[c] == touching[c]) continue;
-        const double sign = active[c] ? 1.0 : -1.0;
-        for (std::size_t i = 0; i < term.indices.size(); ++i) {
-          for (std::size_t j = 0; j < term.indices.size(); ++j) {
-            h.coeffRef(term.indices[i], term.indices[j]) += sign * term.stiffness * term.gradient[i] * term.gradient[j];
-          }
-        }
+        if (active[c] != touching[c]) plain.AddOuterProduct(term.indices, term.gradient, (active[c] ? 1.0 : -1.0) * term.stiffness);
       }
-      ShiftedCholesky cholesky(h, m);
-      step = Subproblem(cholesky, gradient, radius, result);
-      result.factorizations += cholesky.factorizations();
+      step = Subproblem(plain, gradient, radius, result);
     }
     if (!step.failure.empty()) return round == 0 ? step : best;
     std::vector<char> predicted(count);
@@ -395,22 +398,33 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     const double norm = residual.norm();
     result.residual_norm = norm;
     const SparseMat k = problem_.IterationMatrix(options_.time, result.q, zero_, zero_, 1.0, 0.0, 0.0);
-    const SparseMat m = problem_.IterationMatrix(options_.time, result.q, zero_, zero_, 0.0, 0.0, 1.0);
-    if (mass_scale <= 0.0) mass_scale = m.diagonal().sum() / 3.0;
+    // The metric: the mass matrix at the start (only the norm of a step and the shift's scale; its
+    // slight change with the state does not matter, and it is not assembled again).
+    if (metric_.size() == 0) {
+      metric_ = problem_.IterationMatrix(options_.time, result.q, zero_, zero_, 0.0, 0.0, 1.0);
+      mass_scale = metric_.diagonal().sum() / 3.0;
+    }
+    const SparseMat& m = metric_;
     const double largest_mass = m.diagonal().cwiseAbs().maxCoeff();
     shift_scale_ = largest_mass > 0.0 ? k.diagonal().cwiseAbs().maxCoeff() / largest_mass : 0.0;
     if (!(mass_scale > 0.0) || !(shift_scale_ > 0.0) || !std::isfinite(shift_scale_)) {
       throw LogicError("MinimizeEnergy: the problem has no positive mass matrix (IterationMatrix with cM = 1), or "
                        "its tangent is zero or not finite");
     }
-    ShiftedCholesky cholesky(k, m);
+    if (!tangent_) {
+      tangent_ = std::make_unique<ShiftedCholesky>(k, m);
+    } else {
+      tangent_->SetStiffness(k);
+    }
+    ShiftedCholesky& cholesky = *tangent_;
+    const int counted = cholesky.factorizations();  // before this iteration
     const bool small = norm <= result.tolerance || full_newton_small;
     if (small) {
       const bool positive = cholesky.Factorize(0.0);
       if (positive || !options_.require_stable) {
         result.converged = true;
         result.stable = positive;
-        result.factorizations += cholesky.factorizations();
+        result.factorizations += cholesky.factorizations() - counted;
         return result;
       }
       // Stationary but not a minimum: unless the lowest curvature is round-off, step off along it,
@@ -421,21 +435,21 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
       leaving_saddle = false;
     }
     if (result.iterations >= options_.max_iterations) {
-      result.factorizations += cholesky.factorizations();
+      result.factorizations += cholesky.factorizations() - counted;
       result.failure = fmt::format("no stable equilibrium within {} trust-region iterations", options_.max_iterations);
       return result;
     }
     ++result.iterations;
     const double scaled_radius = radius * std::sqrt(mass_scale);
-    Step step = ContactStep(k, m, cholesky, residual, scaled_radius, problem_.PenaltyTerms(result.q), result);
+    Step step = ContactStep(k, cholesky, residual, scaled_radius, problem_.PenaltyTerms(result.q), result);
     if (!step.failure.empty()) {
-      result.factorizations += cholesky.factorizations();
+      result.factorizations += cholesky.factorizations() - counted;
       result.failure = step.failure;
       return result;
     }
     if (small && !std::isnan(current_lowest_) && current_lowest_ > -kNeutralCurvature * shift_scale_) {
       // The factorization failed on round-off of a positive semidefinite H: a neutral equilibrium.
-      result.factorizations += cholesky.factorizations();
+      result.factorizations += cholesky.factorizations() - counted;
       result.converged = true;
       result.stable = true;
       return result;
@@ -447,7 +461,7 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     if (!std::isfinite(released)) released = -kInfinity;
     double ratio = step.predicted > 0.0 ? released / step.predicted : -kInfinity;
     bool corrected = false;
-    result.factorizations += cholesky.factorizations();
+    result.factorizations += cholesky.factorizations() - counted;
     // Every step with its second-order correction, the better of the two taken: a step the energy
     // accepts still leaves its stiff directions strained by its second-order error (|R| of 1e5–1e6 N
     // from a few joules released), which the next iteration would otherwise spend on.

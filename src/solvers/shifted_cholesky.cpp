@@ -1,40 +1,99 @@
 #include "solvers/shifted_cholesky.hpp"
 
+#include <algorithm>
+#include <cstddef>
+
 #include <Eigen/SparseCholesky>
 #include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "solvers/linear_solver.hpp"
 
+// LAPACK's banded Cholesky (Fortran interface; liblapack comes with libsuitesparse-dev).
+extern "C" {
+void dpbtrf_(const char* uplo, const int* n, const int* kd, double* ab, const int* ldab, int* info,
+             std::size_t uplo_length);
+void dpbtrs_(const char* uplo, const int* n, const int* kd, const int* nrhs, const double* ab, const int* ldab,
+             double* b, const int* ldb, int* info, std::size_t uplo_length);
+}
+
 namespace drillflex::solvers {
 
 struct ShiftedCholesky::Factors {
-  Eigen::SimplicialLLT<SparseMat, Eigen::Lower, Eigen::NaturalOrdering<int>> natural;
   Eigen::SimplicialLLT<SparseMat, Eigen::Lower, Eigen::AMDOrdering<int>> amd;
 };
 
 ShiftedCholesky::ShiftedCholesky(const SparseMat& stiffness, const SparseMat& metric)
-    : factors_(std::make_unique<Factors>()) {
+    : metric_given_(metric), factors_(std::make_unique<Factors>()) {
   if (stiffness.rows() != stiffness.cols() || metric.rows() != metric.cols() || stiffness.rows() != metric.rows()) {
     throw LogicError(fmt::format("ShiftedCholesky: H is {}x{}, M {}x{}", stiffness.rows(), stiffness.cols(),
                                  metric.rows(), metric.cols()));
   }
+  Build(stiffness);
+}
+
+namespace {
+// The position of entry (row, column) in a compressed column-major matrix's values, or −1.
+int EntryIndex(const SparseMat& matrix, int row, int column) {
+  const int* begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column];
+  const int* end = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column + 1];
+  const int* found = std::lower_bound(begin, end, row);
+  return found != end && *found == row ? static_cast<int>(found - matrix.innerIndexPtr()) : -1;
+}
+
+bool SamePattern(const SparseMat& a, const SparseMat& b) {
+  return a.rows() == b.rows() && a.nonZeros() == b.nonZeros() && a.isCompressed() && b.isCompressed() &&
+         std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
+}
+}  // namespace
+
+void ShiftedCholesky::Build(const SparseMat& stiffness) {
   const SparseMat transposed = stiffness.transpose();
   const SparseMat symmetric = 0.5 * (stiffness + transposed);
   // Sums keep every entry of both patterns (explicit zeros too), so the three share one pattern in
   // one order and H + σM is formed entry by entry.
-  stiffness_ = symmetric + 0.0 * metric;
-  metric_ = metric + 0.0 * symmetric;
+  stiffness_ = symmetric + 0.0 * metric_given_;
+  metric_ = metric_given_ + 0.0 * symmetric;
   stiffness_.makeCompressed();
   metric_.makeCompressed();
   if (stiffness_.nonZeros() != metric_.nonZeros()) throw LogicError("ShiftedCholesky: the patterns differ");
-  shifted_ = stiffness_;
-  natural_order_ = FactorizeInOwnOrder(stiffness_);
-  if (natural_order_) {
-    factors_->natural.analyzePattern(shifted_);
+  original_.assign(stiffness_.valuePtr(), stiffness_.valuePtr() + stiffness_.nonZeros());
+  first_pattern_ = stiffness;
+  first_pattern_.makeCompressed();
+  from_entry_.assign(static_cast<std::size_t>(stiffness_.nonZeros()), -1);
+  from_transposed_.assign(static_cast<std::size_t>(stiffness_.nonZeros()), -1);
+  for (int j = 0; j < stiffness_.outerSize(); ++j) {
+    for (int k = stiffness_.outerIndexPtr()[j]; k < stiffness_.outerIndexPtr()[j + 1]; ++k) {
+      const int i = stiffness_.innerIndexPtr()[k];
+      from_entry_[static_cast<std::size_t>(k)] = EntryIndex(first_pattern_, i, j);
+      from_transposed_[static_cast<std::size_t>(k)] = EntryIndex(first_pattern_, j, i);
+    }
+  }
+  banded_ = FactorizeInOwnOrder(stiffness_);
+  if (banded_) {
+    half_bandwidth_ = static_cast<int>(HalfBandwidth(stiffness_));
+    band_.resize(static_cast<std::size_t>(half_bandwidth_ + 1) * static_cast<std::size_t>(stiffness_.rows()));
   } else {
+    shifted_ = stiffness_;
     factors_->amd.analyzePattern(shifted_);
   }
+  factorized_ = false;
+}
+
+void ShiftedCholesky::SetStiffness(const SparseMat& stiffness) {
+  if (!SamePattern(stiffness, first_pattern_)) {
+    Build(stiffness);
+    return;
+  }
+  const double* h = stiffness.valuePtr();
+  double* out = stiffness_.valuePtr();
+  for (std::size_t k = 0; k < from_entry_.size(); ++k) {
+    const int a = from_entry_[k], b = from_transposed_[k];
+    out[k] = 0.5 * ((a >= 0 ? h[a] : 0.0) + (b >= 0 ? h[b] : 0.0));
+  }
+  original_.assign(out, out + stiffness_.nonZeros());
+  factorized_ = false;
 }
 
 ShiftedCholesky::~ShiftedCholesky() = default;
@@ -45,13 +104,26 @@ bool ShiftedCholesky::Factorize(double shift) {
   ++count_;
   const double* h = stiffness_.valuePtr();
   const double* m = metric_.valuePtr();
-  double* a = shifted_.valuePtr();
-  for (Eigen::Index k = 0; k < shifted_.nonZeros(); ++k) a[k] = h[k] + shift * m[k];
+  const int* outer = stiffness_.outerIndexPtr();
+  const int* inner = stiffness_.innerIndexPtr();
+  const int n = static_cast<int>(stiffness_.rows());
   bool ok = false;
-  if (natural_order_) {
-    factors_->natural.factorize(shifted_);
-    ok = factors_->natural.info() == Eigen::Success;
+  if (banded_) {
+    // Lower band storage: ab(i − j, j) = A(i, j) for j ≤ i ≤ j + kd (0-based, ldab = kd + 1).
+    const int ldab = half_bandwidth_ + 1;
+    std::fill(band_.begin(), band_.end(), 0.0);
+    for (int j = 0; j < n; ++j) {
+      for (int k = outer[j]; k < outer[j + 1]; ++k) {
+        const int i = inner[k];
+        if (i >= j) band_[static_cast<std::size_t>(j) * ldab + (i - j)] = h[k] + shift * m[k];
+      }
+    }
+    int info = 0;
+    dpbtrf_("L", &n, &half_bandwidth_, band_.data(), &ldab, &info, 1);
+    ok = info == 0;
   } else {
+    double* a = shifted_.valuePtr();
+    for (Eigen::Index k = 0; k < shifted_.nonZeros(); ++k) a[k] = h[k] + shift * m[k];
     factors_->amd.factorize(shifted_);
     ok = factors_->amd.info() == Eigen::Success;
   }
@@ -63,7 +135,31 @@ bool ShiftedCholesky::Factorize(double shift) {
 
 VecX ShiftedCholesky::Solve(const VecX& rhs) const {
   if (!factorized_) throw LogicError("ShiftedCholesky::Solve: no positive definite factorization held");
-  return natural_order_ ? VecX(factors_->natural.solve(rhs)) : VecX(factors_->amd.solve(rhs));
+  if (!banded_) return factors_->amd.solve(rhs);
+  VecX x = rhs;
+  const int n = static_cast<int>(x.size()), ldab = half_bandwidth_ + 1, one = 1;
+  int info = 0;
+  dpbtrs_("L", &n, &half_bandwidth_, &one, band_.data(), &ldab, x.data(), &n, &info, 1);
+  if (info != 0) throw LogicError(fmt::format("ShiftedCholesky::Solve: dpbtrs info {}", info));
+  return x;
+}
+
+void ShiftedCholesky::AddOuterProduct(const std::vector<int>& indices, const std::vector<double>& values,
+                                      double scale) {
+  for (std::size_t j = 0; j < indices.size(); ++j) {
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+      stiffness_.coeffRef(indices[i], indices[j]) += scale * values[i] * values[j];
+    }
+  }
+  if (stiffness_.nonZeros() != static_cast<Eigen::Index>(original_.size()) || !stiffness_.isCompressed()) {
+    throw LogicError("ShiftedCholesky::AddOuterProduct: an entry outside the pattern");
+  }
+  factorized_ = false;
+}
+
+void ShiftedCholesky::RestoreStiffness() {
+  std::copy(original_.begin(), original_.end(), stiffness_.valuePtr());
+  factorized_ = false;
 }
 
 }  // namespace drillflex::solvers

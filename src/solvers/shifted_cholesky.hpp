@@ -1,14 +1,19 @@
 // Cholesky factorizations of H + σM, H symmetric (the symmetric part of a tangent stiffness) and M
-// positive definite (a mass matrix), for a sequence of shifts σ with one symbolic analysis: the
-// trust-region subproblem of solvers/energy_trust_region.hpp. A factorization that meets a pivot
-// ≤ 0 fails, and so tells that H + σM is not positive definite (Golub & Van Loan, Matrix
+// positive definite (a mass matrix), for a sequence of shifts σ with one analysis of the pattern:
+// the trust-region subproblem of solvers/energy_trust_region.hpp. A factorization that meets a
+// pivot ≤ 0 fails, and so tells that H + σM is not positive definite (Golub & Van Loan, Matrix
 // Computations, 4th ed., §4.2): the test of whether an equilibrium is stable.
 //
-// Ordering as solvers/linear_solver.hpp: the matrix's own order when its band is narrow (a string's
-// coordinates run along it), AMD otherwise.
+// A matrix whose band is narrow (a string's coordinates run along it: solvers/linear_solver.hpp's
+// rule) is factorized in LAPACK's band storage (dpbtrf / dpbtrs, Anderson et al., LAPACK Users'
+// Guide §5.3.2): no permutation or symbolic step per factorization, which in Eigen's simplicial
+// Cholesky took more time than the factorization itself (profiled on a vertical-hole robustness
+// case: its copies and permutations ~20 % of the solve, the numeric factorization 5 %). Any other
+// goes to Eigen::SimplicialLLT with AMD.
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "core/types.hpp"
 
@@ -18,6 +23,10 @@ class ShiftedCholesky {
  public:
   // H is symmetrized here ((H + Hᵀ)/2); H and M square, of one size, finite.
   ShiftedCholesky(const SparseMat& stiffness, const SparseMat& metric);
+  // A new H with the metric kept: where H has the pattern of the first one (a model's tangent has a
+  // fixed pattern), its symmetric part is formed entry by entry through maps set up once, without
+  // the sparse sums and transposes (which took two thirds of a solve when done each iteration).
+  void SetStiffness(const SparseMat& stiffness);
   ~ShiftedCholesky();
   ShiftedCholesky(ShiftedCholesky&&) noexcept;
   ShiftedCholesky& operator=(ShiftedCholesky&&) noexcept;
@@ -27,7 +36,13 @@ class ShiftedCholesky {
   // (H + σM)⁻¹ rhs with the last successful factorization. Throws LogicError without one.
   VecX Solve(const VecX& rhs) const;
 
-  const SparseMat& stiffness() const { return stiffness_; }  // (H + Hᵀ)/2
+  // H ← H + scale a aᵀ, a sparse (`indices`, `values`) within H's pattern (a body's dense block):
+  // a contact's stiffness k a aᵀ switched on or off. Drops the factorization held.
+  void AddOuterProduct(const std::vector<int>& indices, const std::vector<double>& values, double scale);
+  // H back to what the constructor was given. Drops the factorization held.
+  void RestoreStiffness();
+
+  const SparseMat& stiffness() const { return stiffness_; }  // (H + Hᵀ)/2 with any outer products added
   const SparseMat& metric() const { return metric_; }
   double shift() const { return shift_; }         // σ of the last successful factorization
   int factorizations() const { return count_; }   // attempted, successful or not
@@ -35,9 +50,18 @@ class ShiftedCholesky {
 
  private:
   struct Factors;
-  SparseMat stiffness_, metric_, shifted_;  // one pattern, the union of H's and M's
+  void Build(const SparseMat& stiffness);
+  SparseMat metric_given_;                  // M as given
+  SparseMat stiffness_, metric_, shifted_;  // one pattern, the union of H's, Hᵀ's and M's
+  std::vector<double> original_;            // the stiffness values last set
+  // For H of the first pattern: per entry of the union pattern, the positions of H(i, j) and H(j, i)
+  // in H's values (−1: not in H's pattern).
+  SparseMat first_pattern_;
+  std::vector<int> from_entry_, from_transposed_;
   std::unique_ptr<Factors> factors_;
-  bool natural_order_ = false;
+  bool banded_ = false;
+  int half_bandwidth_ = 0;
+  std::vector<double> band_;  // H + σM's lower band, LAPACK storage (ldab = half_bandwidth + 1)
   bool factorized_ = false;
   double shift_ = 0.0;
   int count_ = 0;
