@@ -54,13 +54,27 @@ std::vector<NodeStation> Stations(const model::ModelInput& input, const model::S
   return stations;
 }
 
-// Soft-string axial force and lateral load direction at every station, from the bit upward.
+// The compression above which a pipe of bending rigidity EI, lateral weight w⊥ per length (N/m) and
+// radial clearance r (m) lies on the wall as a helix: Chen, Lin & Cheatham (1990),
+// F_hel = 2√2 F_sin with Dawson & Paslay's F_sin = 2 √(EI w⊥ / r); zero without lateral weight (a
+// vertical hole: any compression buckles the pipe).
+double HelicalBucklingLoad(double bending_rigidity, double lateral_weight, double clearance) {
+  return 2.0 * std::sqrt(2.0) * 2.0 * std::sqrt(bending_rigidity * lateral_weight / clearance);
+}
+
+// Soft-string axial force and lateral load direction at every station, from the bit upward; where
+// the compression exceeds the helical buckling load, the direction of a helix on the wall with
+// Lubinski's pitch P = π √(8 EI / F) (static-solver.md §4), so that the start lies near the branch
+// the string buckles onto instead of on the low side (or, in a vertical hole, on the axis).
 void AddLoadDirections(const model::ModelInput& input, const model::SystemModel& system,
                        std::vector<NodeStation>& stations) {
   const well::Trajectory& trajectory = *input.trajectory;
   const Vec3 down = Vec3::UnitZ();  // gravity along global +z (TVD)
   double tension = -input.operation.weight_on_bit;
   double previous_s = 0.0;
+  double helix_phase = 0.0, helix_s = 0.0;  // the helix's angle from the low side at helix_s
+  bool in_helix = false;
+  Vec3 previous_direction = Vec3::Zero();
   for (NodeStation& station : stations) {
     const double weight = model::BuoyedWeightPerLength(system.bodies()[station.body], input);
     const Vec3 t = trajectory.Tangent(station.md);
@@ -69,6 +83,31 @@ void AddLoadDirections(const model::ModelInput& input, const model::SystemModel&
     station.tension = tension;
     const Vec3 lateral = weight * (down - down.dot(t) * t) + tension * trajectory.Curvature(station.md);
     if (lateral.norm() > 1e-6 * std::max(std::abs(weight), 1e-9)) station.direction = lateral.normalized();
+    // Compressed beyond the helical buckling load: the direction turns around the hole with
+    // Lubinski's pitch (below).
+    const double compression = -tension;
+    const model::Body& body = system.bodies()[station.body];
+    const double bending = body.bending_rigidity;
+    const double lateral_weight = std::abs(weight) * (down - down.dot(t) * t).norm();
+    if (compression > 0.0 && station.clearance > 0.0 &&
+        compression > HelicalBucklingLoad(bending, lateral_weight, station.clearance)) {
+      const double pitch = kPi * std::sqrt(8.0 * bending / compression);  // Lubinski, Althouse & Logan 1962
+      const well::PathFrame frame = well::HighSideFrame(t);
+      if (!in_helix) {
+        // The helix starts where the string lies below it (its lateral load's direction), so that
+        // the line does not turn at once where the compression first exceeds the helical load.
+        const Vec3 below = previous_direction.squaredNorm() > 0.0 ? previous_direction : station.direction;
+        helix_phase = below.squaredNorm() > 0.0 ? std::atan2(below.dot(frame.right), -below.dot(frame.high_side)) : 0.0;
+      } else {
+        helix_phase += 2.0 * kPi * (station.s - helix_s) / pitch;
+      }
+      station.direction = std::cos(helix_phase) * (-frame.high_side) + std::sin(helix_phase) * frame.right;
+      in_helix = true;
+    } else {
+      in_helix = false;
+    }
+    helix_s = station.s;
+    previous_direction = station.direction;
   }
 }
 
