@@ -97,8 +97,8 @@ class Minimizer {
   double last_shift_ = 0.0;   // σ of the previous indefinite subproblem, a start for the next
   double current_lowest_ = std::numeric_limits<double>::quiet_NaN();  // λ₁ of the last subproblem's H (NaN: positive definite)
   SparseMat metric_;          // M at the start
-  std::unique_ptr<ShiftedCholesky> tangent_;     // H + σM at the iterate, kept across iterations
-  std::unique_ptr<ShiftedCholesky> correction_;  // H + σ_c M at a trial point (the correction)
+  // H + σM at the iterate, kept across iterations (and H + σ_c M at a trial point for the correction)
+  std::unique_ptr<ShiftedCholesky> tangent_;
 };
 
 std::pair<double, VecX> Minimizer::LowestMode(ShiftedCholesky& cholesky) const {
@@ -126,13 +126,11 @@ std::pair<double, VecX> Minimizer::LowestMode(ShiftedCholesky& cholesky) const {
 
 bool Minimizer::SecondOrderCorrection(const VecX& residual, double shift, VecX& q,
                                       EnergyTrustRegionResult& result) {
+  // The iterate's factorization is no longer needed once the step is formed: its object (and its
+  // analysis of the pattern) takes the trial point's tangent.
   const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
-  if (!correction_) {
-    correction_ = std::make_unique<ShiftedCholesky>(k, metric_);
-  } else {
-    correction_->SetStiffness(k);
-  }
-  ShiftedCholesky& cholesky = *correction_;
+  tangent_->SetStiffness(k);
+  ShiftedCholesky& cholesky = *tangent_;
   const int factorized_before = cholesky.factorizations();
   const double step_shift = std::max(shift, kFirstShift * shift_scale_);
   double sigma = std::min(std::sqrt(step_shift * shift_scale_), kCorrectionShift * step_shift);

@@ -41,10 +41,11 @@ int EntryIndex(const SparseMat& matrix, int row, int column) {
   return found != end && *found == row ? static_cast<int>(found - matrix.innerIndexPtr()) : -1;
 }
 
-bool SamePattern(const SparseMat& a, const SparseMat& b) {
-  return a.rows() == b.rows() && a.nonZeros() == b.nonZeros() && a.isCompressed() && b.isCompressed() &&
-         std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
-         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
+bool SamePattern(const SparseMat& a, const std::vector<int>& outer, const std::vector<int>& inner) {
+  return a.isCompressed() && static_cast<std::size_t>(a.outerSize() + 1) == outer.size() &&
+         static_cast<std::size_t>(a.nonZeros()) == inner.size() &&
+         std::equal(outer.begin(), outer.end(), a.outerIndexPtr()) &&
+         std::equal(inner.begin(), inner.end(), a.innerIndexPtr());
 }
 }  // namespace
 
@@ -59,15 +60,17 @@ void ShiftedCholesky::Build(const SparseMat& stiffness) {
   metric_.makeCompressed();
   if (stiffness_.nonZeros() != metric_.nonZeros()) throw LogicError("ShiftedCholesky: the patterns differ");
   original_.assign(stiffness_.valuePtr(), stiffness_.valuePtr() + stiffness_.nonZeros());
-  first_pattern_ = stiffness;
-  first_pattern_.makeCompressed();
+  SparseMat first = stiffness;
+  first.makeCompressed();
+  first_outer_.assign(first.outerIndexPtr(), first.outerIndexPtr() + first.outerSize() + 1);
+  first_inner_.assign(first.innerIndexPtr(), first.innerIndexPtr() + first.nonZeros());
   from_entry_.assign(static_cast<std::size_t>(stiffness_.nonZeros()), -1);
   from_transposed_.assign(static_cast<std::size_t>(stiffness_.nonZeros()), -1);
   for (int j = 0; j < stiffness_.outerSize(); ++j) {
     for (int k = stiffness_.outerIndexPtr()[j]; k < stiffness_.outerIndexPtr()[j + 1]; ++k) {
       const int i = stiffness_.innerIndexPtr()[k];
-      from_entry_[static_cast<std::size_t>(k)] = EntryIndex(first_pattern_, i, j);
-      from_transposed_[static_cast<std::size_t>(k)] = EntryIndex(first_pattern_, j, i);
+      from_entry_[static_cast<std::size_t>(k)] = EntryIndex(first, i, j);
+      from_transposed_[static_cast<std::size_t>(k)] = EntryIndex(first, j, i);
     }
   }
   banded_ = FactorizeInOwnOrder(stiffness_);
@@ -82,7 +85,7 @@ void ShiftedCholesky::Build(const SparseMat& stiffness) {
 }
 
 void ShiftedCholesky::SetStiffness(const SparseMat& stiffness) {
-  if (!SamePattern(stiffness, first_pattern_)) {
+  if (!SamePattern(stiffness, first_outer_, first_inner_)) {
     Build(stiffness);
     return;
   }

@@ -54,9 +54,9 @@ class ShiftedCholesky {
   SparseMat metric_given_;                  // M as given
   SparseMat stiffness_, metric_, shifted_;  // one pattern, the union of H's, Hᵀ's and M's
   std::vector<double> original_;            // the stiffness values last set
-  // For H of the first pattern: per entry of the union pattern, the positions of H(i, j) and H(j, i)
-  // in H's values (−1: not in H's pattern).
-  SparseMat first_pattern_;
+  // H's first pattern (compressed: its outer and inner indices) and, per entry of the union
+  // pattern, the positions of H(i, j) and H(j, i) in H's values (−1: not in H's pattern).
+  std::vector<int> first_outer_, first_inner_;
   std::vector<int> from_entry_, from_transposed_;
   std::unique_ptr<Factors> factors_;
   bool banded_ = false;
