@@ -5,8 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -120,9 +118,7 @@ TEST(MinimizeEnergy, ACompressedPointAtTheHoleCentreEndsOnTheWall) {
         return h;
       },
       wall * d);
-  EnergyTrustRegionOptions options;
-  if (std::getenv("TR_LOG")) options.log = [](const std::string& l) { std::cerr << l << "\n"; };
-  const EnergyTrustRegionResult result = MinimizeEnergy(problem, VecX::Zero(2), options);
+  const EnergyTrustRegionResult result = MinimizeEnergy(problem, VecX::Zero(2));
   ASSERT_TRUE(result.converged) << result.failure;
   EXPECT_TRUE(result.stable);
   EXPECT_GE(result.negative_curvature_steps, 1);
@@ -176,9 +172,7 @@ TEST(MinimizeEnergy, SwingsAChainOfStiffSpringsDownThroughNinetyDegrees) {
       2.0 * g);
   VecX start(4);
   start << 1.0, 0.0, 2.0, 0.0;
-  EnergyTrustRegionOptions options;
-  if (std::getenv("TR_LOG")) options.log = [](const std::string& l) { std::cerr << l << "\n"; };
-  const EnergyTrustRegionResult result = MinimizeEnergy(problem, start, options);
+  const EnergyTrustRegionResult result = MinimizeEnergy(problem, start);
   ASSERT_TRUE(result.converged) << result.failure;
   EXPECT_TRUE(result.stable);
   // Along the springs within round-off of the stretch; across them the chain is held only by its
