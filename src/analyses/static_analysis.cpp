@@ -254,7 +254,8 @@ std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const 
     if (!state.in_contact) continue;
     const model::Body& body = *contact.bodies()[0];
     reports.push_back({body.s_start + body.reduced->node_positions[contact.node()].x(), state.md, state.normal_force,
-                       state.friction_force.norm(), state.high_side_angle, body.component});
+                       state.friction_force.norm(), state.high_side_angle, body.component, state.contact_point,
+                       state.normal});
   }
   return reports;
 }

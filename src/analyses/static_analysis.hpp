@@ -58,6 +58,8 @@ struct ContactReport {
   double friction_force = 0.0;    // N (magnitude)
   double high_side_angle = 0.0;   // rad: 0 high side, π/2 right, π low side
   int component = 0;              // index in the string
+  Vec3 contact_point = Vec3::Zero();  // where the string touches the wall (global), m
+  Vec3 normal = Vec3::Zero();         // unit, from the hole axis toward the contact (global)
 };
 
 // The bit's directional tendency (case-format.md "Frames and signs"), from the reaction of the

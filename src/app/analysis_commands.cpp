@@ -22,6 +22,8 @@
 #include "core/error.hpp"
 #include "io/analysis_results.hpp"
 #include "io/model_input.hpp"
+#include "io/report_html.hpp"
+#include "io/vtk_files.hpp"
 
 namespace drillflex::app {
 namespace {
@@ -290,7 +292,7 @@ void PrintTransient(const io::Case& c, const analyses::TransientResult& result) 
                            Show(c, last.hook_load, Quantity::Force), Show(c, last.weight_on_bit, Quantity::WeightOnBit));
 }
 
-int RunAnalyses(const CommandOptions& options, Requested requested) {
+int RunAnalyses(const CommandOptions& options, Requested requested, const char* command) {
   const auto start = std::chrono::steady_clock::now();
   const io::Case c = io::ReadCase(options.case_path);
   if (requested.static_analysis && !c.well && c.supports.empty()) {
@@ -304,6 +306,8 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
                            built.system.num_velocities());
   io::ResultFiles files(options.output_directory.empty() ? io::DefaultOutputDirectory(c) : options.output_directory);
   io::AddCaseHeader(c, built, files);
+  const bool report = c.output.report && !options.no_report, vtk = c.output.vtk && !options.no_report;
+  io::ReportData report_data;
 
   VecX equilibrium = built.system.ReferencePositions();
   if (requested.static_analysis || requested.modes || requested.vibration) {
@@ -311,9 +315,13 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     if (options.verbose) settings.log = [](const std::string& line) { std::cerr << line << '\n'; };
     const auto result = analyses::RunStaticInWell(input, built, cache, settings);
     equilibrium = result.q;
-    if (requested.static_analysis) {
-      PrintStatic(c, result);
+    // The modes and the vibration write the equilibrium they start from too (not printed): the
+    // report and string.vtp draw it.
+    if (requested.static_analysis) PrintStatic(c, result);
+    {
       io::AddStaticResults(c, result, files);
+      if (report) report_data.AddStatic(c, input, result);
+      if (vtk) io::AddStaticVtk(c, built, result, files);
     }
   }
   if (requested.modes) {
@@ -325,6 +333,7 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     PrintModes(result);
     PrintCriticalRpm(c, result);
     io::AddModesResults(c, result, files);
+    if (report) report_data.AddModes(c, result);
     if (settings.campbell) {
       const analyses::CampbellResult campbell = analyses::ComputeCampbell(built.system, equilibrium, settings, &fluid);
       PrintCampbell(campbell);
@@ -343,6 +352,7 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     }
     PrintVibration(c, result);
     io::AddVibrationResults(c, result, files);
+    if (report) report_data.AddExcitations(c);
   }
   if (requested.buckling) {
     analyses::StaticSettings static_settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
@@ -374,20 +384,26 @@ int RunAnalyses(const CommandOptions& options, Requested requested) {
     }
     PrintTransient(c, result);
     io::AddTransientResults(c, result, files);
+    if (report) report_data.AddTransient(c, input, result);
+  }
+  if (report) {
+    const double solved = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    files.Add("report.html", io::ComposeReportHtml(files.json(), report_data, {command, solved}));
   }
   files.Commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << fmt::format("results written to {} ({:.3g} s)\n", files.directory(), seconds);
+  std::cout << fmt::format("results written to {} ({:.3g} s){}\n", files.directory(), seconds,
+                           report ? fmt::format("; the report: {}/report.html", files.directory()) : "");
   return kExitOk;
 }
 
 }  // namespace
 
-int RunStaticCommand(const CommandOptions& options) { return RunAnalyses(options, {.static_analysis = true}); }
-int RunModesCommand(const CommandOptions& options) { return RunAnalyses(options, {.modes = true}); }
-int RunBucklingCommand(const CommandOptions& options) { return RunAnalyses(options, {.buckling = true}); }
-int RunVibrationCommand(const CommandOptions& options) { return RunAnalyses(options, {.vibration = true}); }
-int RunTransientCommand(const CommandOptions& options) { return RunAnalyses(options, {.transient = true}); }
+int RunStaticCommand(const CommandOptions& options) { return RunAnalyses(options, {.static_analysis = true}, "static"); }
+int RunModesCommand(const CommandOptions& options) { return RunAnalyses(options, {.modes = true}, "modes"); }
+int RunBucklingCommand(const CommandOptions& options) { return RunAnalyses(options, {.buckling = true}, "buckling"); }
+int RunVibrationCommand(const CommandOptions& options) { return RunAnalyses(options, {.vibration = true}, "vibration"); }
+int RunTransientCommand(const CommandOptions& options) { return RunAnalyses(options, {.transient = true}, "transient"); }
 
 int RunCaseCommand(const CommandOptions& options) {
   const io::Case c = io::ReadCase(options.case_path);
@@ -396,7 +412,8 @@ int RunCaseCommand(const CommandOptions& options) {
     throw InputError({c.file, 0, 0}, "analyses", "the case lists no analyses to run");
   }
   return RunAnalyses(options, {a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value(),
-                               a.vibration.has_value(), a.transient.has_value()});
+                               a.vibration.has_value(), a.transient.has_value()},
+                     "run");
 }
 
 }  // namespace drillflex::app

@@ -16,6 +16,7 @@ struct CommandOptions {
   std::string case_path;
   std::string output_directory;  // "" = results/<case name>
   bool verbose = false;          // the solvers' progress on standard error
+  bool no_report = false;        // no report.html and no VTK files (batch runs)
 };
 
 int RunCheck(const CommandOptions& options);

@@ -18,6 +18,7 @@ struct Subcommand {
   const char* description;
   std::function<int(const CommandOptions&)> run;
   bool writes_results;
+  bool writes_report;  // report.html and the VTK files: the commands that solve
 };
 
 // Runs a subcommand, turning every error into a message on stderr and an exit status.
@@ -46,19 +47,19 @@ int main(int argc, char** argv) {
 
   const std::vector<Subcommand> commands = {
       {"check", "Read and validate a case; print a summary of the well, the string and the analyses",
-       drillflex::app::RunCheck, false},
-      {"well", "Write the well trajectory (trajectory.csv, results.json)", drillflex::app::RunWell, true},
+       drillflex::app::RunCheck, false, false},
+      {"well", "Write the well trajectory (trajectory.csv, results.json)", drillflex::app::RunWell, true, false},
       {"static", "Static equilibrium: deformed shape, internal forces and stresses along the string",
-       drillflex::app::RunStaticCommand, true},
+       drillflex::app::RunStaticCommand, true, true},
       {"modes", "Natural frequencies and mode shapes about the static equilibrium", drillflex::app::RunModesCommand,
-       true},
+       true, true},
       {"vibration", "Forced response against RPM: the critical-speed map, critical RPMs and safe windows",
-       drillflex::app::RunVibrationCommand, true},
+       drillflex::app::RunVibrationCommand, true, true},
       {"buckling", "Critical load multiplier of the case's loads (eigenproblem and frequency against load)",
-       drillflex::app::RunBucklingCommand, true},
+       drillflex::app::RunBucklingCommand, true, true},
       {"transient", "Time integration from the static equilibrium: transient.csv at the output interval",
-       drillflex::app::RunTransientCommand, true},
-      {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true},
+       drillflex::app::RunTransientCommand, true, true},
+      {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true, true},
   };
 
   CommandOptions options;
@@ -70,6 +71,9 @@ int main(int argc, char** argv) {
       sub->add_option("-o,--output", options.output_directory,
                       "Output directory (default: results/<case name>)");
       sub->add_flag("-v,--verbose", options.verbose, "Print the solvers' progress (stages, Newton iterations)");
+      if (command.writes_report) {
+        sub->add_flag("--no-report", options.no_report, "Write no report.html and no VTK files (batch runs)");
+      }
     }
     sub->callback([&status, &options, command]() { status = Guarded(command, options); });
   }

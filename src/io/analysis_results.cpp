@@ -234,11 +234,19 @@ void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, R
                       {"frequency_hz", point.frequency_hz}});
   }
   files.Add("buckling.csv", table.ToString());
+  // The buckled shape: per station its s and the displacement (string frame, largest = 1).
+  json mode_s = json::array(), mode_displacement = json::array();
+  for (std::size_t i = 0; i < result.s.size() && i < result.mode_displacement.size(); ++i) {
+    mode_s.push_back(out(result.s[i], Quantity::Length));
+    const Vec3& d = result.mode_displacement[i];
+    mode_displacement.push_back(json::array({d.x(), d.y(), d.z()}));
+  }
   files.json()["buckling"] = {
       {"load_factor", result.load_factor},
       {"critical_load", out(result.critical_load, Quantity::Force)},
       {"load_factors", result.load_factors},
       {"reference_compression", out(result.reference_compression, Quantity::Force)},
+      {"mode", {{"s", mode_s}, {"displacement", mode_displacement}}},
       {"frequency_method",
        {{"converged", result.frequency_method_converged},
         {"load_factor", result.frequency_load_factor},

@@ -23,6 +23,12 @@ struct WellConfig {
   double output_step = 0.0;                 // m, spacing of trajectory output between stations
 };
 
+// `output`: which files beside results.json and the CSV tables a job writes.
+struct OutputConfig {
+  bool report = true;  // report.html
+  bool vtk = true;     // string.vtp, well.vtp, contacts.vtp (ParaView)
+};
+
 struct Case {
   std::string name;
   std::string file;        // path of the case file as given
@@ -40,6 +46,7 @@ struct Case {
   std::vector<model::Load> loads;
   model::Operation operation;
   analyses::AnalysesConfig analyses;
+  OutputConfig output;
 };
 
 // Reads and validates a case file. Throws InputError naming the file, line, column and key path.

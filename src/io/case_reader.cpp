@@ -29,7 +29,7 @@ units::System ReadSystem(const YamlView& root, const char* key, units::System fa
 Case ReadRoot(const YamlView& root, const std::string& file, const std::string& directory) {
   root.ExpectMap("a case (a map of keys: name, units, well, string, ...)", false);
   root.AllowOnlyKeys({"name", "units", "output_units", "well", "fluid", "gravity", "materials",
-                      "string", "model", "supports", "loads", "operation", "analyses"});
+                      "string", "model", "supports", "loads", "operation", "analyses", "output"});
   Case c;
   c.file = file;
   c.directory = directory;
@@ -56,6 +56,12 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
   if (const auto loads = top.OptionalChild("loads")) c.loads = ReadLoadsSection(*loads);
   if (const auto operation = top.PresentChild("operation")) c.operation = ReadOperationSection(*operation);
   if (const auto analyses = top.PresentChild("analyses")) c.analyses = ReadAnalysesSection(*analyses, c.operation);
+  if (const auto output = top.PresentChild("output")) {
+    output->ExpectMap("the output files (report: true|false, vtk: true|false)");
+    output->AllowOnlyKeys({"report", "vtk"});
+    if (const auto report = output->OptionalChild("report")) c.output.report = report->AsBool();
+    if (const auto vtk = output->OptionalChild("vtk")) c.output.vtk = vtk->AsBool();
+  }
   CheckCaseConsistency(c, top);
   return c;
 }

@@ -281,3 +281,41 @@ TEST(Cli, VibrationWithAnUnknownMotorSpeedExitsWithTwoAndWritesNothing) {
 }
 
 }  // namespace
+
+// Every command that solves writes report.html and the VTK files beside results.json; --no-report and
+// the case's `output: {report: false, vtk: false}` turn them off; a bad `output` key is bad input.
+TEST(Cli, StaticWritesTheReportAndVtkUnlessTurnedOff) {
+  const fs::path out = FreshDirectory("report");
+  RunResult result = RunDrillflex("static " + kExample + " -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("report.html"));
+  for (const char* name : {"report.html", "string.vtp", "well.vtp", "contacts.vtp"}) {
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+  const fs::path quiet = FreshDirectory("no-report");
+  result = RunDrillflex("static " + kExample + " --no-report -o " + quiet.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(fs::exists(quiet / "results.json"));
+  for (const char* name : {"report.html", "string.vtp", "well.vtp", "contacts.vtp"}) {
+    EXPECT_FALSE(fs::exists(quiet / name)) << name;
+  }
+
+  const fs::path directory = FreshDirectory("output-key");
+  fs::create_directories(directory);
+  std::ifstream example(kExample);
+  std::stringstream text;
+  text << example.rdbuf();
+  fs::copy_file(fs::path(kExample).parent_path() / "survey.csv", directory / "survey.csv");
+  std::ofstream(directory / "no-vtk.yaml") << text.str() << "output: {vtk: false}\n";
+  const fs::path only_report = directory / "out";
+  result = RunDrillflex("static " + (directory / "no-vtk.yaml").string() + " -o " + only_report.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(fs::exists(only_report / "report.html"));
+  EXPECT_FALSE(fs::exists(only_report / "string.vtp"));
+  std::ofstream(directory / "bad-output.yaml") << text.str() << "output: {report: maybe}\n";
+  const fs::path bad = directory / "bad";
+  result = RunDrillflex("static " + (directory / "bad-output.yaml").string() + " -o " + bad.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("output.report"));
+  EXPECT_FALSE(fs::exists(bad));
+}

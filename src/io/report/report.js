@@ -1,0 +1,672 @@
+// drillflex report.html: draws the job's results.json (inlined as #results-json, in the case's output
+// units) and the report's own data (#report-json: components, hole centres, mode shapes, time
+// series) with Chart.js (plots) and three.js (the 3-D view), both inlined from Debian's packages.
+// After drawing, <body> carries data-report-status ("ok" or "error") and every plot data-points
+// (its number of drawn points): tests/report reads them from the rendered page.
+(function () {
+  'use strict';
+
+  const errors = [];
+  function recordError(message) {
+    errors.push(String(message));
+    document.body.dataset.reportStatus = 'error';
+    document.body.dataset.reportErrors = errors.join(' | ');
+    let banner = document.getElementById('report-errors');
+    if (!banner) {
+      banner = el('div', {id: 'report-errors', class: 'errors'});
+      document.body.insertBefore(banner, document.body.firstChild);
+    }
+    banner.textContent = 'The report could not draw everything: ' + errors.join('; ');
+  }
+  window.addEventListener('error', (event) => recordError(event.message));
+
+  const R = JSON.parse(document.getElementById('results-json').textContent);
+  const D = JSON.parse(document.getElementById('report-json').textContent);
+  const RUN = JSON.parse(document.getElementById('run-json').textContent);
+  const U = D.units || RUN.units || {};
+  const root = document.getElementById('report');
+  const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', '#e377c2', '#17becf'];
+
+  // ---- small helpers ----------------------------------------------------------------------------
+  function el(tag, attrs, children) {
+    const node = document.createElement(tag);
+    for (const [key, value] of Object.entries(attrs || {})) {
+      if (key === 'text') node.textContent = value;
+      else if (key === 'html') node.innerHTML = value;
+      else node.setAttribute(key, value);
+    }
+    for (const child of children || []) node.appendChild(typeof child === 'string' ? document.createTextNode(child) : child);
+    return node;
+  }
+  // A number as an engineer reads it: `digits` significant figures, no "-0", thousands grouped.
+  function num(x, digits) {
+    if (x === null || x === undefined || !isFinite(x)) return '–';
+    let v = Number(Number(x).toPrecision(digits || 4));
+    if (v === 0) v = 0;  // -0 → 0
+    return v.toLocaleString('en-US', {maximumSignificantDigits: digits || 4});
+  }
+  // A value the test compares with results.json: data-key names its path there.
+  function value(x, unit, key, digits) {
+    const span = el('span', {class: 'value', text: num(x, digits || 5) + (unit ? ' ' + unit : '')});
+    if (key) span.dataset.key = key;
+    return span;
+  }
+  function section(id, title) {
+    const s = el('section', {id: id, class: 'report-section'}, [el('h2', {text: title})]);
+    root.appendChild(s);
+    return s;
+  }
+  function facts(parent, rows) {
+    const table = el('table', {class: 'facts'});
+    for (const [label, content] of rows) {
+      const cell = el('td');
+      if (content instanceof Node) cell.appendChild(content); else cell.textContent = content;
+      table.appendChild(el('tr', {}, [el('th', {text: label}), cell]));
+    }
+    parent.appendChild(table);
+    return table;
+  }
+  function first(array, fallback) { return array && array.length ? array[0] : fallback; }
+
+  // ---- plots -------------------------------------------------------------------------------------
+  // Shaded x-ranges, horizontal and vertical lines with labels, and drag-to-zoom (double-click resets):
+  // one plugin, configured per chart through options.plugins.marks.
+  const marksPlugin = {
+    id: 'marks',
+    beforeDatasetsDraw(chart, args, options) {
+      const {ctx, chartArea: area, scales: {x, y}} = chart;
+      ctx.save();
+      for (const band of options.xBands || []) {
+        const left = Math.max(x.getPixelForValue(band.from), area.left);
+        const right = Math.min(x.getPixelForValue(band.to), area.right);
+        if (right <= left) continue;
+        ctx.fillStyle = band.color || 'rgba(44,160,44,0.15)';
+        ctx.fillRect(left, area.top, right - left, area.bottom - area.top);
+      }
+      ctx.restore();
+    },
+    afterDatasetsDraw(chart, args, options) {
+      const {ctx, chartArea: area, scales: {x, y}} = chart;
+      ctx.save();
+      ctx.font = '11px sans-serif';
+      for (const line of options.hLines || []) {
+        const py = y.getPixelForValue(line.y);
+        if (py < area.top || py > area.bottom) continue;
+        ctx.strokeStyle = line.color || '#d62728';
+        ctx.setLineDash([6, 4]);
+        ctx.beginPath(); ctx.moveTo(area.left, py); ctx.lineTo(area.right, py); ctx.stroke();
+        ctx.fillStyle = line.color || '#d62728';
+        ctx.fillText(line.label || '', area.left + 4, py - 4);
+      }
+      for (const line of options.vLines || []) {
+        const px = x.getPixelForValue(line.x);
+        if (px < area.left || px > area.right) continue;
+        ctx.strokeStyle = line.color || '#555';
+        ctx.setLineDash([3, 3]);
+        ctx.beginPath(); ctx.moveTo(px, area.top); ctx.lineTo(px, area.bottom); ctx.stroke();
+        ctx.fillStyle = line.color || '#555';
+        ctx.save(); ctx.translate(px + 3, area.top + 4); ctx.rotate(Math.PI / 2);
+        ctx.fillText(line.label || '', 0, 0); ctx.restore();
+      }
+      const drag = chart.$drag;
+      if (drag && drag.to !== undefined) {
+        ctx.fillStyle = 'rgba(31,119,180,0.15)';
+        ctx.fillRect(Math.min(drag.from, drag.to), area.top, Math.abs(drag.to - drag.from), area.bottom - area.top);
+      }
+      ctx.restore();
+    },
+  };
+  Chart.register(marksPlugin);
+
+  function enableZoom(chart, canvas) {
+    canvas.addEventListener('mousedown', (e) => { chart.$drag = {from: e.offsetX}; });
+    canvas.addEventListener('mousemove', (e) => { if (chart.$drag) { chart.$drag.to = e.offsetX; chart.draw(); } });
+    canvas.addEventListener('mouseup', (e) => {
+      const drag = chart.$drag;
+      chart.$drag = null;
+      if (drag && Math.abs(e.offsetX - drag.from) > 5) {
+        const a = chart.scales.x.getValueForPixel(drag.from), b = chart.scales.x.getValueForPixel(e.offsetX);
+        chart.options.scales.x.min = Math.min(a, b);
+        chart.options.scales.x.max = Math.max(a, b);
+      }
+      chart.update('none');
+    });
+    canvas.addEventListener('dblclick', () => {
+      delete chart.options.scales.x.min; delete chart.options.scales.x.max; chart.update('none');
+    });
+  }
+
+  // A plot of {x, y} series. spec: {title, x, y (axis titles), series: [{label, x: [], y: [], color,
+  // line (default true), dash, fill, points}], xBands, hLines, vLines, yMin, yMax, logY, xReverse}.
+  function plot(parent, spec) {
+    const figure = el('figure', {class: 'plot'});
+    figure.appendChild(el('figcaption', {text: spec.title}));
+    const holder = el('div', {class: 'canvas-holder'});
+    const canvas = el('canvas');
+    holder.appendChild(canvas);
+    figure.appendChild(holder);
+    parent.appendChild(figure);
+    let points = 0;
+    const datasets = spec.series.map((s, i) => {
+      const data = [];
+      for (let k = 0; k < s.x.length; ++k) {
+        if (isFinite(s.x[k]) && isFinite(s.y[k])) data.push({x: s.x[k], y: s.y[k]});
+      }
+      if (!s.hidden) points += data.length;
+      const color = s.color || COLORS[i % COLORS.length];
+      return {
+        label: s.label, data: data, showLine: s.line !== false, borderColor: color, backgroundColor: s.fillColor || color,
+        borderWidth: s.width || 1.5, pointRadius: s.points ? (s.pointRadius || 3) : 0, pointHoverRadius: 4,
+        pointStyle: s.pointStyle || 'circle', borderDash: s.dash || [], fill: s.fill || false, hidden: !!s.hidden,
+        order: s.order || 0, tension: 0,
+      };
+    });
+    figure.dataset.points = String(points);
+    if (points === 0) figure.classList.add('empty');
+    // A series that barely changes (a held WOB, 1e-6 of its value) is drawn against a span of 1 % of
+    // its value, not stretched over the plot as if its round-off were a signal.
+    let yMin = spec.yMin, yMax = spec.yMax;
+    if (yMin === undefined && yMax === undefined && !spec.logY && points > 0) {
+      const ys = datasets.flatMap((d) => d.data.map((p) => p.y));
+      const lo = Math.min(...ys), hi = Math.max(...ys), size = Math.max(Math.abs(lo), Math.abs(hi));
+      if (size > 0 && hi - lo < 1e-3 * size) { yMin = (lo + hi) / 2 - 0.01 * size; yMax = (lo + hi) / 2 + 0.01 * size; }
+    }
+    if (spec.square) holder.classList.add('square');
+    const chart = new Chart(canvas, {
+      type: 'scatter',
+      data: {datasets: datasets},
+      options: {
+        animation: false, responsive: true, maintainAspectRatio: false, parsing: false, normalized: true,
+        interaction: {mode: 'nearest', intersect: false, axis: 'x'},
+        scales: {
+          x: {type: 'linear', title: {display: true, text: spec.x}, reverse: !!spec.xReverse, min: spec.xMin, max: spec.xMax},
+          y: {type: spec.logY ? 'logarithmic' : 'linear', title: {display: true, text: spec.y}, min: yMin, max: yMax},
+        },
+        plugins: {
+          legend: {display: spec.series.length > 1, labels: {filter: (item) => !spec.series[item.datasetIndex].noLegend}},
+          tooltip: {callbacks: {label: (c) => `${c.dataset.label || ''}: ${num(c.parsed.y, 5)} at ${num(c.parsed.x, 5)}`}},
+          marks: {xBands: spec.xBands || [], hLines: spec.hLines || [], vLines: spec.vLines || []},
+        },
+      },
+    });
+    enableZoom(chart, canvas);
+    return chart;
+  }
+  function column(rows, key) { return rows.map((r) => r[key]); }
+  function where(s, md) { return s === undefined ? '' : (md !== undefined ? `MD ${num(md, 6)} ${U.length}` : `${num(s, 5)} ${U.length} from the bit`); }
+
+  // ---- header ------------------------------------------------------------------------------------
+  function header() {
+    const s = el('header', {id: 'header', class: 'report-section'});
+    root.appendChild(s);
+    s.appendChild(el('h1', {text: R.case || 'drillflex case'}));
+    const model = R.model || {};
+    facts(s, [
+      ['job', `drillflex ${RUN.command} (version ${RUN.version}), written ${RUN.written}, run time ${num(RUN.run_seconds, 3)} s`],
+      ['model', `${model.bodies} bodies, ${model.coordinates} coordinates, ${model.contacts} wall contacts, ${model.elements_per_body} elements and ${model.modes_per_body} modes a body`],
+      ['units', `${R.units}: lengths in ${U.length}, diameters in ${U.diameter}, forces in ${U.force}, stresses in ${U.stress}`],
+    ]);
+    const warnings = [];
+    if (R.static) {
+      for (const w of R.static.warnings || []) warnings.push(w);
+      const method = R.static.method_used || '';
+      if (method && !method.startsWith('energy-minimum')) warnings.push(`the static equilibrium needed the fallback path (${method})`);
+      const into = (R.static.nodes || []).filter((n) => n.clearance !== undefined && n.clearance < 0);
+      if (into.length) {
+        const deepest = into.reduce((a, b) => (b.clearance < a.clearance ? b : a));
+        warnings.push(`${into.length} stations lie into the wall (deepest ${num(-deepest.clearance, 3)} ${U.diameter} at ${where(deepest.s, deepest.md)}): the contact's compliance, normal force / stiffness`);
+      }
+    }
+    if (R.vibration && R.vibration.max_clearance_ratio) {
+      const beyond = R.vibration.rpm.filter((_, i) => R.vibration.max_clearance_ratio[i] > 1);
+      if (beyond.length) warnings.push(`the linear vibration response exceeds the clearance at ${beyond.length} of ${R.vibration.rpm.length} rotary speeds: the wall would limit it there (the linear model does not)`);
+    }
+    if (R.modes) {
+      const negative = R.modes.filter((m) => m.negative_stiffness).length;
+      if (negative) warnings.push(`${negative} of the modes have negative stiffness (ω² < 0): not vibration modes; with wall friction they come from its tangent (docs/validation.md)`);
+    }
+    const list = el('ul', {class: 'warnings'});
+    for (const w of warnings) list.appendChild(el('li', {text: w}));
+    if (warnings.length) s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: 'Warnings'}), list]));
+    const nav = el('nav');
+    s.appendChild(nav);
+    return nav;
+  }
+
+  // ---- static ------------------------------------------------------------------------------------
+  function bhaSchematic(parent, nodes, contacts) {
+    const comps = D.components || [];
+    if (!comps.length) return;
+    const mdOf = mdMapping(nodes);
+    const width = 1000, height = 120, mid = 60;
+    const md = comps.flatMap((c) => [mdOf(c.from), mdOf(c.to)]);
+    const lo = Math.min(...md), hi = Math.max(...md);
+    const largest = Math.max(...comps.map((c) => c.blade_od || c.joint_od || c.od), ...nodes.map((n) => n.hole_diameter || 0));
+    const sx = (m) => 10 + (width - 20) * (m - lo) / (hi - lo || 1);
+    const sy = (d) => (height - 30) * d / largest / 2;
+    const svg = ['<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ' + width + ' ' + height + '" class="schematic">'];
+    const hole = nodes.filter((n) => n.hole_diameter);
+    if (hole.length) {
+      const top = hole.map((n) => `${sx(n.md).toFixed(1)},${(mid - sy(n.hole_diameter)).toFixed(1)}`).join(' ');
+      const bottom = hole.map((n) => `${sx(n.md).toFixed(1)},${(mid + sy(n.hole_diameter)).toFixed(1)}`).join(' ');
+      svg.push(`<polyline points="${top}" class="wall"/><polyline points="${bottom}" class="wall"/>`);
+    }
+    comps.forEach((c, i) => {
+      const a = sx(mdOf(c.from)), b = sx(mdOf(c.to));
+      const x = Math.min(a, b), w = Math.max(Math.abs(b - a), 0.8);
+      const title = `${c.name} (${c.type}): OD ${num(c.od, 4)} ${U.diameter}, ${num(Math.abs(c.to - c.from), 4)} ${U.length}${c.count > 1 ? ', ' + c.count + ' joints' : ''}`;
+      svg.push(`<rect x="${x.toFixed(1)}" y="${(mid - sy(c.od)).toFixed(1)}" width="${w.toFixed(1)}" height="${(2 * sy(c.od)).toFixed(1)}" class="comp comp-${c.type}" fill="${COLORS[i % COLORS.length]}"><title>${escapeXml(title)}</title></rect>`);
+      if (c.blade_od) {
+        const centre = (a + b) / 2, bw = Math.max(w * 0.3, 2);
+        svg.push(`<rect x="${(centre - bw / 2).toFixed(1)}" y="${(mid - sy(c.blade_od)).toFixed(1)}" width="${bw.toFixed(1)}" height="${(2 * sy(c.blade_od)).toFixed(1)}" class="blade"><title>${escapeXml(c.name + ': blades ' + num(c.blade_od, 4) + ' ' + U.diameter)}</title></rect>`);
+      }
+    });
+    for (const c of contacts) {
+      const x = sx(c.md);
+      svg.push(`<path d="M ${x.toFixed(1)} ${height - 14} l -5 10 l 10 0 z" class="contact"><title>${escapeXml(`${c.component}: ${num(c.normal_force, 4)} ${U.force} at MD ${num(c.md, 6)} ${U.length}`)}</title></path>`);
+    }
+    svg.push(`<text x="${sx(mdOf(0)) - 4}" y="12" text-anchor="end" class="label">bit</text>`);
+    svg.push('</svg>');
+    const figure = el('figure', {class: 'plot schematic-figure'});
+    figure.appendChild(el('figcaption', {text: 'The string to scale along MD (diameters to the hole\'s scale; blades darker; ▲ wall contacts carrying force). Hover a component for its name and size.'}));
+    const holder = el('div', {html: svg.join('')});
+    figure.appendChild(holder);
+    figure.dataset.points = String(comps.length);
+    parent.appendChild(figure);
+  }
+  function escapeXml(t) { return String(t).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;'); }
+  // MD of a distance s from the bit, from the static stations (md = md_bit − s); s itself without a well.
+  function mdMapping(nodes) {
+    const n = (nodes || []).find((x) => x.md !== undefined);
+    if (!n || !R.static || !(R.static.nodes || []).some((x) => x.hole_diameter !== undefined)) return (s) => s;
+    const bit = n.md + n.s;
+    return (s) => bit - s;
+  }
+
+  function staticSection(nav) {
+    const st = R.static;
+    const s = section('static', 'Static equilibrium');
+    nav.appendChild(el('a', {href: '#static', text: 'static'}));
+    const nodes = st.nodes || [];
+    const contacts = st.contacts || [];
+    const inHole = nodes.some((n) => n.hole_diameter !== undefined);
+    const x = inHole ? column(nodes, 'md') : column(nodes, 's');
+    const xTitle = inHole ? `MD (${U.length})` : `distance from the bit (${U.length})`;
+    const peak = nodes.reduce((a, b) => (b.von_mises_stress > a.von_mises_stress ? b : a), nodes[0] || {});
+    const rows = [
+      ['solution', `${st.converged ? 'converged' : 'NOT converged'} (${st.method_used || 'newton'}), ${st.iterations} iterations, |R| = ${num(st.residual_norm, 3)} ${U.force}`],
+    ];
+    if (st.bit) {
+      const b = st.bit;
+      const t = b.tendency || {};
+      const words = `${t.inclination === 'hold' ? 'holds angle' : t.inclination === 'build' ? 'builds' : 'drops'}` +
+        (t.azimuth && t.azimuth !== 'none' ? `, walks ${t.azimuth}` : ', no walk');
+      const span = el('span');
+      span.append(value(b.side_force, U.force, 'static.bit.side_force'), ` (build ${num(b.build_force, 4)} ${U.force}, walk ${num(b.walk_force, 4)} ${U.force})`);
+      rows.push(['bit side force', span]);
+      rows.push(['bit tilt', value(b.tilt, 'deg', 'static.bit.tilt')]);
+      rows.push(['tendency', `the bit ${words} (a side force counts above ${num(t.threshold, 3)} ${U.force})`]);
+    }
+    if (contacts.length) {
+      const largest = contacts.reduce((a, b) => (b.normal_force > a.normal_force ? b : a));
+      const span = el('span');
+      span.append(value(largest.normal_force, U.force, 'static.contacts.max_normal_force'), ` at ${where(largest.s, largest.md)} (${largest.component}); ${contacts.length} contacts carry force`);
+      rows.push(['largest wall contact', span]);
+    } else if (inHole) {
+      rows.push(['wall contacts', 'none carries force']);
+    }
+    if (peak) {
+      const span = el('span');
+      span.append(value(peak.von_mises_stress, U.stress, 'static.nodes.max_von_mises_stress'), ` at ${where(peak.s, peak.md)}`);
+      rows.push(['peak von Mises stress', span]);
+    }
+    facts(s, rows);
+    bhaSchematic(s, nodes, contacts);
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    if (inHole) {
+      const available = nodes.map((n) => n.hole_offset + n.clearance);
+      plot(grid, {
+        title: 'Lateral offset from the hole axis, inside the clearance', x: xTitle, y: `offset (${U.diameter})`,
+        series: [
+          {label: 'clearance (the wall)', x: x, y: available, color: 'rgba(120,120,120,0.6)', fill: 'origin', fillColor: 'rgba(150,150,150,0.2)', width: 0.5},
+          {label: 'string axis offset', x: x, y: column(nodes, 'hole_offset'), color: COLORS[0], width: 2},
+        ],
+      });
+      plot(grid, {
+        title: 'Wall contact force', x: xTitle, y: `normal force (${U.force})`,
+        series: [
+          {label: 'normal force', x: column(contacts, 'md'), y: column(contacts, 'normal_force'), line: false, points: true, pointStyle: 'triangle', pointRadius: 5, color: COLORS[1]},
+          {label: 'friction force', x: column(contacts, 'md'), y: column(contacts, 'friction_force'), line: false, points: true, pointRadius: 3, color: COLORS[3]},
+        ],
+      });
+    } else {
+      plot(grid, {title: 'Lateral displacement', x: xTitle, y: `displacement (${U.diameter})`,
+        series: [{label: 'lateral', x: x, y: column(nodes, 'lateral_offset')}]});
+    }
+    const limit = D.stress_limit;
+    plot(grid, {
+      title: 'Bending and von Mises stress', x: xTitle, y: `stress (${U.stress})`,
+      series: [
+        {label: 'von Mises', x: x, y: column(nodes, 'von_mises_stress'), color: COLORS[1], width: 2},
+        {label: 'bending', x: x, y: column(nodes, 'bending_stress'), color: COLORS[0]},
+      ],
+      hLines: limit ? [{y: limit.value, label: `${limit.label}: ${num(limit.value, 3)} ${U.stress}`}] : [],
+    });
+    const axial = column(nodes, 'axial_force');
+    const neutral = [];
+    for (let i = 1; i < axial.length; ++i) {
+      if ((axial[i - 1] < 0) !== (axial[i] < 0)) {
+        const f = axial[i - 1] / (axial[i - 1] - axial[i]);
+        neutral.push({x: x[i - 1] + f * (x[i] - x[i - 1]), label: 'neutral point', color: '#2ca02c'});
+      }
+    }
+    plot(grid, {
+      title: 'Axial force (tension positive)', x: xTitle, y: `axial force (${U.force})`,
+      series: [{label: 'axial force', x: x, y: axial, color: COLORS[0], width: 2}],
+      hLines: [{y: 0, label: '', color: '#999'}], vLines: neutral,
+    });
+    plot(grid, {title: 'Torque', x: xTitle, y: `torque (${U.moment})`,
+      series: [{label: 'torque', x: x, y: column(nodes, 'torque'), color: COLORS[4], width: 2}]});
+    if (neutral.length) {
+      s.appendChild(el('p', {text: `Neutral point (axial force zero) at ${neutral.map((n) => `${inHole ? 'MD ' : ''}${num(n.x, 6)} ${U.length}`).join(', ')}.`}));
+    }
+  }
+
+  // ---- 3-D view ----------------------------------------------------------------------------------
+  function threeSection(nav) {
+    const nodes = R.static.nodes;
+    const centres = D.hole_centre;
+    const s = section('view3d', '3-D view of the string in the hole');
+    nav.appendChild(el('a', {href: '#view3d', text: '3-D view'}));
+    const controls = el('div', {class: 'controls'});
+    const slider = el('input', {type: 'range', min: '0', max: '3', step: '0.01', value: '2'});
+    const label = el('span');
+    controls.append('lateral scale ', slider, ' ', label, ' — drag to turn, scroll to zoom; contacts coloured by normal force (blue low, red high)');
+    s.appendChild(controls);
+    const holder = el('div', {class: 'view3d'});
+    s.appendChild(holder);
+    const canvas = document.createElement('canvas');
+    const gl = canvas.getContext('webgl') || canvas.getContext('experimental-webgl');
+    if (!gl) {
+      holder.appendChild(el('p', {class: 'note', text: 'This browser has no WebGL: the 3-D view cannot be drawn (the plots above hold the same results).'}));
+      s.dataset.points = '0';
+      s.dataset.webgl = 'none';
+      return;
+    }
+    const renderer = new THREE.WebGLRenderer({canvas: canvas, antialias: true, preserveDrawingBuffer: true});
+    const width = holder.clientWidth || 900, height = 520;
+    renderer.setSize(width, height);
+    renderer.setClearColor(0xffffff);
+    holder.appendChild(canvas);
+    const scene = new THREE.Scene();
+    scene.add(new THREE.AmbientLight(0xffffff, 0.6));
+    const sun = new THREE.DirectionalLight(0xffffff, 0.6);
+    sun.position.set(1, 2, 1);
+    scene.add(sun);
+    // Global frame x north, y east, z down → three.js (east, up, south): a proper rotation.
+    const toScene = (p) => new THREE.Vector3(p[1], -p[2], -p[0]);
+    const origin = toScene(centres[Math.floor(centres.length / 2)]);
+    const length = Math.abs(nodes[nodes.length - 1].s - nodes[0].s) || 1;
+    const group = new THREE.Group();
+    scene.add(group);
+    const camera = new THREE.PerspectiveCamera(40, width / height, length * 1e-4, length * 100);
+    const orbit = new THREE.OrbitControls(camera, canvas);
+    const forces = (R.static.contacts || []).map((c) => c.normal_force);
+    const maxForce = Math.max(1e-30, ...forces);
+    const meanHole = nodes.reduce((a, n) => a + (n.hole_diameter || 0), 0) / nodes.length;
+    // The default scale: the hole's diameter drawn as a twentieth of the string's length.
+    const defaultScale = Math.max(1, length / 20 / (meanHole * lengthPerDiameter()));
+    let points = 0;
+    function lengthPerDiameter() { return U.length === 'ft' ? 1 / 12 : 1; }  // diameters in in or m → lengths
+    function build(scale) {
+      while (group.children.length) {
+        const child = group.children.pop();
+        if (child.geometry) child.geometry.dispose();
+      }
+      const k = scale;
+      const dl = lengthPerDiameter();
+      const display = nodes.map((n, i) => {
+        const c = toScene(centres[i]), p = toScene(n.position);
+        return c.clone().add(p.clone().sub(c).multiplyScalar(k)).sub(origin);
+      });
+      const curve = new THREE.CatmullRomCurve3(display);
+      const od = (D.components || []).length ? Math.min(...D.components.map((c) => c.od)) : meanHole / 2;
+      const tubeRadius = Math.max(k * od * dl / 2, length * 1e-4);
+      const tube = new THREE.TubeGeometry(curve, Math.min(2000, display.length * 4), tubeRadius, 10, false);
+      group.add(new THREE.Mesh(tube, new THREE.MeshLambertMaterial({color: 0x4a6fa5})));
+      // The hole: a transparent tube of its mean diameter about the centreline, and rings of its
+      // diameter at stations along it (sections of another size show there).
+      const centreLine = centres.map((c) => toScene(c).sub(origin));
+      const holeCurve = new THREE.CatmullRomCurve3(centreLine);
+      const holeTube = new THREE.TubeGeometry(holeCurve, Math.min(1000, centreLine.length * 2), k * meanHole * dl / 2, 24, false);
+      group.add(new THREE.Mesh(holeTube, new THREE.MeshLambertMaterial({color: 0xc8a060, transparent: true, opacity: 0.18, depthWrite: false, side: THREE.DoubleSide})));
+      group.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(centreLine), new THREE.LineBasicMaterial({color: 0x999999})));
+      const step = Math.max(1, Math.floor(nodes.length / 40));
+      for (let i = 0; i < nodes.length; i += step) {
+        if (!nodes[i].hole_diameter) continue;
+        const j = Math.min(i + 1, nodes.length - 1), h = Math.max(i - 1, 0);
+        const tangent = centreLine[j].clone().sub(centreLine[h]).normalize();
+        const radius = k * nodes[i].hole_diameter * dl / 2;
+        const ring = new THREE.RingGeometry(radius * 0.95, radius, 48);
+        const mesh = new THREE.Mesh(ring, new THREE.MeshBasicMaterial({color: 0x8a6d3b, side: THREE.DoubleSide, transparent: true, opacity: 0.6}));
+        mesh.position.copy(centreLine[i]);
+        mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), tangent);
+        group.add(mesh);
+      }
+      // Contacts: spheres where the string meets the wall (its station nearest each, on the side
+      // away from the hole's axis), coloured by normal force.
+      points = display.length;
+      for (const c of R.static.contacts || []) {
+        let best = 0;
+        for (let i = 1; i < nodes.length; ++i) if (Math.abs(nodes[i].s - c.s) < Math.abs(nodes[best].s - c.s)) best = i;
+        const f = Math.sqrt(c.normal_force / maxForce);
+        const color = new THREE.Color().setHSL(0.66 * (1 - f), 0.9, 0.45);
+        const sphere = new THREE.Mesh(new THREE.SphereGeometry(tubeRadius * 0.8, 12, 8), new THREE.MeshLambertMaterial({color: color}));
+        const outward = display[best].clone().sub(centreLine[best]);
+        if (outward.lengthSq() > 0) outward.normalize();
+        sphere.position.copy(display[best]).add(outward.multiplyScalar(tubeRadius));
+        group.add(sphere);
+        ++points;
+      }
+      label.textContent = `× ${num(k, 3)}`;
+    }
+    const display0 = (i) => toScene(nodes[i].position);
+    const scaleOf = (v) => Math.pow(10, Number(v)) * defaultScale / 100;
+    build(scaleOf(slider.value));
+    const box = new THREE.Box3().setFromObject(group);
+    const size = box.getSize(new THREE.Vector3()).length() || length;
+    const centre = box.getCenter(new THREE.Vector3());
+    // Looking from the side of the well (across its overall direction, slightly from above).
+    const axis = display0(nodes.length - 1).sub(display0(0)).normalize();
+    let across = new THREE.Vector3().crossVectors(axis, new THREE.Vector3(0, 1, 0));
+    if (across.lengthSq() < 1e-6) across = new THREE.Vector3(1, 0, 0);
+    across.normalize();
+    camera.position.copy(centre.clone().add(across.multiplyScalar(size * 1.3)).add(new THREE.Vector3(0, size * 0.25, 0)));
+    orbit.target.copy(centre);
+    orbit.update();
+    slider.addEventListener('input', () => { build(scaleOf(slider.value)); render(); });
+    function render() { renderer.render(scene, camera); }
+    orbit.addEventListener('change', render);
+    render();
+    s.dataset.points = String(points);
+  }
+
+  // ---- modes -------------------------------------------------------------------------------------
+  function modesSection(nav) {
+    const s = section('modes', 'Natural frequencies and mode shapes');
+    nav.appendChild(el('a', {href: '#modes', text: 'modes'}));
+    const table = el('table', {class: 'data'});
+    table.appendChild(el('tr', {}, ['#', 'f (Hz)', 'RPM at 1×', 'kind', 'damping', 'axial', 'torsional', 'lateral', ''].map((t) => el('th', {text: t}))));
+    const firstReal = R.modes.findIndex((m) => !m.rigid_body && !m.negative_stiffness && !m.near_zero);
+    R.modes.forEach((m, i) => {
+      const note = m.rigid_body ? 'rigid body' : m.negative_stiffness ? 'negative stiffness' : m.near_zero ? 'near zero' : (m.whirl ? m.whirl + ' whirl' : '');
+      const f = value(m.frequency_hz, '', i === firstReal ? 'modes.first_frequency_hz' : null, 5);
+      const cells = [String(i + 1), f, num(60 * m.frequency_hz, 5), m.kind, num(m.damping_ratio, 3), num(m.axial_fraction, 3),
+                     num(m.torsional_fraction, 3), num(m.lateral_fraction, 3), note];
+      table.appendChild(el('tr', {}, cells.map((c) => { const td = el('td'); if (c instanceof Node) td.appendChild(c); else td.textContent = c; return td; })));
+    });
+    s.appendChild(table);
+    if (R.critical_rpm) {
+      const cr = R.critical_rpm;
+      const p = el('p');
+      if (cr.first_lateral !== undefined) p.append('First lateral critical RPM ', value(cr.first_lateral, 'rpm', 'critical_rpm.first_lateral'), '; ');
+      p.append(`rule of thumb 33055·√(OD²+ID²)/L² ${num(cr.rule_of_thumb, 4)} rpm over ${num(cr.rule_of_thumb_span, 4)} ${U.length} (±15 %).`);
+      s.appendChild(p);
+    }
+    const shapes = D.mode_shapes;
+    if (shapes && shapes.modes.length) {
+      const grid = el('div', {class: 'grid'});
+      s.appendChild(grid);
+      const series = [];
+      shapes.modes.slice(0, 8).forEach((m, i) => {
+        const mode = R.modes[i];
+        if (mode.rigid_body || mode.negative_stiffness || series.length >= 6) return;
+        // The lateral component of the larger amplitude, largest = 1.
+        const ay = Math.max(...m.y.map(Math.abs)), az = Math.max(...m.z.map(Math.abs)), ax = Math.max(...m.axial.map(Math.abs));
+        const [values, which] = mode.kind === 'axial' ? [m.axial, 'axial'] : ay >= az ? [m.y, 'y'] : [m.z, 'z'];
+        const scale = Math.max(ax, ay, az) || 1;
+        series.push({label: `${i + 1}: ${num(mode.frequency_hz, 4)} Hz (${which})`, x: shapes.s, y: values.map((v) => v / scale)});
+      });
+      plot(grid, {title: 'Mode shapes (each scaled to its largest displacement)', x: `distance from the bit (${U.length})`, y: 'displacement (–)', series: series});
+    }
+  }
+
+  // ---- vibration ---------------------------------------------------------------------------------
+  function vibrationSection(nav) {
+    const v = R.vibration;
+    const s = section('vibration', 'Critical speeds: forced response against RPM');
+    nav.appendChild(el('a', {href: '#vibration', text: 'vibration'}));
+    const names = D.excitations || [];
+    const critical = (v.critical_speeds || []).slice().sort((a, b) => a.rpm - b.rpm);
+    const bands = (v.safe_windows || []).map((w) => ({from: w.from, to: w.to}));
+    const lines = critical.map((c) => ({x: c.rpm, label: `${num(c.rpm, 4)} rpm ${names[c.excitation] || ''}`, color: '#d62728'}));
+    const ratio = v.max_clearance_ratio !== undefined;
+    const p = el('p');
+    const firstCritical = critical.length ? critical[0].rpm : undefined;
+    if (firstCritical !== undefined) p.append('Lowest critical RPM ', value(firstCritical, 'rpm', 'vibration.critical_rpm.0'), '. ');
+    p.append(`Safe windows (green: displacement below ${num(v.clearance_fraction, 3)} of the clearance and bending-stress amplitude below ${num(v.stress_limit, 3)} ${U.stress}): ` +
+             (bands.length ? bands.map((b) => `${num(b.from, 4)}–${num(b.to, 4)} rpm`).join(', ') : 'none') + '.');
+    s.appendChild(p);
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    plot(grid, {
+      title: ratio ? 'Lateral amplitude / radial clearance (all excitations)' : `Lateral amplitude (${U.diameter})`,
+      x: 'rotary speed (rpm)', y: ratio ? 'amplitude / clearance (–)' : `amplitude (${U.diameter})`,
+      series: [{label: ratio ? 'amplitude / clearance' : 'amplitude', x: v.rpm, y: ratio ? v.max_clearance_ratio : v.max_lateral_displacement, width: 2}],
+      xBands: bands, vLines: lines, hLines: ratio ? [{y: v.clearance_fraction, label: 'limit', color: '#ff7f0e'}] : [], logY: true,
+    });
+    plot(grid, {
+      title: 'Bending-stress amplitude', x: 'rotary speed (rpm)', y: `stress (${U.stress})`,
+      series: [{label: 'bending stress', x: v.rpm, y: v.max_bending_stress, color: COLORS[1], width: 2}],
+      xBands: bands, vLines: lines, hLines: [{y: v.stress_limit, label: 'limit', color: '#ff7f0e'}], logY: true,
+    });
+    if (v.max_contact_force && v.max_contact_force.some((f) => f > 0)) {
+      plot(grid, {title: 'Largest dynamic contact force amplitude', x: 'rotary speed (rpm)', y: `force (${U.force})`,
+        series: [{label: 'contact force', x: v.rpm, y: v.max_contact_force, color: COLORS[3]}], xBands: bands, logY: true});
+    }
+    const table = el('table', {class: 'data'});
+    table.appendChild(el('tr', {}, ['critical RPM', 'excitation', 'severity', `amplitude (${U.diameter})`, `bending (${U.stress})`, 'frequency (Hz)'].map((t) => el('th', {text: t}))));
+    for (const c of v.critical_speeds || []) {
+      table.appendChild(el('tr', {}, [num(c.rpm, 5), names[c.excitation] || String(c.excitation), num(c.severity, 3), num(c.max_lateral_displacement, 3),
+                                      num(c.max_bending_stress, 3), num(c.frequency_hz, 4)].map((t) => el('td', {text: t}))));
+    }
+    s.appendChild(table);
+  }
+
+  function campbellSection(nav) {
+    const c = R.campbell;
+    const s = section('campbell', 'Campbell diagram');
+    nav.appendChild(el('a', {href: '#campbell', text: 'Campbell'}));
+    const branches = [];
+    c.modes.forEach((atSpeed) => atSpeed.forEach((m, j) => { (branches[j] = branches[j] || []).push(m.frequency_hz); }));
+    const series = branches.map((f, j) => ({label: `mode ${j + 1}`, x: c.rpm, y: f}));
+    const top = Math.max(...c.rpm);
+    series.push({label: '1× (synchronous)', x: [0, top], y: [0, top / 60], color: '#000', dash: [6, 4]});
+    plot(s, {title: 'Whirl frequencies against rotary speed', x: 'rotary speed (rpm)', y: 'frequency (Hz)', series: series,
+      vLines: (c.synchronous || []).map((x) => ({x: x.rpm, label: `${num(x.rpm, 4)} rpm (${x.whirl})`}))});
+  }
+
+  // ---- buckling ----------------------------------------------------------------------------------
+  function bucklingSection(nav) {
+    const b = R.buckling;
+    const s = section('buckling', 'Buckling');
+    nav.appendChild(el('a', {href: '#buckling', text: 'buckling'}));
+    const p = el('p');
+    p.append('Critical load multiplier ', value(b.load_factor, '', 'buckling.load_factor', 6), ' of the case\'s loads: a largest compression of ',
+             value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force}).`);
+    s.appendChild(p);
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    const table = (b.frequency_method || {}).table || [];
+    if (table.length) {
+      plot(grid, {title: 'Lowest frequency against the load multiplier', x: 'load multiplier (–)', y: 'frequency (Hz)',
+        series: [{label: 'lowest frequency', x: column(table, 'load_factor'), y: column(table, 'frequency_hz'), points: true, width: 2}],
+        vLines: [{x: b.load_factor, label: `critical ${num(b.load_factor, 4)}`, color: '#d62728'}]});
+    }
+    if (b.mode && b.mode.s.length) {
+      const d = b.mode.displacement;
+      plot(grid, {title: 'Buckled shape (largest = 1)', x: `distance from the bit (${U.length})`, y: 'displacement (–)',
+        series: [{label: 'y (right)', x: b.mode.s, y: d.map((u) => u[1])}, {label: 'z (high side)', x: b.mode.s, y: d.map((u) => u[2])}]});
+    }
+  }
+
+  // ---- transient ---------------------------------------------------------------------------------
+  function transientSection(nav) {
+    const t = D.transient;
+    const s = section('transient', 'Transient: drilling in time');
+    nav.appendChild(el('a', {href: '#transient', text: 'transient'}));
+    // Stick-slip severity over the second half of the run (after the start-up): (max − min) / mean bit RPM.
+    const half = t.time.length >> 1;
+    const late = t.bit_rpm.slice(half);
+    const mean = late.reduce((a, b) => a + b, 0) / (late.length || 1);
+    const severity = mean !== 0 ? (Math.max(...late) - Math.min(...late)) / Math.abs(mean) : NaN;
+    const words = !isFinite(severity) ? '' : severity < 0.2 ? 'smooth drilling' : severity < 1 ? 'torsional oscillation' : 'stick-slip (the bit stops)';
+    const p = el('p');
+    p.append(`${num(t.time[t.time.length - 1], 4)} s simulated. Stick-slip severity (max − min) / mean bit RPM over the second half: `,
+             el('strong', {text: num(severity, 3)}), ` — ${words}.`);
+    s.appendChild(p);
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    plot(grid, {title: 'Rotary speed', x: 'time (s)', y: 'rpm', series: [
+      {label: 'surface', x: t.time, y: t.surface_rpm, color: COLORS[0]}, {label: 'bit', x: t.time, y: t.bit_rpm, color: COLORS[1]}]});
+    plot(grid, {title: 'Torque', x: 'time (s)', y: `torque (${U.moment})`, series: [
+      {label: 'surface', x: t.time, y: t.surface_torque, color: COLORS[0]}, {label: 'on bit', x: t.time, y: t.torque_on_bit, color: COLORS[1]}]});
+    plot(grid, {title: 'Weight on bit', x: 'time (s)', y: `WOB (${U.wob})`, series: [{label: 'WOB', x: t.time, y: t.wob, color: COLORS[2]}]});
+    plot(grid, {title: 'Tension at the top of the modelled string', x: 'time (s)', y: `force (${U.force})`,
+      series: [{label: 'top tension', x: t.time, y: t.hook_load, color: COLORS[4]}]});
+    t.probes.forEach((probe, i) => {
+      const circle = [];
+      if (probe.clearance !== undefined) {
+        for (let a = 0; a <= 64; ++a) circle.push([probe.clearance * Math.cos(2 * Math.PI * a / 64), probe.clearance * Math.sin(2 * Math.PI * a / 64)]);
+      }
+      const reach = 1.1 * Math.max(probe.clearance || 0, ...probe.y.map(Math.abs), ...probe.z.map(Math.abs));
+      plot(grid, {title: `Whirl orbit at ${num(probe.s, 4)} ${U.length} from the bit (looking down-hole)`, x: `right (${U.diameter})`, y: `high side (${U.diameter})`,
+        square: true, xMin: -reach, xMax: reach, yMin: -reach, yMax: reach,
+        series: [{label: 'orbit', x: probe.y, y: probe.z, color: COLORS[i % COLORS.length]},
+                 {label: 'the wall (radial clearance)', x: circle.map((c) => c[0]), y: circle.map((c) => c[1]), color: '#999', dash: [4, 3]}]});
+      plot(grid, {title: `Wall contact force at ${num(probe.s, 4)} ${U.length} from the bit`, x: 'time (s)', y: `force (${U.force})`,
+        series: [{label: 'contact force', x: t.time, y: probe.contact_force, color: COLORS[1]}]});
+    });
+  }
+
+  // ---- compose -----------------------------------------------------------------------------------
+  function guarded(name, f) {
+    try { f(); } catch (e) { recordError(`${name}: ${e && e.message ? e.message : e}`); }
+  }
+  const nav = header();
+  if (R.static) guarded('static', () => staticSection(nav));
+  if (R.static && D.hole_centre) guarded('3-D view', () => threeSection(nav));
+  if (R.modes) guarded('modes', () => modesSection(nav));
+  if (R.campbell) guarded('Campbell', () => campbellSection(nav));
+  if (R.vibration) guarded('vibration', () => vibrationSection(nav));
+  if (R.buckling) guarded('buckling', () => bucklingSection(nav));
+  if (D.transient) guarded('transient', () => transientSection(nav));
+  // report.html?only=static shows the header and that section alone (to print or capture one part).
+  const only = new URLSearchParams(window.location.search).get('only');
+  if (only) {
+    for (const part of root.querySelectorAll('section.report-section')) if (part.id !== only) part.style.display = 'none';
+  }
+  root.appendChild(el('footer', {text: 'drillflex: flexible multibody drill-string mechanics. The tables behind every plot are in results.json and the CSV files beside this report.'}));
+  if (!errors.length) document.body.dataset.reportStatus = 'ok';
+})();
