@@ -179,8 +179,10 @@
         animation: false, responsive: true, maintainAspectRatio: false, parsing: false, normalized: true,
         interaction: {mode: 'nearest', intersect: false, axis: 'x'},
         scales: {
-          x: {type: 'linear', title: {display: true, text: spec.x}, reverse: !!spec.xReverse, min: spec.xMin, max: spec.xMax},
-          y: {type: spec.logY ? 'logarithmic' : 'linear', title: {display: true, text: spec.y}, min: yMin, max: yMax},
+          x: {type: 'linear', title: {display: true, text: spec.x}, reverse: !!spec.xReverse, min: spec.xMin, max: spec.xMax,
+              bounds: spec.xNice ? 'ticks' : 'data', ticks: {callback: (v) => num(v, 6)}},
+          y: {type: spec.logY ? 'logarithmic' : 'linear', title: {display: true, text: spec.y}, min: yMin, max: yMax,
+              ticks: {callback: (v) => num(v, 4)}},
         },
         plugins: {
           legend: {display: spec.series.length > 1, labels: {filter: (item) => !spec.series[item.datasetIndex].noLegend}},
@@ -211,10 +213,12 @@
       for (const w of R.static.warnings || []) warnings.push(w);
       const method = R.static.method_used || '';
       if (method && !method.startsWith('energy-minimum')) warnings.push(`the static equilibrium needed the fallback path (${method})`);
-      const into = (R.static.nodes || []).filter((n) => n.clearance !== undefined && n.clearance < 0);
+      // Into the wall by more than 5 % of the radial clearance there: the contact stiffness is low
+      // for its force (a penetration is the penalty's compliance, normal force / stiffness).
+      const into = (R.static.nodes || []).filter((n) => n.clearance !== undefined && n.clearance < -0.05 * Math.max(n.clearance + n.hole_offset, 0));
       if (into.length) {
         const deepest = into.reduce((a, b) => (b.clearance < a.clearance ? b : a));
-        warnings.push(`${into.length} stations lie into the wall (deepest ${num(-deepest.clearance, 3)} ${U.diameter} at ${where(deepest.s, deepest.md)}): the contact's compliance, normal force / stiffness`);
+        warnings.push(`${into.length} stations lie into the wall by more than 5 % of their clearance (deepest ${num(-deepest.clearance, 3)} ${U.diameter} at ${where(deepest.s, deepest.md)}): raise model.contact.stiffness`);
       }
     }
     if (R.vibration && R.vibration.max_clearance_ratio) {
@@ -234,25 +238,27 @@
   }
 
   // ---- static ------------------------------------------------------------------------------------
-  function bhaSchematic(parent, nodes, contacts) {
-    const comps = D.components || [];
+  // The string to scale between s = 0 and sTop (from the bit; all of it without sTop).
+  function bhaSchematic(parent, nodes, allContacts, sTop, caption) {
+    const comps = (D.components || []).filter((c) => sTop === undefined || c.from < sTop);
     if (!comps.length) return;
+    const contacts = allContacts.filter((c) => sTop === undefined || c.s <= sTop);
     const mdOf = mdMapping(nodes);
     const width = 1000, height = 120, mid = 60;
-    const md = comps.flatMap((c) => [mdOf(c.from), mdOf(c.to)]);
+    const md = comps.flatMap((c) => [mdOf(c.from), mdOf(sTop === undefined ? c.to : Math.min(c.to, sTop))]);
     const lo = Math.min(...md), hi = Math.max(...md);
     const largest = Math.max(...comps.map((c) => c.blade_od || c.joint_od || c.od), ...nodes.map((n) => n.hole_diameter || 0));
     const sx = (m) => 10 + (width - 20) * (m - lo) / (hi - lo || 1);
     const sy = (d) => (height - 30) * d / largest / 2;
     const svg = ['<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ' + width + ' ' + height + '" class="schematic">'];
-    const hole = nodes.filter((n) => n.hole_diameter);
+    const hole = nodes.filter((n) => n.hole_diameter && (sTop === undefined || n.s <= sTop));
     if (hole.length) {
       const top = hole.map((n) => `${sx(n.md).toFixed(1)},${(mid - sy(n.hole_diameter)).toFixed(1)}`).join(' ');
       const bottom = hole.map((n) => `${sx(n.md).toFixed(1)},${(mid + sy(n.hole_diameter)).toFixed(1)}`).join(' ');
       svg.push(`<polyline points="${top}" class="wall"/><polyline points="${bottom}" class="wall"/>`);
     }
     comps.forEach((c, i) => {
-      const a = sx(mdOf(c.from)), b = sx(mdOf(c.to));
+      const a = sx(mdOf(c.from)), b = sx(mdOf(sTop === undefined ? c.to : Math.min(c.to, sTop)));
       const x = Math.min(a, b), w = Math.max(Math.abs(b - a), 0.8);
       const title = `${c.name} (${c.type}): OD ${num(c.od, 4)} ${U.diameter}, ${num(Math.abs(c.to - c.from), 4)} ${U.length}${c.count > 1 ? ', ' + c.count + ' joints' : ''}`;
       svg.push(`<rect x="${x.toFixed(1)}" y="${(mid - sy(c.od)).toFixed(1)}" width="${w.toFixed(1)}" height="${(2 * sy(c.od)).toFixed(1)}" class="comp comp-${c.type}" fill="${COLORS[i % COLORS.length]}"><title>${escapeXml(title)}</title></rect>`);
@@ -268,7 +274,7 @@
     svg.push(`<text x="${sx(mdOf(0)) - 4}" y="12" text-anchor="end" class="label">bit</text>`);
     svg.push('</svg>');
     const figure = el('figure', {class: 'plot schematic-figure'});
-    figure.appendChild(el('figcaption', {text: 'The string to scale along MD (diameters to the hole\'s scale; blades darker; ▲ wall contacts carrying force). Hover a component for its name and size.'}));
+    figure.appendChild(el('figcaption', {text: caption}));
     const holder = el('div', {html: svg.join('')});
     figure.appendChild(holder);
     figure.dataset.points = String(comps.length);
@@ -321,7 +327,11 @@
       rows.push(['peak von Mises stress', span]);
     }
     facts(s, rows);
-    bhaSchematic(s, nodes, contacts);
+    // The whole string, and the BHA alone (up to the first drill pipe or HWDP) when pipe is above it.
+    const pipes = (D.components || []).filter((c) => c.type === 'pipe' || c.type === 'hwdp');
+    const bhaTop = pipes.length ? Math.min(...pipes.map((c) => c.from)) : undefined;
+    bhaSchematic(s, nodes, contacts, undefined, 'The string to scale along MD (diameters to the hole\'s scale, the hole\'s wall drawn; blades dark; ▲ wall contacts carrying force). Hover a component for its name and size.');
+    if (bhaTop !== undefined && bhaTop > 0) bhaSchematic(s, nodes, contacts, bhaTop, 'The BHA below the pipe, to scale along MD.');
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
     if (inHole) {
