@@ -5,7 +5,7 @@ import csv
 def read_csv(path):
     """The columns of a transient.csv by name, as floats."""
     with open(path) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(csv.DictReader(f))[1:]  # the second line holds the units
     return {name: [float(r[name]) for r in rows] for name in rows[0]}
 
 

@@ -83,15 +83,22 @@ inline void CheckFinite(const nlohmann::json& value, const std::string& where, s
   }
 }
 
-// Every cell after the header line a finite number.
+// Every cell after the header and units lines a finite number (but the names of a "component" column).
 inline void CheckCsv(const fs::path& path, std::vector<std::string>& problems) {
   std::ifstream file(path);
   std::string line;
   std::getline(file, line);
+  std::vector<std::string> names;
+  {
+    std::istringstream header(line);
+    for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  }
+  std::getline(file, line);  // the units line (io::CsvTable)
   for (int row = 1; std::getline(file, line); ++row) {
     std::istringstream cells(line);
     std::string cell;
-    while (std::getline(cells, cell, ',')) {
+    for (std::size_t column = 0; std::getline(cells, cell, ','); ++column) {
+      if (column < names.size() && names[column] == "component") continue;
       char* end = nullptr;
       const double value = std::strtod(cell.c_str(), &end);
       if (end == cell.c_str() || *end != '\0' || !std::isfinite(value)) {

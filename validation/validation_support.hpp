@@ -86,6 +86,7 @@ inline CsvColumns ReadCsv(const std::string& path) {
   std::stringstream header(line);
   while (std::getline(header, cell, ',')) table.names.push_back(cell);
   table.values.resize(table.names.size());
+  std::getline(file, line);  // the units line (io::CsvTable)
   while (std::getline(file, line)) {
     std::stringstream row(line);
     for (std::size_t i = 0; i < table.names.size() && std::getline(row, cell, ','); ++i) {

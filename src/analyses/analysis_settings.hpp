@@ -105,6 +105,13 @@ struct TransientSettings {
   // Imbalances turning with the string (`excitations` of type imbalance, as in the vibration
   // analysis: model/imbalance_element.hpp).
   std::vector<model::Imbalance> imbalances;
+  // How many frames of the whole string's state (its positions q) to keep, evenly spread over the
+  // output samples, t = 0 and the last among them (TransientResult::frame_q; 0: none, the memory
+  // of a run as without frames). Set by the command line (a VTK frame series, io/vtk_files.hpp).
+  int state_frames = 0;
+  // The case's `vtk_frames` when it gives one (io/analyses_section.cpp): the frames the command line
+  // asks for, instead of its default, when it writes the VTK files. RunTransient reads state_frames only.
+  std::optional<int> vtk_frames;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

@@ -110,6 +110,17 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   return sample;
 }
 
+// Whether output sample k of 0..last keeps the whole state (TransientResult::frame_q): every
+// stride-th from t = 0, stride = ⌈last / (frames − 1)⌉, and the last, so at most `frames`
+// (floor(last / stride) + 1 ≤ frames, one fewer when the last is not a multiple); one frame: the last.
+bool KeepsFrame(long k, long last, int frames) {
+  if (frames <= 0) return false;
+  if (k == last) return true;
+  if (frames == 1) return false;
+  const long stride = (last + frames - 2) / (frames - 1);
+  return k % stride == 0;
+}
+
 // max |E(t) − E(0)| over the samples relative to the largest kinetic energy reached (the energy in
 // motion; the potential's zero is arbitrary under gravity). 0 when nothing moves.
 double EnergyDrift(const std::vector<TransientSample>& samples) {
@@ -178,6 +189,7 @@ TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, con
   if (!(settings.duration > 0.0) || !(settings.output_interval > 0.0)) {
     throw LogicError("RunTransient: the duration and the output interval must be positive");
   }
+  if (settings.state_frames < 0) throw LogicError("RunTransient: state_frames must not be negative");
   const model::SystemModel& model = built.system;
   const std::vector<Station> stations = StringStations(model);
   TransientResult result;
@@ -199,11 +211,18 @@ TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, con
   result.samples.push_back(Sample(built, stations, probes, 0.0, q0, integrator.state().v));
   // Sample times k·Δt, the last one the duration itself (a shorter last interval if need be).
   const long intervals = std::max(1L, static_cast<long>(std::ceil(settings.duration / settings.output_interval - 1e-9)));
+  auto keep_frame = [&](long k, double time, const VecX& q) {
+    if (!KeepsFrame(k, intervals, settings.state_frames)) return;
+    result.frame_times.push_back(time);
+    result.frame_q.push_back(q);
+  };
+  keep_frame(0, 0.0, q0);
   for (long k = 1; k <= intervals; ++k) {
     const double time = k == intervals ? settings.duration : static_cast<double>(k) * settings.output_interval;
     integrator.AdvanceTo(time);
     const auto& state = integrator.state();
     result.samples.push_back(Sample(built, stations, probes, time, state.q, state.v));
+    keep_frame(k, time, state.q);
   }
   result.final_q = integrator.state().q;
   result.final_v = integrator.state().v;

@@ -62,6 +62,11 @@ struct TransientResult {
   std::vector<double> probe_s;          // m, the stations the probes read (nearest to the asked s)
   std::vector<TransientSample> samples;  // t = 0, output_interval, ..., duration
   VecX final_q, final_v;                 // the state at t = duration
+  // The whole string's positions at some of the samples (TransientSettings::state_frames): every
+  // k-th sample from t = 0 and the last (k = ⌈(samples − 1) / (state_frames − 1)⌉, so at most
+  // state_frames; one frame: the last only). frame_q.back() is final_q. Empty when state_frames = 0.
+  std::vector<double> frame_times;  // s, ascending
+  std::vector<VecX> frame_q;        // one per frame_times
   double energy_drift = 0.0;   // max |E(t) − E(0)| / max(|E(0)|, max T), over the samples
   solvers::GeneralizedAlphaStatistics statistics;
   double rho_infinity = 0.8;

@@ -30,12 +30,19 @@ namespace {
 
 using units::Quantity;
 
+// Frames of the string's shape a transient keeps for transient.pvd by default: about 0.5 MB each for
+// the bundled example's 1 015 stations (docs/case-format.md `vtk_frames`).
+constexpr int kDefaultVtkFrames = 50;
+
 struct Requested {
   bool static_analysis = false, modes = false, buckling = false, vibration = false, transient = false;
 };
 
+// A value in the case's units with its unit; never "-0" (a zero's sign says nothing to an engineer).
 std::string Show(const io::Case& c, double si, Quantity quantity, int digits = 5) {
-  return fmt::format("{:.{}g} {}", units::FromSI(si, quantity, c.units), digits, units::DefaultUnit(quantity, c.units));
+  const double value = units::FromSI(si, quantity, c.units);
+  const std::string text = fmt::format("{:.{}g}", value + 0.0, digits);
+  return (text == "-0" ? std::string("0") : text) + " " + std::string(units::DefaultUnit(quantity, c.units));
 }
 
 void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
@@ -95,9 +102,18 @@ void PrintStatic(const io::Case& c, const analyses::StaticResult& result) {
                              Show(c, bit.walk_force, Quantity::Force), bit.tilt / kDegree,
                              Show(c, tendency.threshold, Quantity::Force, 3));
   }
+  // Reactions in the string frame at the support: x along the string (up-hole), and in a well y to
+  // the right and z to the high side (docs/case-format.md "Frames and signs").
+  const char* lateral_y = c.well ? "right" : "y";
+  const char* lateral_z = c.well ? "high side" : "z";
   for (const auto& reaction : result.reactions) {
-    std::cout << fmt::format("  support at {}: force [{}, {}, {}]\n", Show(c, reaction.s, Quantity::Length),
-                             Show(c, reaction.force.x(), Quantity::Force), Show(c, reaction.force.y(), Quantity::Force),
+    const double string_length = io::StringLength(c);
+    const std::string name = reaction.s <= 1e-9                          ? " (the bit)"
+                             : std::abs(reaction.s - string_length) < 1e-6 ? " (the top)"
+                                                                           : "";
+    std::cout << fmt::format("  support at {}{}: force along the string (up-hole) {}, {} {}, {} {}\n",
+                             Show(c, reaction.s, Quantity::Length), name, Show(c, reaction.force.x(), Quantity::Force),
+                             lateral_y, Show(c, reaction.force.y(), Quantity::Force), lateral_z,
                              Show(c, reaction.force.z(), Quantity::Force));
   }
 }
@@ -278,18 +294,31 @@ class ProgressBar {
   Clock::time_point start_, last_;
 };
 
-void PrintTransient(const io::Case& c, const analyses::TransientResult& result) {
+// `driven`: a top drive, a block or a bit-rock law does work on the string; `block`: a block drive
+// holds the top (its force is the hook load).
+void PrintTransient(const io::Case& c, const analyses::TransientResult& result, bool driven, bool block) {
   const auto& stats = result.statistics;
   std::cout << fmt::format("transient: {} s in {} steps ({} rejected), {} Newton iterations, {} factorizations; "
                            "steps {:.3g} to {:.3g} s\n",
                            result.samples.back().time, stats.steps, stats.error_rejections + stats.newton_failures,
                            stats.newton_iterations, stats.factorizations, stats.smallest_step, stats.largest_step);
-  std::cout << fmt::format("  energy drift {:.3g} of the largest kinetic energy (rho_infinity {:.3g})\n",
-                           result.energy_drift, result.rho_infinity);
+  // The energy's change says something only about a string left to itself: a driven one gains the
+  // drives' work, which is not summed, so no balance is printed for it.
+  if (!driven) {
+    std::cout << fmt::format("  energy: largest change {:.3g} of the largest kinetic energy (damping, friction and the "
+                             "integrator's dissipation, rho_infinity {:.3g})\n",
+                             result.energy_drift, result.rho_infinity);
+  }
   const auto& last = result.samples.back();
-  std::cout << fmt::format("  at the end: surface {}, bit {}, hook load {}, WOB {}\n",
-                           Show(c, last.surface_speed, Quantity::RotarySpeed), Show(c, last.bit_speed, Quantity::RotarySpeed),
-                           Show(c, last.hook_load, Quantity::Force), Show(c, last.weight_on_bit, Quantity::WeightOnBit));
+  // The tension at the top of the modelled string is the rig's hook load only with a block drive
+  // holding it; negative, the string above pushes the top down.
+  const std::string top = last.hook_load < 0.0 ? fmt::format("compression at the top of the modelled string {}",
+                                                              Show(c, -last.hook_load, Quantity::Force))
+                                               : fmt::format("{} {}", block ? "hook load" : "tension at the top of the modelled string",
+                                                             Show(c, last.hook_load, Quantity::Force));
+  std::cout << fmt::format("  at the end: surface {}, bit {}, {}, WOB {}\n", Show(c, last.surface_speed, Quantity::RotarySpeed),
+                           Show(c, last.bit_speed, Quantity::RotarySpeed), top,
+                           Show(c, last.weight_on_bit, Quantity::WeightOnBit));
 }
 
 int RunAnalyses(const CommandOptions& options, Requested requested, const char* command) {
@@ -363,7 +392,10 @@ int RunAnalyses(const CommandOptions& options, Requested requested, const char* 
     io::AddBucklingResults(c, result, files);
   }
   if (requested.transient) {
-    const analyses::TransientSettings settings = c.analyses.transient.value_or(analyses::TransientSettings{});
+    analyses::TransientSettings settings = c.analyses.transient.value_or(analyses::TransientSettings{});
+    // The string's shape at kDefaultVtkFrames output samples for ParaView (transient.pvd), unless the
+    // case says how many; none without VTK output.
+    settings.state_frames = vtk ? settings.vtk_frames.value_or(kDefaultVtkFrames) : 0;
     // The equilibrium already solved for the other analyses, when the start is that equilibrium.
     // (That one is at rest: not with a rotating string's prescribed friction.)
     const bool reuse_equilibrium = (requested.static_analysis || requested.modes || requested.vibration) &&
@@ -382,9 +414,12 @@ int RunAnalyses(const CommandOptions& options, Requested requested, const char* 
       result = analyses::RunTransient(moving, start_q, settings,
                                       [&bar](double time, double duration) { bar.Update(time, duration); });
     }
-    PrintTransient(c, result);
+    const bool block = settings.block.has_value();
+    const bool driven = block || settings.top_drive.has_value() || settings.bit_rock.has_value() || c.operation.rpm != 0.0;
+    PrintTransient(c, result, driven, block);
     io::AddTransientResults(c, result, files);
     if (report) report_data.AddTransient(c, input, result);
+    if (vtk) io::AddTransientVtk(c, moving, result, files);
   }
   if (report) {
     const double solved = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

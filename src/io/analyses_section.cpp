@@ -137,7 +137,7 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
 analyses::TransientSettings ReadTransient(const YamlView& node, const model::Operation& operation) {
   node.ExpectMap("the transient settings {duration, output_interval, probes}");
   node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step", "rho_infinity", "tolerance", "start",
-                      "initial_loads", "top_drive", "block", "bit_rock", "excitations"});
+                      "initial_loads", "top_drive", "block", "bit_rock", "excitations", "vtk_frames"});
   analyses::TransientSettings settings;
   settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
   settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
@@ -145,6 +145,13 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
     node.Fail("more than 10 million output samples: use a larger output_interval");
   }
   settings.time_step = node.OptionalPositive("time_step", Quantity::Time);
+  // The frames of transient.pvd (io/vtk_files.hpp): string_0000.vtp to string_9999.vtp at the most.
+  if (const auto frames = node.OptionalChild("vtk_frames")) {
+    settings.vtk_frames = frames->AsInteger();
+    if (*settings.vtk_frames < 0 || *settings.vtk_frames > 10000) {
+      frames->Fail("expected between 0 and 10000 frames (0: no transient.pvd)");
+    }
+  }
   settings.rho_infinity = node.QuantityOr("rho_infinity", Quantity::Dimensionless, settings.rho_infinity);
   if (!(settings.rho_infinity >= 0.0 && settings.rho_infinity <= 1.0)) {
     node.Child("rho_infinity").Fail("expected a spectral radius between 0 and 1 (1: no numerical damping)");

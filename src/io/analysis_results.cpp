@@ -15,7 +15,7 @@ using units::Quantity;
 // Converts SI to the case's output units.
 struct OutputUnits {
   units::System system;
-  double operator()(double si, Quantity quantity) const { return units::FromSI(si, quantity, system); }
+  double operator()(double si, Quantity quantity) const { return units::FromSI(si, quantity, system) + 0.0; }
   json Vector(const Vec3& si, Quantity quantity) const {
     return json::array({(*this)(si.x(), quantity), (*this)(si.y(), quantity), (*this)(si.z(), quantity)});
   }
@@ -62,8 +62,14 @@ json AddStaticNodes(const Case& c, const std::vector<analyses::StaticNodeResult>
   std::vector<std::string> columns{"s",  "md", "x",  "y",  "z", "ux", "uy", "uz", "rx", "ry", "rz", "lateral_offset",
                                    "axial_force", "torque", "shear_force", "bending_moment", "bending_stress",
                                    "von_mises_stress"};
+  const std::string length = out.Unit(Quantity::Length), diameter = out.Unit(Quantity::Diameter),
+                    force = out.Unit(Quantity::Force), moment = out.Unit(Quantity::Moment),
+                    stress = out.Unit(Quantity::Stress);
+  std::vector<std::string> column_units{length,   length, length, length, length, diameter, diameter, diameter, "deg",
+                                        "deg",    "deg",  diameter, force, moment, force, moment, stress, stress};
   if (in_hole) columns.insert(columns.end(), {"hole_offset", "offset_high_side_angle", "clearance", "hole_diameter"});
-  CsvTable table(std::move(columns));
+  if (in_hole) column_units.insert(column_units.end(), {diameter, "deg", diameter, diameter});
+  CsvTable table(std::move(columns), std::move(column_units));
   json rows = json::array();
   for (const auto& node : nodes) {
     const double md = node.has_wall ? node.md : StationMd(c, node.s);
@@ -120,12 +126,16 @@ json AddStaticNodes(const Case& c, const std::vector<analyses::StaticNodeResult>
 json AddStaticContacts(const Case& c, const std::vector<analyses::ContactReport>& reports, ResultFiles& files) {
   const OutputUnits out{c.output_units};
   json contacts = json::array();
-  CsvTable contact_table({"s", "md", "normal_force", "friction_force", "high_side_angle"});
+  CsvTable contact_table({"s", "md", "normal_force", "friction_force", "high_side_angle", "component"},
+                         {out.Unit(Quantity::Length), out.Unit(Quantity::Length), out.Unit(Quantity::Force),
+                          out.Unit(Quantity::Force), "deg", "-"});
   for (const auto& contact : reports) {
     const double angle = contact.high_side_angle / kDegree;
-    contact_table.AddRow({out(contact.s, Quantity::Length), out(contact.md, Quantity::Length),
-                          out(contact.normal_force, Quantity::Force), out(contact.friction_force, Quantity::Force),
-                          angle});
+    contact_table.AddCells({CsvTable::Number(out(contact.s, Quantity::Length)),
+                            CsvTable::Number(out(contact.md, Quantity::Length)),
+                            CsvTable::Number(out(contact.normal_force, Quantity::Force)),
+                            CsvTable::Number(out(contact.friction_force, Quantity::Force)), CsvTable::Number(angle),
+                            CsvTable::Text(c.string.components.at(contact.component).name)});
     contacts.push_back({{"s", out(contact.s, Quantity::Length)},
                         {"md", out(contact.md, Quantity::Length)},
                         {"component", c.string.components.at(contact.component).name},
@@ -177,9 +187,11 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
   const OutputUnits out{c.output_units};
   std::vector<std::string> columns{"mode", "frequency_hz", "damping_ratio", "axial_fraction", "torsional_fraction",
                                    "lateral_fraction"};
-  if (result.gyroscopic) columns.push_back("whirl_index");
-  CsvTable frequencies(columns);
-  CsvTable shapes({"mode", "s", "ux", "uy", "uz", "rx", "ry", "rz"});
+  std::vector<std::string> column_units{"-", "Hz", "-", "-", "-", "-"};
+  if (result.gyroscopic) columns.push_back("whirl_index"), column_units.push_back("-");
+  CsvTable frequencies(columns, column_units);
+  // Mode shapes are normalized (the largest displacement 1): their entries have no unit.
+  CsvTable shapes({"mode", "s", "ux", "uy", "uz", "rx", "ry", "rz"}, {"-", out.Unit(Quantity::Length), "-", "-", "-", "-", "-", "-"});
   json modes = json::array();
   for (std::size_t m = 0; m < result.modes.size(); ++m) {
     const auto& mode = result.modes[m];
@@ -225,7 +237,7 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
 
 void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, ResultFiles& files) {
   const OutputUnits out{c.output_units};
-  CsvTable table({"load_factor", "compression", "frequency_hz"});
+  CsvTable table({"load_factor", "compression", "frequency_hz"}, {"-", out.Unit(Quantity::Force), "Hz"});
   json points = json::array();
   for (const auto& point : result.frequency_table) {
     table.AddRow({point.load_factor, out(point.compression, Quantity::Force), point.frequency_hz});

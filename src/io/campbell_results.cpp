@@ -8,7 +8,8 @@ using units::Quantity;
 
 void AddCampbellResults(const Case& c, const analyses::CampbellResult& result, ResultFiles& files) {
   auto out = [&](double si, Quantity quantity) { return units::FromSI(si, quantity, c.output_units); };
-  CsvTable table({"rpm", "mode", "frequency_hz", "damping_ratio", "whirl_index", "lateral_fraction"});
+  CsvTable table({"rpm", "mode", "frequency_hz", "damping_ratio", "whirl_index", "lateral_fraction"},
+                 {std::string(units::DefaultUnit(Quantity::RotarySpeed, c.output_units)), "-", "Hz", "-", "-", "-"});
   json rpm = json::array(), points = json::array();
   for (const analyses::CampbellPoint& point : result.points) {
     const double speed = out(point.rotary_speed, Quantity::RotarySpeed);

@@ -52,21 +52,44 @@ void WriteFileAtomically(const std::string& path, const std::string& content) {
   }
 }
 
-void CsvTable::AddRow(const std::vector<double>& values) {
-  if (values.size() != columns_.size()) {
-    throw LogicError(fmt::format("CSV row of {} values for {} columns", values.size(), columns_.size()));
+CsvTable::CsvTable(std::vector<std::string> columns, std::vector<std::string> units)
+    : columns_(std::move(columns)), units_(std::move(units)) {
+  if (units_.size() != columns_.size()) {
+    throw LogicError(fmt::format("CSV table of {} columns with {} units", columns_.size(), units_.size()));
   }
-  rows_.push_back(values);
+}
+
+void CsvTable::AddRow(const std::vector<double>& values) {
+  std::vector<std::string> cells;
+  cells.reserve(values.size());
+  for (const double value : values) cells.push_back(Number(value));
+  AddCells(std::move(cells));
+}
+
+void CsvTable::AddCells(std::vector<std::string> cells) {
+  if (cells.size() != columns_.size()) {
+    throw LogicError(fmt::format("CSV row of {} values for {} columns", cells.size(), columns_.size()));
+  }
+  rows_.push_back(std::move(cells));
+}
+
+std::string CsvTable::Number(double value) { return fmt::format("{:.10g}", value + 0.0); }  // + 0.0: no "-0"
+
+std::string CsvTable::Text(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
 }
 
 std::string CsvTable::ToString() const {
   std::string text;
   for (std::size_t c = 0; c < columns_.size(); ++c) text.append(c ? "," : "").append(columns_[c]);
   text.append("\n");
+  for (std::size_t c = 0; c < units_.size(); ++c) text.append(c ? "," : "").append(units_[c]);
+  text.append("\n");
   for (const auto& row : rows_) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      text.append(c ? "," : "").append(fmt::format("{:.10g}", row[c]));
-    }
+    for (std::size_t c = 0; c < row.size(); ++c) text.append(c ? "," : "").append(row[c]);
     text.append("\n");
   }
   return text;

@@ -32,17 +32,26 @@ class ResultFiles {
 // Writes `content` to `path` through a temporary file and a rename.
 void WriteFileAtomically(const std::string& path, const std::string& content);
 
-// A CSV table: a header and rows of numbers, written with full precision.
+// A CSV table: a header line of column names, a second line with each column's unit ("-" for a
+// pure number: a ratio, a count, an index), then rows of numbers with full precision. The names stay
+// what results.json calls the same quantities; the units are the case's output units
+// (case-format.md "Command line and results": pandas reads it with header=[0, 1] or skiprows=[1]).
 class CsvTable {
  public:
-  explicit CsvTable(std::vector<std::string> columns) : columns_(std::move(columns)) {}
+  // `units[i]` is the unit of `columns[i]`; both as many.
+  CsvTable(std::vector<std::string> columns, std::vector<std::string> units);
   void AddRow(const std::vector<double>& values);
+  // A row of cells already written: Number(x) for a number, Text(s) for a name.
+  void AddCells(std::vector<std::string> cells);
+  static std::string Number(double value);
+  static std::string Text(const std::string& text);  // quoted when it holds a comma, a quote or a line break
   std::string ToString() const;
   std::size_t rows() const { return rows_.size(); }
 
  private:
   std::vector<std::string> columns_;
-  std::vector<std::vector<double>> rows_;
+  std::vector<std::string> units_;
+  std::vector<std::vector<std::string>> rows_;
 };
 
 }  // namespace drillflex::io

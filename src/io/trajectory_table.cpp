@@ -43,7 +43,11 @@ void AddTrajectoryResults(const std::vector<TrajectoryRow>& rows, units::System 
   using units::Quantity;
   auto length = [&](double v) { return units::FromSI(v, Quantity::Length, system); };
   auto angle = [&](double v) { return units::FromSI(v, Quantity::Angle, system); };
-  CsvTable table({"md", "inclination", "azimuth", "north", "east", "tvd", "dls", "hole_diameter"});
+  const std::string length_unit(units::DefaultUnit(Quantity::Length, system));
+  CsvTable table({"md", "inclination", "azimuth", "north", "east", "tvd", "dls", "hole_diameter"},
+                 {length_unit, "deg", "deg", length_unit, length_unit, length_unit,
+                  std::string(units::DefaultUnit(Quantity::DoglegSeverity, system)),
+                  std::string(units::DefaultUnit(Quantity::Diameter, system))});
   nlohmann::json stations = nlohmann::json::array();
   for (const auto& row : rows) {
     const std::vector<double> values = {

@@ -11,7 +11,7 @@ namespace {
 using nlohmann::json;
 using units::Quantity;
 
-double Out(const Case& c, double si, Quantity quantity) { return units::FromSI(si, quantity, c.output_units); }
+double Out(const Case& c, double si, Quantity quantity) { return units::FromSI(si, quantity, c.output_units) + 0.0; }
 std::string Unit(const Case& c, Quantity quantity) { return std::string(units::DefaultUnit(quantity, c.output_units)); }
 
 // The per-probe columns, their quantities (units) and readers.
@@ -42,16 +42,20 @@ void AddTransientResults(const Case& c, const analyses::TransientResult& result,
                    {"wob", Unit(c, Quantity::WeightOnBit)},
                    {"tob", Unit(c, Quantity::Moment)},
                    {"energy", Unit(c, Quantity::Moment)}};
+  const std::string moment = Unit(c, Quantity::Moment);
+  std::vector<std::string> column_units = {"s",    "rpm",  moment, Unit(c, Quantity::Force), "rpm",
+                                           Unit(c, Quantity::WeightOnBit), moment, moment, moment, moment};
   json probes = json::array();
   for (std::size_t p = 0; p < result.probe_s.size(); ++p) {
     for (const ProbeColumn& column : kProbeColumns) {
       columns.push_back(fmt::format("probe{}_{}", p + 1, column.name));
+      column_units.push_back(Unit(c, column.quantity));
     }
     probes.push_back({{"s", Out(c, result.probe_s[p], Quantity::Length)},
                       {"md", Out(c, StationMd(c, result.probe_s[p]), Quantity::Length)}});
   }
   for (const ProbeColumn& column : kProbeColumns) units_of[column.name] = Unit(c, column.quantity);
-  CsvTable table(columns);
+  CsvTable table(columns, column_units);
   for (const analyses::TransientSample& s : result.samples) {
     std::vector<double> row = {s.time,
                                Out(c, s.surface_speed, Quantity::RotarySpeed),

@@ -51,8 +51,11 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
   const bool ratio = !result.max_clearance_ratio.empty();
   std::vector<std::string> columns = {"rpm", "max_lateral_displacement", "s_max_displacement", "max_bending_stress",
                                       "max_contact_force"};
-  if (ratio) columns.push_back("max_clearance_ratio");
-  CsvTable table(columns);
+  auto unit = [&](Quantity quantity) { return std::string(units::DefaultUnit(quantity, c.output_units)); };
+  std::vector<std::string> column_units = {unit(Quantity::RotarySpeed), unit(Quantity::Diameter), unit(Quantity::Length),
+                                           unit(Quantity::Stress), unit(Quantity::Force)};
+  if (ratio) columns.push_back("max_clearance_ratio"), column_units.push_back("-");
+  CsvTable table(columns, column_units);
   json rpm = json::array(), displacement = json::array(), stress = json::array(), contact = json::array(),
        clearance = json::array(), where = json::array();
   for (std::size_t i = 0; i < result.rpm.size(); ++i) {

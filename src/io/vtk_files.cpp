@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "analyses/wall_offsets.hpp"
+#include "core/error.hpp"
 #include "io/analysis_results.hpp"
 #include "model/wall_contact.hpp"
 #include "well/hole.hpp"
@@ -209,7 +211,7 @@ const model::Wellbore* WellboreOf(const Case& c, const model::BuiltModel& built,
   return &*storage;
 }
 
-// ---- string.vtp ----
+// ---- string.vtp (a static result's, and each frame of a transient's) ----
 
 double NodeMd(const Case& c, const analyses::StaticNodeResult& node) {
   return node.has_wall ? node.md : StationMd(c, node.s);
@@ -341,6 +343,22 @@ std::string ContactsVtp(const std::vector<analyses::ContactReport>& contacts) {
   return ToVtkXml(data, Cells::kVertices);
 }
 
+// ---- transient.pvd ----
+
+// The collection of a transient's frames: one data set per file, at its time (s).
+std::string TransientPvd(const std::vector<double>& times, const std::vector<std::string>& files) {
+  NumberWriter numbers;
+  std::string text = "<?xml version=\"1.0\"?>\n";
+  text.append("<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n  <Collection>\n");
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    text.append("    <DataSet timestep=\"");
+    numbers.Append(text, times[i]);
+    text.append(fmt::format("\" group=\"\" part=\"0\" file=\"{}\"/>\n", files[i]));
+  }
+  text.append("  </Collection>\n</VTKFile>\n");
+  return text;
+}
+
 }  // namespace
 
 void AddStaticVtk(const Case& c, const model::BuiltModel& built, const analyses::StaticResult& result,
@@ -351,6 +369,23 @@ void AddStaticVtk(const Case& c, const model::BuiltModel& built, const analyses:
   const std::vector<double> node_mds = FiniteNodeMds(c, result.nodes);
   if (wellbore != nullptr && !node_mds.empty()) files.Add("well.vtp", WellVtp(*wellbore, node_mds));
   if (!result.contacts.empty()) files.Add("contacts.vtp", ContactsVtp(result.contacts));
+}
+
+void AddTransientVtk(const Case& c, const model::BuiltModel& built, const analyses::TransientResult& result,
+                     ResultFiles& files) {
+  if (result.frame_times.size() != result.frame_q.size()) {
+    throw LogicError("AddTransientVtk: the frames' times and states differ in number");
+  }
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < result.frame_q.size(); ++i) {
+    const VecX& q = result.frame_q[i];
+    if (q.size() != built.system.num_positions()) throw LogicError("AddTransientVtk: a frame is not the model's state");
+    std::vector<analyses::StaticNodeResult> nodes = analyses::StaticNodeResults(built.system, q, 1.0);
+    analyses::AddWallOffsets(built, q, nodes);
+    names.push_back(fmt::format("string_{:04}.vtp", i));
+    files.Add(names.back(), StringVtp(c, built, nodes));
+  }
+  if (!names.empty()) files.Add("transient.pvd", TransientPvd(result.frame_times, names));
 }
 
 }  // namespace drillflex::io

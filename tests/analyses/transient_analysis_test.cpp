@@ -1,10 +1,13 @@
 // The transient analysis (analyses/transient_analysis.hpp) on the V1 cantilever with 2 bodies:
 // the start from the equilibrium under initial loads, the samples and their times, the probe
-// signals (lateral displacement, whirl angle, bending moment), the energy and a rest that stays rest.
+// signals (lateral displacement, whirl angle, bending moment), the energy, a rest that stays rest, and the
+// frames of the whole state kept at every k-th sample (state_frames) without changing the run.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
+#include "analyses/static_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
 #include "analyses_test_support.hpp"
 #include "cms/reduction_cache.hpp"
@@ -23,14 +26,20 @@ model::ModelInput Cantilever() {
   return input;
 }
 
+// The cantilever built, with its reductions.
+struct BuiltCantilever {
+  model::ModelInput input = Cantilever();
+  cms::ReductionCache cache;
+  model::BuiltModel built = model::BuildSystemModel(input, cache);
+};
+
 double TipDeflection(double force) {
   return force * std::pow(testing::kRodLength, 3) / (3.0 * 2.1e11 * testing::RodSecondMoment());
 }
 
 TEST(TransientAnalysis, ReleasedCantileverSwingsThroughZeroWithItsEnergy) {
-  const model::ModelInput input = Cantilever();
-  cms::ReductionCache cache;
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  BuiltCantilever cantilever;
+  const model::BuiltModel& built = cantilever.built;
   TransientSettings settings;
   settings.duration = 0.25;  // about half a period of 1/2.1434 Hz
   settings.output_interval = 0.01;
@@ -39,7 +48,7 @@ TEST(TransientAnalysis, ReleasedCantileverSwingsThroughZeroWithItsEnergy) {
   settings.tolerance = 1e-8;
   settings.probes = {testing::kRodLength, 0.0};
   settings.initial_loads = {PointLoad(testing::kRodLength, Vec3(0.0, 100.0, 0.0))};  // toward +y, right
-  const VecX start = TransientStartPositions(input, built, cache, settings, StaticSettings{});
+  const VecX start = TransientStartPositions(cantilever.input, built, cantilever.cache, settings, StaticSettings{});
   const TransientResult result = RunTransient(built, start, settings);
   ASSERT_EQ(result.samples.size(), 26u);
   EXPECT_NEAR(result.samples.back().time, 0.25, 1e-12);
@@ -67,16 +76,15 @@ TEST(TransientAnalysis, ReleasedCantileverSwingsThroughZeroWithItsEnergy) {
 }
 
 TEST(TransientAnalysis, RestAtTheEquilibriumStaysAtRest) {
-  const model::ModelInput input = Cantilever();
-  cms::ReductionCache cache;
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  BuiltCantilever cantilever;
+  const model::BuiltModel& built = cantilever.built;
   TransientSettings settings;
   settings.duration = 0.05;
   settings.output_interval = 0.02;  // samples at 0, 0.02, 0.04 and the duration 0.05
   settings.start = TransientStart::Reference;
   settings.probes = {2.0};
-  const TransientResult result =
-      RunTransient(built, TransientStartPositions(input, built, cache, settings, StaticSettings{}), settings);
+  const VecX start = TransientStartPositions(cantilever.input, built, cantilever.cache, settings, StaticSettings{});
+  const TransientResult result = RunTransient(built, start, settings);
   ASSERT_EQ(result.samples.size(), 4u);
   EXPECT_NEAR(result.samples.back().time, 0.05, 1e-15);
   for (const TransientSample& sample : result.samples) {
@@ -84,6 +92,63 @@ TEST(TransientAnalysis, RestAtTheEquilibriumStaysAtRest) {
     EXPECT_LT(sample.kinetic_energy, 1e-20);
   }
   EXPECT_LT((result.final_q - built.system.ReferencePositions()).norm(), 1e-12);
+}
+
+// TransientSettings::state_frames: the whole state at every k-th output sample from t = 0 and at the
+// end, at most that many; the run otherwise the same to the bit.
+TEST(TransientAnalysis, StateFramesKeepEveryKthSampleFromTheStartAndTheEndWithoutChangingTheRun) {
+  BuiltCantilever cantilever;
+  const model::BuiltModel& built = cantilever.built;
+  TransientSettings settings;
+  settings.duration = 0.1;
+  settings.output_interval = 0.01;  // 11 samples
+  settings.time_step = 5e-4;
+  settings.probes = {testing::kRodLength};
+  settings.initial_loads = {PointLoad(testing::kRodLength, Vec3(0.0, 100.0, 0.0))};
+  const VecX start = TransientStartPositions(cantilever.input, built, cantilever.cache, settings, StaticSettings{});
+  const TransientResult plain = RunTransient(built, start, settings);
+  EXPECT_TRUE(plain.frame_times.empty());  // state_frames = 0 by default: no frames kept
+  EXPECT_TRUE(plain.frame_q.empty());
+
+  settings.state_frames = 5;  // every 3rd sample (⌈10 / 4⌉) and the last
+  const TransientResult framed = RunTransient(built, start, settings);
+  ASSERT_EQ(framed.frame_times.size(), 5u);
+  ASSERT_EQ(framed.frame_q.size(), 5u);
+  const std::vector<int> kept = {0, 3, 6, 9, 10};
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const TransientSample& sample = framed.samples[kept[i]];
+    EXPECT_EQ(framed.frame_times[i], sample.time) << "frame " << i;
+    // The frame's tip is where the sample's probe read it.
+    const StaticNodeResult tip = StaticNodeResults(built.system, framed.frame_q[i]).back();
+    EXPECT_DOUBLE_EQ(tip.displacement.y(), sample.probes[0].lateral_y) << "frame " << i;
+  }
+  EXPECT_EQ(framed.frame_times.front(), 0.0);
+  EXPECT_EQ(framed.frame_times.back(), 0.1);
+  EXPECT_EQ(framed.frame_q.front(), start);
+  EXPECT_EQ(framed.frame_q.back(), framed.final_q);
+  EXPECT_GT(std::abs(framed.samples[3].probes[0].lateral_y - framed.samples[0].probes[0].lateral_y), 1e-4);  // moving
+
+  // The run itself is unchanged.
+  ASSERT_EQ(framed.samples.size(), plain.samples.size());
+  for (std::size_t k = 0; k < plain.samples.size(); ++k) {
+    EXPECT_EQ(framed.samples[k].time, plain.samples[k].time);
+    EXPECT_EQ(framed.samples[k].probes[0].lateral_y, plain.samples[k].probes[0].lateral_y);
+    EXPECT_EQ(framed.samples[k].probes[0].bending_moment, plain.samples[k].probes[0].bending_moment);
+    EXPECT_EQ(framed.samples[k].kinetic_energy, plain.samples[k].kinetic_energy);
+  }
+  EXPECT_EQ(framed.final_q, plain.final_q);
+  EXPECT_EQ(framed.final_v, plain.final_v);
+  EXPECT_EQ(framed.statistics.steps, plain.statistics.steps);
+
+  // More frames than samples: every sample; one frame: the end only.
+  settings.state_frames = 100;
+  EXPECT_EQ(RunTransient(built, start, settings).frame_q.size(), 11u);
+  settings.state_frames = 1;
+  const TransientResult last = RunTransient(built, start, settings);
+  ASSERT_EQ(last.frame_times.size(), 1u);
+  EXPECT_EQ(last.frame_times[0], 0.1);
+  settings.state_frames = -1;
+  EXPECT_THROW(RunTransient(built, start, settings), LogicError);
 }
 
 TEST(TransientAnalysis, IntegratorOptionsFollowTheSettings) {

@@ -66,6 +66,9 @@ TEST(Cli, WellWritesTheTrajectoryInFieldUnits) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header, "md,inclination,azimuth,north,east,tvd,dls,hole_diameter");
+  std::string units;
+  std::getline(csv, units);
+  EXPECT_EQ(units, "ft,deg,deg,ft,ft,ft,deg/100ft,in");  // the second line: each column's unit
   std::ifstream json_file(out / "results.json");
   const auto json = nlohmann::json::parse(json_file);
   EXPECT_EQ(json["units"], "field");
@@ -198,9 +201,11 @@ TEST(Cli, TransientWritesTheTimeSeriesAndNoProgressBarOffATerminal) {
   EXPECT_THAT(result.output, HasSubstr("transient: 0.05 s in 50 steps"));
   EXPECT_THAT(result.output, ::testing::Not(HasSubstr("s left")));
   std::ifstream csv(out / "transient.csv");
-  std::string header, line;
+  std::string header, units, line;
   std::getline(csv, header);
+  std::getline(csv, units);
   EXPECT_EQ(header.rfind("time,surface_rpm,surface_torque,hook_load,bit_rpm,wob,tob,", 0), 0u) << header;
+  EXPECT_EQ(units.rfind("s,rpm,", 0), 0u) << units;
   EXPECT_THAT(header, HasSubstr("probe1_lateral_z,probe1_whirl_angle,probe1_contact_force,probe1_bending_moment"));
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
@@ -241,9 +246,11 @@ TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
   EXPECT_THAT(result.output, HasSubstr("safe windows"));
   EXPECT_THAT(result.output, HasSubstr("reduced basis"));
   std::ifstream csv(out / "vibration.csv");
-  std::string header;
+  std::string header, units;
   std::getline(csv, header);
+  std::getline(csv, units);
   EXPECT_EQ(header, "rpm,max_lateral_displacement,s_max_displacement,max_bending_stress,max_contact_force");
+  EXPECT_EQ(units, "rpm,in,ft,psi,lbf");  // the case's field units
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 1201);

@@ -133,6 +133,7 @@ analyses:
     time_step: 1 ms
     rho_infinity: 0.9
     tolerance: 1e-6
+    vtk_frames: 25
     initial_loads:
       - {at: 30, force: [0, 0, 100]}
 )",
@@ -145,6 +146,8 @@ analyses:
   EXPECT_DOUBLE_EQ(t.rho_infinity, 0.9);
   EXPECT_DOUBLE_EQ(t.tolerance, 1e-6);
   EXPECT_EQ(t.start, analyses::TransientStart::Equilibrium);
+  EXPECT_EQ(t.vtk_frames, 25);
+  EXPECT_EQ(t.state_frames, 0);  // the command line turns vtk_frames into state_frames
   ASSERT_EQ(t.initial_loads.size(), 1u);
   EXPECT_NEAR(t.initial_loads[0].at, 30.0, 1e-12);  // SI case: m and N
   EXPECT_NEAR(t.initial_loads[0].force.z(), 100.0, 1e-12);
@@ -200,6 +203,7 @@ TEST(CaseReader, TransientDrives) {
   EXPECT_NEAR(by_default.top_drive->setting.target, 100 * kPi / 30, 1e-12);
   EXPECT_DOUBLE_EQ(by_default.top_drive->setting.ramp_time, model::kDefaultTopDriveRamp);
   EXPECT_FALSE(by_default.block);
+  EXPECT_FALSE(by_default.vtk_frames);  // the command line's default
   const auto speed = transient("{top_drive: {rpm: 120, ramp: 0.5 s}, block: {velocity: -1.5, ramp: 1 s}}");
   EXPECT_NEAR(speed.top_drive->setting.target, 4 * kPi, 1e-12);
   EXPECT_DOUBLE_EQ(speed.top_drive->setting.ramp_time, 0.5);
@@ -358,6 +362,10 @@ INSTANTIATE_TEST_SUITE_P(
                      "analyses.modes.campbell.to", "above 'from'"},
         RejectedCase{"spectral radius above 1", std::string(kGoodString) + "analyses:\n  transient: {rho_infinity: 1.5}\n",
                      4, "analyses.transient.rho_infinity", "between 0 and 1"},
+        RejectedCase{"negative vtk frames", std::string(kGoodString) + "analyses:\n  transient: {vtk_frames: -1}\n", 4,
+                     "analyses.transient.vtk_frames", "between 0 and 10000 frames"},
+        RejectedCase{"fractional vtk frames", std::string(kGoodString) + "analyses:\n  transient: {vtk_frames: 2.5}\n",
+                     4, "analyses.transient.vtk_frames", "a whole number"},
         RejectedCase{"bad transient start", std::string(kGoodString) + "analyses:\n  transient: {start: rest}\n", 4,
                      "analyses.transient.start", "'equilibrium' or 'reference'"},
         RejectedCase{"initial load off the string",

@@ -2,7 +2,9 @@
 // solved in its well (string.vtp: one point per station in order on one polyline, the values and
 // the places in SI to 1e-9; well.vtp over the string's MD range; contacts.vtp one vertex per
 // contact, its normal toward the hole axis), and a constructed result without a well or contacts
-// (no well.vtp, no contacts.vtp; a NaN, an infinity and a −0 written as 0).
+// (no well.vtp, no contacts.vtp; a NaN, an infinity and a −0 written as 0). A transient's frames
+// (the V8 cantilever released for 40 ms, 5 frames): transient.pvd lists string_0000.vtp to
+// string_0004.vtp at increasing times, each a string.vtp of the stations at that time.
 #include "io/vtk_files.hpp"
 
 #include <gtest/gtest.h>
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "analyses/static_analysis.hpp"
+#include "analyses/transient_analysis.hpp"
 #include "cms/reduction_cache.hpp"
 #include "io/model_input.hpp"
 #include "model/builder.hpp"
@@ -292,6 +295,119 @@ TEST(VtkFiles, ContactFreeCaseWithoutAWellWritesOnlyTheStringAndNoNonFiniteNumbe
   EXPECT_EQ(PointValues(string_vtp, "md")[4], 10.0);  // s without a well
   EXPECT_EQ(FindArray(Element(string_vtp, "PointData"), "Name=\"clearance\"").components, 0);  // no place in a hole
   EXPECT_NEAR(PointValues(string_vtp, "outer_radius")[0], 0.5 * 6.75 * kIn, 1e-15);
+}
+
+// ---- A transient's frames: transient.pvd and string_NNNN.vtp ----
+
+// The V8 cantilever (validation/v8-transient/free-vibration.yaml: 200 in rod, 4 bodies of 10
+// elements) released from its deflection under 100 N at the tip, for 40 ms.
+constexpr const char* kReleasedCantilever = R"(name: released-cantilever
+units: SI
+materials:
+  rod: {E: 2.1e11 Pa, nu: 0.3, density: 7800 kg/m3}
+string:
+  - {type: collar, name: rod, od: 3 in, id: 0, length: 200 in, material: rod}
+model: {body_length: 50 in, elements_per_body: 10, modes_per_body: 6, rotary_inertia: false,
+        structural_damping: 0}
+supports:
+  - {at: 0, fix: all}
+analyses:
+  transient:
+    initial_loads:
+      - {at: 200 in, force: [0, 0, 100 N]}
+    duration: 40 ms
+    output_interval: 2 ms
+    time_step: 0.5 ms
+    rho_infinity: 1
+    tolerance: 1e-8
+    vtk_frames: 5
+)";
+
+TEST(VtkFiles, TransientFramesAreACollectionOfStringFilesAtTheirTimes) {
+  const Case c = ParseCase(kReleasedCantilever, "released-cantilever.yaml");
+  analyses::TransientSettings settings = *c.analyses.transient;
+  ASSERT_EQ(settings.vtk_frames, 5);
+  settings.state_frames = *settings.vtk_frames;  // as the command line does
+  cms::ReductionCache cache;
+  const model::ModelInput input = MakeModelInput(c);
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  const VecX start = analyses::TransientStartPositions(input, built, cache, settings, analyses::StaticSettings{});
+  const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache);
+  const analyses::TransientResult result = analyses::RunTransient(moving, start, settings);
+  // 21 samples: every 5th (⌈20 / 4⌉) is a frame, t = 0 and the end among them.
+  ASSERT_EQ(result.frame_q.size(), 5u);
+  EXPECT_EQ(result.frame_times.front(), 0.0);
+  EXPECT_EQ(result.frame_times.back(), 0.04);
+  EXPECT_EQ(result.frame_q.back(), result.final_q);
+
+  ResultFiles files = FilesIn("transient");
+  AddTransientVtk(c, moving, result, files);
+  const fs::path directory = Commit(files);
+
+  // transient.pvd: one data set per frame, at increasing times.
+  const std::string pvd = ReadFile(directory / "transient.pvd");
+  EXPECT_NE(pvd.find("<VTKFile type=\"Collection\" version=\"1.0\""), std::string::npos);
+  EXPECT_NE(pvd.find("</Collection>\n</VTKFile>"), std::string::npos);
+  std::vector<std::string> frame_files;
+  std::vector<double> times;
+  for (std::size_t from = 0; !StartTag(pvd, "DataSet", from).empty();) {
+    const std::string tag = StartTag(pvd, "DataSet", from);
+    from = pvd.find(tag, from) + tag.size();
+    EXPECT_EQ(Attribute(tag, "part"), "0");
+    times.push_back(std::stod(Attribute(tag, "timestep")));
+    frame_files.push_back(Attribute(tag, "file"));
+  }
+  ASSERT_EQ(frame_files.size(), 5u);
+  EXPECT_EQ(frame_files.front(), "string_0000.vtp");
+  EXPECT_EQ(frame_files.back(), "string_0004.vtp");
+  EXPECT_EQ(times, result.frame_times);
+  EXPECT_TRUE(std::is_sorted(times.begin(), times.end()) &&
+              std::adjacent_find(times.begin(), times.end()) == times.end());
+
+  // Each frame: the string.vtp form, one point per station on one polyline.
+  const std::vector<analyses::StaticNodeResult> at_end = analyses::StaticNodeResults(moving.system, result.final_q);
+  const std::size_t n = at_end.size();
+  ASSERT_GT(n, 40u);
+  std::vector<std::string> frames;
+  for (const std::string& name : frame_files) {
+    frames.push_back(ReadFile(directory / name));
+    const std::string& vtp = frames.back();
+    ExpectRoot(vtp);
+    EXPECT_EQ(PieceCount(vtp, "NumberOfPoints"), n) << name;
+    EXPECT_EQ(PieceCount(vtp, "NumberOfLines"), 1u) << name;
+    EXPECT_EQ(FindArray(Element(vtp, "Points")).values.size(), 3 * n) << name;
+    EXPECT_EQ(PointValues(vtp, "s").size(), n) << name;
+    EXPECT_EQ(PointValues(vtp, "md"), PointValues(vtp, "s")) << name;  // no well
+    EXPECT_EQ(PointValues(vtp, "displacement", 3).size(), 3 * n) << name;
+    EXPECT_EQ(PointValues(vtp, "bending_moment").size(), n) << name;
+  }
+  // The last frame's points: the stations at final_q.
+  const std::vector<double> last_points = FindArray(Element(frames.back(), "Points")).values;
+  const std::vector<double> last_offset = PointValues(frames.back(), "lateral_offset");
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      ExpectRelativelyNear(last_points[3 * i + k], at_end[i].position[k], "station " + std::to_string(i) + " position");
+    }
+    ExpectRelativelyNear(last_offset[i], at_end[i].lateral_offset, "station " + std::to_string(i) + " lateral_offset");
+  }
+  // The first frame: the released deflection, P L³ / (3 E I) at the tip, the moment P L at the root.
+  const double length = 200 * kIn;
+  const double second_moment = kPi * std::pow(3 * kIn, 4) / 64.0;
+  const double deflection = 100.0 * std::pow(length, 3) / (3.0 * 2.1e11 * second_moment);
+  EXPECT_NEAR(PointValues(frames.front(), "lateral_offset").back(), deflection, 2e-3 * deflection);
+  EXPECT_NEAR(PointValues(frames.front(), "bending_moment").front(), 100.0 * length, 0.02 * 100.0 * length);
+  // The tip has moved between the first and the last frame.
+  EXPECT_GT(std::abs(PointValues(frames.front(), "lateral_offset").back() - last_offset.back()), 1e-3);
+
+  // A run without frames writes none.
+  analyses::TransientResult none = result;
+  none.frame_times.clear();
+  none.frame_q.clear();
+  ResultFiles no_files = FilesIn("transient-no-frames");
+  AddTransientVtk(c, moving, none, no_files);
+  const fs::path empty = Commit(no_files);
+  EXPECT_FALSE(fs::exists(empty / "transient.pvd"));
+  EXPECT_FALSE(fs::exists(empty / "string_0000.vtp"));
 }
 
 }  // namespace

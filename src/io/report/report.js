@@ -211,8 +211,6 @@
     const warnings = [];
     if (R.static) {
       for (const w of R.static.warnings || []) warnings.push(w);
-      const method = R.static.method_used || '';
-      if (method && !method.startsWith('energy-minimum')) warnings.push(`the static equilibrium needed the fallback path (${method})`);
       // Into the wall by more than 5 % of the radial clearance there: the contact stiffness is low
       // for its force (a penetration is the penalty's compliance, normal force / stiffness).
       const into = (R.static.nodes || []).filter((n) => n.clearance !== undefined && n.clearance < -0.05 * Math.max(n.clearance + n.hole_offset, 0));
