@@ -157,6 +157,9 @@ model::ModelInput TransientModelInput(const model::ModelInput& input, const Tran
   transient.static_sliding.reset();
   transient.top_drive = settings.top_drive;
   transient.block = settings.block;
+  // operation.hook_load is the hook's at the surface: the model's top carries it less the string
+  // above it (model/builder.hpp StringAboveWeight; 0 when the model reaches the surface).
+  if (transient.block && transient.block->at_surface) transient.block->setting.target -= model::StringAboveWeight(input);
   transient.bit_rock = settings.bit_rock;  // the builder then leaves out the bit loads the law replaces
   transient.imbalances = settings.imbalances;
   return transient;

@@ -335,6 +335,14 @@ int RunAnalyses(const CommandOptions& options, Requested requested, const char* 
                            built.system.num_velocities());
   io::ResultFiles files(options.output_directory.empty() ? io::DefaultOutputDirectory(c) : options.output_directory);
   io::AddCaseHeader(c, built, files);
+  io::AddOperation(c, input, files);
+  if (c.operation.hook_load && input.trajectory && input.supports.empty()) {
+    std::cout << fmt::format("operation: WOB {} from the hook load {} (the string's buoyed weight along the hole less "
+                             "it; the pipe above the model, to the surface, weighs {})\n",
+                             Show(c, input.operation.weight_on_bit, Quantity::WeightOnBit),
+                             Show(c, *c.operation.hook_load, Quantity::Force),
+                             Show(c, model::StringAboveWeight(input), Quantity::Force));
+  }
   const bool report = c.output.report && !options.no_report, vtk = c.output.vtk && !options.no_report;
   io::ReportData report_data;
 

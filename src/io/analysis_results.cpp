@@ -51,6 +51,18 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
                           {"hole_diameter", out.Unit(Quantity::Diameter)}};
 }
 
+void AddOperation(const Case& c, const model::ModelInput& input, ResultFiles& files) {
+  const OutputUnits out{c.output_units};
+  nlohmann::json operation = {{"weight_on_bit", out(input.operation.weight_on_bit, Quantity::WeightOnBit)},
+                              {"rpm", out(input.operation.rpm, Quantity::RotarySpeed)},
+                              {"torque_on_bit", out(input.operation.torque_on_bit, Quantity::Moment)}};
+  if (c.operation.hook_load) {
+    operation["hook_load"] = out(*c.operation.hook_load, Quantity::Force);
+    operation["string_above_weight"] = out(model::StringAboveWeight(input), Quantity::Force);
+  }
+  files.json()["operation"] = operation;
+}
+
 namespace {
 
 // Station results: static.csv rows and the "nodes" of results.json. With a well (a node has_wall),

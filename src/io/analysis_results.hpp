@@ -17,6 +17,9 @@ namespace drillflex::io {
 
 // "case", "units", "model": {bodies, coordinates, contacts, ...} and "column_units".
 void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& files);
+// "operation": the WOB the analyses apply (the case's, or what its surface hook load leaves) and,
+// with operation.hook_load, the hook load and the string above the model's weight along the hole.
+void AddOperation(const Case& c, const model::ModelInput& input, ResultFiles& files);
 // "static" and static.csv (one row per station), static_reactions in the JSON. With a well each
 // station adds its place in the hole (analyses/wall_offsets.hpp; its md is then the contact's) and
 // the bit its tendency in words (analyses/bit_tendency.hpp); contacts.csv lists the wall contacts.

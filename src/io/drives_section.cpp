@@ -65,6 +65,7 @@ model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operat
     block.setting.target = node.Quantity("hook_load", Quantity::Force);
   } else if (operation.hook_load) {
     block.setting.target = *operation.hook_load;
+    block.at_surface = true;
   } else {
     node.Fail("the block has neither 'velocity' nor 'hook_load' (nor is there 'hook_load' under 'operation')");
   }

@@ -1,5 +1,9 @@
 #include "io/model_input.hpp"
 
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
 namespace drillflex::io {
 
 model::ModelInput MakeModelInput(const Case& c) {
@@ -19,6 +23,22 @@ model::ModelInput MakeModelInput(const Case& c) {
     input.trajectory.emplace(c.well->survey);
     input.bit_md = c.well->bit_md;
     input.hole = c.well->hole;
+  }
+  // A surface hook load instead of a WOB (a string in a well on the default supports): the WOB is
+  // what the hook leaves of the string's buoyed weight along the hole (model/builder.hpp).
+  if (c.operation.hook_load && input.trajectory && input.supports.empty()) {
+    const double wob = model::WeightOnBitFromHookLoad(input, *c.operation.hook_load);
+    if (wob < 0.0) {
+      const double weight = wob + *c.operation.hook_load;
+      throw InputError({c.file, 0, 0}, "operation.hook_load",
+                       fmt::format("the hook load {:.6g} {} is more than the string's buoyed weight along the hole, "
+                                   "{:.6g} {} (with the pipe above the model to the surface): the bit would be off bottom",
+                                   units::FromSI(*c.operation.hook_load, units::Quantity::Force, c.units),
+                                   units::DefaultUnit(units::Quantity::Force, c.units),
+                                   units::FromSI(weight, units::Quantity::Force, c.units),
+                                   units::DefaultUnit(units::Quantity::Force, c.units)));
+    }
+    input.operation.weight_on_bit = wob;
   }
   return input;
 }

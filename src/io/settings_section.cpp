@@ -156,6 +156,13 @@ model::Operation ReadOperationSection(const YamlView& node) {
   operation.flow_rate = node.OptionalQuantity("flow_rate", Quantity::FlowRate);
   operation.hook_load = node.OptionalQuantity("hook_load", Quantity::Force);
   if (operation.weight_on_bit < 0.0) node.Child("wob").Fail("the WOB must not be negative (it is the compression at the bit)");
+  if (operation.hook_load) {
+    if (node.Has("wob")) {
+      node.Child("hook_load").Fail("give the WOB or the hook load, not both: a hook load sets the WOB (the string's "
+                                   "buoyed weight along the hole less the hook load)");
+    }
+    if (*operation.hook_load < 0.0) node.Child("hook_load").Fail("the hook load must not be negative (it is the tension the hook holds)");
+  }
   if (operation.flow_rate && *operation.flow_rate < 0.0) node.Child("flow_rate").Fail("the flow rate must not be negative");
   return operation;
 }

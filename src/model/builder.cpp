@@ -157,6 +157,49 @@ double BuoyedWeightPerLength(const Body& body, const ModelInput& input) {
   return input.gravity * mass_per_length;
 }
 
+double BuoyedWeightPerLength(const Component& component, const ModelInput& input) {
+  const AveragedAreas areas = AverageAreas(component);
+  double mass_per_length = input.materials.at(component.material).density * areas.material;
+  if (input.fluid) {
+    const double inside = input.fluid->internal_density.value_or(input.fluid->density);
+    mass_per_length += inside * areas.bore - input.fluid->density * areas.outer;
+  }
+  return input.gravity * mass_per_length;
+}
+
+namespace {
+
+double StringLengthOf(const StringConfig& string) {
+  double length = 0.0;
+  for (const Component& component : string.components) length += component.length * component.count;
+  return length;
+}
+
+}  // namespace
+
+double StringAboveWeight(const ModelInput& input) {
+  if (!input.trajectory || input.string.components.empty()) return 0.0;
+  const double top_md = input.bit_md - StringLengthOf(input.string);
+  if (top_md <= input.trajectory->start_md()) return 0.0;
+  const double tvd = input.trajectory->Position(top_md).z() - input.trajectory->Position(input.trajectory->start_md()).z();
+  return BuoyedWeightPerLength(input.string.components.back(), input) * tvd;
+}
+
+double WeightOnBitFromHookLoad(const ModelInput& input, double hook_load) {
+  double weight = StringAboveWeight(input);
+  if (input.trajectory) {
+    // Each component's weight along the hole: w (TVD at its bottom − TVD at its top).
+    double md = input.bit_md;
+    for (const Component& component : input.string.components) {
+      const double length = component.length * component.count;
+      weight += BuoyedWeightPerLength(component, input) *
+                (input.trajectory->Position(md).z() - input.trajectory->Position(md - length).z());
+      md -= length;
+    }
+  }
+  return weight - hook_load;
+}
+
 // The component at a distance s from the bit; at a connection the lower one, except on top of
 // the bit, where it is the upper one (the bit's gauge is at its bottom, where its support holds it
 // at the hole centre: a full-gauge contact at its top would be a false fulcrum).

@@ -62,6 +62,19 @@ Vec6 SectionCouplingStiffness(const Body& body, double factor);
 
 // Buoyed weight per length of a body's section, N/m (method.md §7): g (ρ_s A − ρ_f A_o + ρ_f,i A_i).
 double BuoyedWeightPerLength(const Body& body, const ModelInput& input);
+// The same for a component's section (tool joints averaged in, as its bodies carry them).
+double BuoyedWeightPerLength(const Component& component, const ModelInput& input);
+
+// The buoyed weight along the hole of the string above the model's top, N: its top component
+// continued to the surface (MD 0), hanging as a frictionless soft string, w · TVD(top). 0 without a
+// trajectory.
+double StringAboveWeight(const ModelInput& input);
+
+// The WOB a surface hook load leaves on the bit, N: the buoyed weight along the hole of the modelled
+// string (Σ w ΔTVD over its components) and of the string above (StringAboveWeight), less the hook
+// load. Frictionless soft string: in the static model a string at rest carries no friction and a
+// rotating one's acts around it, so the axial balance is exact there.
+double WeightOnBitFromHookLoad(const ModelInput& input, double hook_load);
 
 // The component at a distance s (m) from the bit: at a connection the lower one, except on top of
 // the bit (the upper one).

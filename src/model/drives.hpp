@@ -48,6 +48,9 @@ enum class BlockMode {
 struct BlockDrive {
   BlockMode mode = BlockMode::Velocity;
   LinearRamp setting;  // m/s up-hole (Velocity) or N (HookLoad)
+  // The target is operation.hook_load, the hook's tension at the surface: the block then holds the
+  // model's top with it less the string above's weight (analyses::TransientModelInput).
+  bool at_surface = false;
 };
 
 // The default ramp of a top-drive speed when the case gives none, s.
