@@ -208,6 +208,11 @@
       ['model', `${model.bodies} bodies, ${model.coordinates} coordinates, ${model.contacts} wall contacts, ${model.elements_per_body} elements and ${model.modes_per_body} modes a body`],
       ['units', `${R.units}: lengths in ${U.length}, diameters in ${U.diameter}, forces in ${U.force}, stresses in ${U.stress}`],
     ]);
+    if (R.operation) {
+      const op = R.operation;
+      const hook = op.hook_load !== undefined ? ` from the hook load ${num(op.hook_load, 5)} ${U.force} (the pipe above the model weighs ${num(op.string_above_weight, 5)} ${U.force})` : '';
+      facts(s, [['operation', `WOB ${num(op.weight_on_bit, 5)} ${U.wob}${hook}, ${num(op.rpm, 4)} rpm, torque on bit ${num(op.torque_on_bit, 5)} ${U.moment}`]]);
+    }
     const warnings = [];
     if (R.static) {
       for (const w of R.static.warnings || []) warnings.push(w);
