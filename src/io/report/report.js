@@ -211,7 +211,7 @@
     if (R.operation) {
       const op = R.operation;
       const hook = op.hook_load !== undefined ? ` from the hook load ${num(op.hook_load, 5)} ${U.force} (the pipe above the model weighs ${num(op.string_above_weight, 5)} ${U.force})` : '';
-      facts(s, [['operation', `WOB ${num(op.weight_on_bit, 5)} ${U.wob}${hook}, ${num(op.rpm, 4)} rpm, torque on bit ${num(op.torque_on_bit, 5)} ${U.moment}`]]);
+      facts(s, [['operation', `WOB ${num(op.weight_on_bit, 5)} ${U.wob}${hook}, ${num(op.rpm, 4)} ${U.rpm}, torque on bit ${num(op.torque_on_bit, 5)} ${U.moment}`]]);
     }
     const warnings = [];
     if (R.static) {
@@ -495,7 +495,7 @@
     let across = new THREE.Vector3().crossVectors(axis, new THREE.Vector3(0, 1, 0));
     if (across.lengthSq() < 1e-6) across = new THREE.Vector3(1, 0, 0);
     across.normalize();
-    camera.position.copy(centre.clone().add(across.multiplyScalar(size * 1.3)).add(new THREE.Vector3(0, size * 0.25, 0)));
+    camera.position.copy(centre.clone().add(across.multiplyScalar(size * 1.6)).add(new THREE.Vector3(0, size * 0.25, 0)));
     orbit.target.copy(centre);
     orbit.update();
     slider.addEventListener('input', () => { build(scaleOf(slider.value)); render(); });
