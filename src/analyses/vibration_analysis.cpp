@@ -614,6 +614,10 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
     result.max_bending_stress.push_back(point.stress.empty() ? 0.0 : *std::max_element(point.stress.begin(), point.stress.end()));
     result.max_contact_force.push_back(point.contact.empty() ? 0.0 : *std::max_element(point.contact.begin(), point.contact.end()));
   }
+  result.excitation_displacement.assign(excitations.size(), std::vector<double>(sums.size(), 0.0));
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    for (std::size_t e = 0; e < excitations.size(); ++e) result.excitation_displacement[e][i] = sums[i].by_excitation[e];
+  }
   FindCriticalSpeeds(settings, excitations, sums, result);
   return result;
 }

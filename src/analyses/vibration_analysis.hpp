@@ -85,6 +85,10 @@ struct VibrationResult {
   double stress_limit = 0.0;         // Pa
   int closed_contacts = 0;           // wall contacts closed at q (springs of the linear model)
   std::vector<double> excitation_frequencies;  // ω of each excitation at the first RPM, rad/s
+  // Per excitation (in the settings' order), per RPM: the largest station displacement amplitude of
+  // the response at that excitation's frequency, m (excitations at the same frequency there share
+  // one response: each gets its sum). The map's one curve per excitation.
+  std::vector<std::vector<double>> excitation_displacement;
   VibrationMethod method = VibrationMethod::Reduced;  // how the sweep was solved
   int basis_size = 0;  // reduced: the columns of the basis
   // Reduced: the largest relative error of the reduced response against the direct one at the

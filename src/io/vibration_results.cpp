@@ -108,6 +108,14 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
   if (result.band_modes >= 0) block["band_modes"] = result.band_modes;
   if (!result.method_note.empty()) block["method_note"] = result.method_note;
   if (ratio) block["max_clearance_ratio"] = clearance;
+  // One curve per excitation: the largest displacement amplitude of its own response at each RPM.
+  json by_excitation = json::array();
+  for (const std::vector<double>& curve : result.excitation_displacement) {
+    json values = json::array();
+    for (const double value : curve) values.push_back(out(value, Quantity::Diameter));
+    by_excitation.push_back(values);
+  }
+  block["excitation_displacement"] = by_excitation;
   files.Add("vibration.csv", table.ToString());
   files.json()["vibration"] = block;
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "analyses_test_support.hpp"
@@ -64,6 +65,43 @@ TEST(VibrationAnalysis, ResponsesAreLinearAndExcitationsAtOneFrequencySuperpose)
   }
   EXPECT_TRUE(one.max_clearance_ratio.empty());  // no well
   EXPECT_EQ(one.closed_contacts, 0);
+}
+
+// One curve per excitation: alone, an excitation's curve is the sweep's largest displacement; with a
+// bit excitation at 3× beside the imbalance (other frequencies: two responses added station by
+// station), each curve is its own response's and none exceeds the sum's largest.
+TEST(VibrationAnalysis, EachExcitationHasItsOwnCurve) {
+  PinnedRod rod;
+  const double mid = 0.5 * testing::kRodLength;
+  // Solved directly (a sparse LU per frequency), so that the three sweeps solve the same equations
+  // (a reduced basis is built from the sweep's own excitations).
+  const auto direct = [](VibrationSettings settings) {
+    settings.method = VibrationMethod::Direct;
+    return settings;
+  };
+  const VibrationResult one = rod.Run(direct(Sweep({Imbalance(mid, 0.01)}, 100, 3000, 100)));
+  ASSERT_EQ(one.excitation_displacement.size(), 1u);
+  ASSERT_EQ(one.excitation_displacement[0].size(), one.rpm.size());
+  for (std::size_t i = 0; i < one.rpm.size(); ++i) {
+    EXPECT_NEAR(one.excitation_displacement[0][i], one.max_lateral_displacement[i], 1e-12 * one.max_lateral_displacement[i]);
+  }
+  Excitation bit;
+  bit.type = ExcitationType::Bit;
+  bit.harmonic = 3;
+  bit.lateral = 50.0;
+  const VibrationResult both = rod.Run(direct(Sweep({Imbalance(mid, 0.01), bit}, 100, 3000, 100)));
+  ASSERT_EQ(both.excitation_displacement.size(), 2u);
+  const VibrationResult bit_alone = rod.Run(direct(Sweep({bit}, 100, 3000, 100)));
+  // The same responses to round-off (the bit's lateral force acts at the pinned end: its response is
+  // small, compared against the sweep's largest).
+  const double scale = *std::max_element(one.max_lateral_displacement.begin(), one.max_lateral_displacement.end());
+  for (std::size_t i = 0; i < both.rpm.size(); ++i) {
+    const double imbalance = one.max_lateral_displacement[i], alone = bit_alone.max_lateral_displacement[i];
+    EXPECT_NEAR(both.excitation_displacement[0][i], imbalance, 1e-9 * scale) << i;
+    EXPECT_NEAR(both.excitation_displacement[1][i], alone, 1e-9 * scale) << i;
+    EXPECT_LE(std::max(both.excitation_displacement[0][i], both.excitation_displacement[1][i]),
+              both.max_lateral_displacement[i] * (1.0 + 1e-12)) << i;
+  }
 }
 
 TEST(VibrationAnalysis, FarBelowResonanceTheWhirlIsTheStaticDeflection) {

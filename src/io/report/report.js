@@ -569,6 +569,13 @@
       series: [{label: ratio ? 'amplitude / clearance' : 'amplitude', x: v.rpm, y: ratio ? v.max_clearance_ratio : v.max_lateral_displacement, width: 2}],
       xBands: bands, vLines: lines, hLines: ratio ? [{y: v.clearance_fraction, label: 'limit', color: '#ff7f0e'}] : [], logY: true,
     });
+    if (v.excitation_displacement && v.excitation_displacement.length > 1) {
+      plot(grid, {
+        title: 'Lateral amplitude of each excitation\'s own response', x: 'rotary speed (rpm)', y: `amplitude (${U.diameter})`,
+        series: v.excitation_displacement.map((curve, e) => ({label: names[e] || `excitation ${e + 1}`, x: v.rpm, y: curve})),
+        xBands: bands, logY: true,
+      });
+    }
     plot(grid, {
       title: 'Bending-stress amplitude', x: 'rotary speed (rpm)', y: `stress (${U.stress})`,
       series: [{label: 'bending stress', x: v.rpm, y: v.max_bending_stress, color: COLORS[1], width: 2}],
