@@ -12,6 +12,7 @@
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/static_minimum.hpp"
+#include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
@@ -280,6 +281,41 @@ void SolveEigenproblemInWell(EquilibriumSolver& solver, const BucklingSettings& 
   FillBuckledMode(model, mode_state, buckling.modes.col(0), result);
 }
 
+// Dawson–Paslay's and Chen's loads along the case's equilibrium q (λ = 1) in a well (header).
+SinusoidalBucklingScreen ScreenSinusoidalBuckling(const model::ModelInput& input, const model::BuiltModel& built,
+                                                  const VecX& q) {
+  const model::SystemModel& model = built.system;
+  std::vector<StaticNodeResult> nodes = StaticNodeResults(model, q, 1.0);
+  AddWallOffsets(built, q, nodes);
+  SinusoidalBucklingScreen screen;
+  double least = std::numeric_limits<double>::infinity();
+  std::size_t b = 0;
+  for (const StaticNodeResult& node : nodes) {
+    const double compression = -node.axial_force;
+    if (compression <= 0.0 || !node.has_wall) continue;
+    while (b + 1 < model.bodies().size() && model.bodies()[b + 1].s_start <= node.s) ++b;
+    const model::Body& body = model.bodies()[b];
+    const double weight = std::abs(model::BuoyedWeightPerLength(body, input));
+    const double inclination = input.trajectory->Inclination(node.md);
+    const double clearance = std::max(node.hole_offset + node.clearance, 1e-6);  // r, m
+    const double sinusoidal = 2.0 * std::sqrt(body.bending_rigidity * weight * std::sin(inclination) / clearance);
+    const double factor = (sinusoidal / compression) * (sinusoidal / compression);
+    screen.computed = true;
+    // In a vertical hole F_sin = 0 (no weight holds the pipe to the wall): the ratio is left out.
+    if (sinusoidal > 0.0) screen.largest_ratio = std::max(screen.largest_ratio, compression / sinusoidal);
+    if (factor < least) {
+      least = factor;
+      screen.load_factor = factor;
+      screen.s = node.s;
+      screen.md = node.md;
+      screen.compression = compression;
+      screen.sinusoidal_load = sinusoidal;
+      screen.helical_load = 2.0 * std::sqrt(2.0) * sinusoidal;
+    }
+  }
+  return screen;
+}
+
 // ω² (signed) of the lowest mode above the `rigid` rigid-body modes at λ, or NaN if no equilibrium.
 FrequencyLoadPoint FrequencyAt(EquilibriumSolver& solver, double load_factor, int rigid, double& eigenvalue) {
   const model::SystemModel& model = solver.model();
@@ -373,6 +409,7 @@ BucklingResult RunBuckling(const model::ModelInput& input, const model::BuiltMod
   BucklingResult result;
   if (solver.in_well()) {
     SolveEigenproblemInWell(solver, settings, result);
+    result.sinusoidal = ScreenSinusoidalBuckling(input, built, solver.At(1.0).q);
   } else {
     SolveEigenproblem(solver, settings, result);
   }

@@ -36,6 +36,22 @@ struct FrequencyLoadPoint {
   double frequency_hz = 0.0;     // lowest non-zero natural frequency at λ
 };
 
+// The industry's buckling check of a string lying in an inclined hole, beside the eigenproblem: at
+// each station of the case's equilibrium in compression F, Dawson & Paslay's (1984) sinusoidal
+// buckling load F_sin = 2 √(EI w sin θ / r) (w the buoyed weight per length, θ the inclination, r
+// the radial clearance of the contact circle) and Chen, Lin & Cheatham's (1990) helical load
+// F_hel = 2√2 F_sin. With every load scaled by λ, F grows as λ and F_sin as √λ, so the string
+// reaches F_sin first at λ = min (F_sin / F)² over the stations.
+struct SinusoidalBucklingScreen {
+  bool computed = false;          // a string in a well with some station in compression
+  double load_factor = 0.0;       // λ at which the first station reaches F_sin (0: already beyond it)
+  double s = 0.0, md = 0.0;       // that station, m
+  double compression = 0.0;       // its compression at λ = 1, N
+  double sinusoidal_load = 0.0;   // its F_sin at λ = 1, N
+  double helical_load = 0.0;      // its F_hel at λ = 1, N
+  double largest_ratio = 0.0;     // max F / F_sin over the stations with F_sin > 0, at λ = 1 (> 1: buckled)
+};
+
 struct BucklingResult {
   // (a) the eigenproblem
   double load_factor = 0.0;       // μ_cr: the case's loads × μ_cr buckle the string
@@ -53,6 +69,8 @@ struct BucklingResult {
   std::vector<double> s;
   std::vector<Vec3> mode_displacement;
   std::vector<Vec3> mode_rotation;
+  // In a well: Dawson–Paslay's check (above).
+  SinusoidalBucklingScreen sinusoidal;
 };
 
 // `built` made from `input`. Each equilibrium under λ × the loads is found as the static analysis

@@ -255,6 +255,26 @@ void PrintVibration(const io::Case& c, const analyses::VibrationResult& result) 
 void PrintBuckling(const io::Case& c, const analyses::BucklingResult& result) {
   std::cout << fmt::format("buckling: load multiplier {:.6g}, critical compression {} (eigenproblem)\n",
                            result.load_factor, Show(c, result.critical_load, Quantity::Force, 6));
+  if (result.sinusoidal.computed) {
+    const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;
+    const std::string where = fmt::format("MD {}", Show(c, screen.md, Quantity::Length));
+    if (screen.sinusoidal_load == 0.0) {
+      std::cout << fmt::format("  Dawson-Paslay: at {} the hole is vertical and the string compressed ({}): no weight "
+                               "holds it to the wall, so it lies buckled there (Lubinski)\n",
+                               where, Show(c, screen.compression, Quantity::Force));
+    } else if (screen.load_factor < 1.0) {
+      std::cout << fmt::format("  Dawson-Paslay: the compression {} at {} is {:.3g} times the sinusoidal buckling load "
+                               "{} (helical {}): the string lies buckled there at the case's loads\n",
+                               Show(c, screen.compression, Quantity::Force), where, screen.compression / screen.sinusoidal_load,
+                               Show(c, screen.sinusoidal_load, Quantity::Force), Show(c, screen.helical_load, Quantity::Force));
+    } else {
+      std::cout << fmt::format("  Dawson-Paslay: sinusoidal buckling first at {:.4g} times the loads, at {} (compression "
+                               "{} against {} now)\n",
+                               screen.load_factor, where, Show(c, screen.compression, Quantity::Force),
+                               Show(c, screen.sinusoidal_load, Quantity::Force));
+    }
+    std::cout << "  (in a well the eigenproblem's multiplier is not yet validated against a reference: docs/validation.md)\n";
+  }
   if (result.frequency_method_converged) {
     std::cout << fmt::format("  from the lowest frequency against load: multiplier {:.6g}, compression {}\n",
                              result.frequency_load_factor, Show(c, result.frequency_critical_load, Quantity::Force, 6));

@@ -277,6 +277,17 @@ void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, R
         {"critical_load", out(result.frequency_critical_load, Quantity::Force)},
         {"unloaded_frequency_hz", result.unloaded_frequency_hz},
         {"table", points}}}};
+  if (result.sinusoidal.computed) {
+    const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;
+    files.json()["buckling"]["dawson_paslay"] = {
+        {"load_factor", screen.load_factor},
+        {"s", out(screen.s, Quantity::Length)},
+        {"md", out(screen.md, Quantity::Length)},
+        {"compression", out(screen.compression, Quantity::Force)},
+        {"sinusoidal_load", out(screen.sinusoidal_load, Quantity::Force)},
+        {"helical_load", out(screen.helical_load, Quantity::Force)},
+        {"largest_ratio", screen.largest_ratio}};
+  }
 }
 
 }  // namespace drillflex::io

@@ -12,6 +12,8 @@
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses_test_support.hpp"
+#include "cms/reduction_cache.hpp"
+#include "field_parts.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -159,6 +161,44 @@ TEST(BucklingAnalysis, GreenhillSelfWeightColumn) {
   // The largest compression is at the base: w L less the base node's own share w h/2.
   const double h = kRodLength / (10 * kBodies);
   EXPECT_NEAR(result.reference_compression, w * (kRodLength - h / 2), 1e-6 * w * kRodLength);
+}
+
+}  // namespace
+}  // namespace drillflex::analyses
+
+namespace drillflex::analyses {
+namespace {
+
+// Dawson & Paslay's check beside the eigenproblem in a well: 300 ft of 4-3/4 in collars (no tool
+// joints) lying in a straight 8-1/2 in hole at 60°, dry, under 40 klbf WOB. The compression is
+// largest at the bit, F ≈ WOB, and F_sin = 2 √(EI w sin θ / r) by hand (w = ρ g A, r the radial
+// clearance), so the loads × (F_sin / WOB)² reach it first there.
+TEST(BucklingInWell, DawsonPaslayLoadFactorMatchesTheHandFormula) {
+  model::ModelInput input;
+  const double od = 4.75 * testing::kIn, id = 2.25 * testing::kIn;
+  input.string.components = {testing::Part(model::ComponentType::Collar, 4.75, 2.25, 30.0, 10)};
+  input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, 7850.0};
+  input.gravity = 9.81;
+  const double inclination = 60.0 * kDegree;
+  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, inclination, 0.0}, {2000.0, inclination, 0.0}});
+  input.hole = {well::HoleSection{{}, 8.5 * testing::kIn, {}}};
+  input.bit_md = 1500.0;
+  const double wob = 40000.0 * testing::kLbf;
+  input.operation.weight_on_bit = wob;
+  cms::ReductionCache cache;
+  const model::BuiltModel built = model::BuildSystemModel(input, cache);
+  const BucklingResult result = RunBuckling(input, built, BucklingSettings{});
+  ASSERT_TRUE(result.sinusoidal.computed);
+  const double area = kPi / 4.0 * (od * od - id * id);
+  const double inertia = kPi / 64.0 * (std::pow(od, 4) - std::pow(id, 4));
+  const double weight = 7850.0 * 9.81 * area;
+  const double clearance = 0.5 * (8.5 * testing::kIn - od);
+  const double sinusoidal = 2.0 * std::sqrt(2.1e11 * inertia * weight * std::sin(inclination) / clearance);
+  EXPECT_NEAR(result.sinusoidal.sinusoidal_load, sinusoidal, 0.01 * sinusoidal);
+  EXPECT_NEAR(result.sinusoidal.helical_load, 2.0 * std::sqrt(2.0) * sinusoidal, 0.01 * sinusoidal);
+  EXPECT_LT(result.sinusoidal.s, 1.0);  // at the bit
+  const double expected = (sinusoidal / wob) * (sinusoidal / wob);
+  EXPECT_NEAR(result.sinusoidal.load_factor, expected, 0.02 * expected);
 }
 
 }  // namespace

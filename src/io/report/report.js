@@ -616,6 +616,16 @@
     p.append('Critical load multiplier ', value(b.load_factor, '', 'buckling.load_factor', 6), ' of the case\'s loads: a largest compression of ',
              value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force}).`);
     s.appendChild(p);
+    if (b.dawson_paslay) {
+      const d = b.dawson_paslay;
+      const text = d.sinusoidal_load === 0
+        ? `Dawson–Paslay: at MD ${num(d.md, 6)} ${U.length} the hole is vertical and the string compressed (${num(d.compression, 5)} ${U.force}): no weight holds it to the wall, so it lies buckled there (Lubinski).`
+        : d.load_factor < 1
+          ? `Dawson–Paslay: at MD ${num(d.md, 6)} ${U.length} the compression ${num(d.compression, 5)} ${U.force} exceeds the sinusoidal buckling load ${num(d.sinusoidal_load, 5)} ${U.force} (helical ${num(d.helical_load, 5)} ${U.force}): the string lies buckled there.`
+          : `Dawson–Paslay: sinusoidal buckling first at ${num(d.load_factor, 4)} × the loads, at MD ${num(d.md, 6)} ${U.length} (compression ${num(d.compression, 5)} ${U.force} against ${num(d.sinusoidal_load, 5)} ${U.force} now; helical ${num(d.helical_load, 5)} ${U.force}).`;
+      s.appendChild(el('p', {text: text}));
+      s.appendChild(el('p', {class: 'note', text: 'In a well the eigenproblem\'s multiplier is not yet validated against a reference (docs/validation.md); the Dawson–Paslay check is the industry\'s.'}));
+    }
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
     const table = (b.frequency_method || {}).table || [];
