@@ -230,7 +230,7 @@
     }
     if (R.modes) {
       const negative = R.modes.filter((m) => m.negative_stiffness).length;
-      if (negative) warnings.push(`${negative} of the modes have negative stiffness (ω² < 0): not vibration modes; with wall friction they come from its tangent (docs/validation.md)`);
+      if (negative) warnings.push(`${negative === 1 ? 'one of the modes has' : negative + ' of the modes have'} negative stiffness (ω² < 0): not vibration modes; with wall friction they come from its tangent (docs/validation.md)`);
     }
     const list = el('ul', {class: 'warnings'});
     for (const w of warnings) list.appendChild(el('li', {text: w}));
