@@ -624,7 +624,7 @@
           ? `Dawson–Paslay: at MD ${num(d.md, 6)} ${U.length} the compression ${num(d.compression, 5)} ${U.force} exceeds the sinusoidal buckling load ${num(d.sinusoidal_load, 5)} ${U.force} (helical ${num(d.helical_load, 5)} ${U.force}): the string lies buckled there.`
           : `Dawson–Paslay: sinusoidal buckling first at ${num(d.load_factor, 4)} × the loads, at MD ${num(d.md, 6)} ${U.length} (compression ${num(d.compression, 5)} ${U.force} against ${num(d.sinusoidal_load, 5)} ${U.force} now; helical ${num(d.helical_load, 5)} ${U.force}).`;
       s.appendChild(el('p', {text: text}));
-      s.appendChild(el('p', {class: 'note', text: 'In a well the eigenproblem\'s multiplier is not yet validated against a reference (docs/validation.md); the Dawson–Paslay check is the industry\'s.'}));
+      s.appendChild(el('p', {class: 'note', text: 'In a well the eigenproblem\'s multiplier is not validated: on the bundled example it says 1.03 where the equilibrium path buckles between 2.0 and 2.6, as Dawson–Paslay\'s 2.60 says. Rely on the Dawson–Paslay check (docs/validation.md).'}));
     }
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
