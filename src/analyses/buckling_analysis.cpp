@@ -56,6 +56,7 @@ class EquilibriumSolver {
     const VecX* start = nullptr;
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto& [factor, q] : found_) {
+      if (factor == load_factor) return {q, true};  // found already
       if (std::abs(factor - load_factor) < nearest) {
         nearest = std::abs(factor - load_factor);
         start = &q;

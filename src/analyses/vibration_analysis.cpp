@@ -208,6 +208,15 @@ ComplexVec ExcitationLoad(const model::SystemModel& model, const std::vector<mod
 
 }  // namespace
 
+std::string ExcitationName(const Excitation& excitation) {
+  switch (excitation.type) {
+    case ExcitationType::Imbalance: return "imbalance 1×";
+    case ExcitationType::Bit: return fmt::format("bit {}×", excitation.harmonic);
+    case ExcitationType::Motor: return "motor";
+  }
+  throw LogicError("ExcitationName: unknown excitation type");
+}
+
 double ExcitationFrequency(const Excitation& excitation, double rotary_speed, double motor_speed) {
   switch (excitation.type) {
     case ExcitationType::Imbalance: return rotary_speed;

@@ -104,6 +104,9 @@ struct VibrationResult {
 // rotor speed (rad/s) for a motor excitation.
 double ExcitationFrequency(const Excitation& excitation, double rotary_speed, double motor_speed);
 
+// An excitation as an engineer names it: "imbalance 1×", "bit 3×", "motor".
+std::string ExcitationName(const Excitation& excitation);
+
 // The rotor speed of a motor excitation (rad/s): its `speed`, else rev_per_volume × flow rate of the
 // string's first motor. Throws InputError (key path analyses.vibration.excitations[index]) when
 // neither is known, or when there is no motor to take the lobes or place from.

@@ -179,13 +179,7 @@ void PrintCriticalRpm(const io::Case& c, const analyses::ModesResult& result) {
 // "bit 3×", "imbalance 1×", "motor 5 lobes": what drives a critical RPM.
 std::string ExcitationName(const io::Case& c, int index) {
   if (!c.analyses.vibration || index < 0 || index >= static_cast<int>(c.analyses.vibration->excitations.size())) return "?";
-  const analyses::Excitation& excitation = c.analyses.vibration->excitations[static_cast<std::size_t>(index)];
-  switch (excitation.type) {
-    case analyses::ExcitationType::Imbalance: return "imbalance 1×";
-    case analyses::ExcitationType::Bit: return fmt::format("bit {}×", excitation.harmonic);
-    case analyses::ExcitationType::Motor: return "motor";
-  }
-  return "?";
+  return analyses::ExcitationName(c.analyses.vibration->excitations[static_cast<std::size_t>(index)]);
 }
 
 // The critical RPMs most severe first (at most kListed; the rest by RPM on one line).

@@ -89,11 +89,7 @@ Case ReadCase(const std::string& path) {
   return ParseCase(text.str(), path, directory.empty() ? "." : directory.string());
 }
 
-double StringLength(const Case& c) {
-  double length = 0.0;
-  for (const auto& component : c.string.components) length += component.length * component.count;
-  return length;
-}
+double StringLength(const Case& c) { return model::StringLength(c.string); }
 
 std::string DefaultOutputDirectory(const Case& c) {
   std::string name;

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "io/analysis_results.hpp"
+#include "well/hole.hpp"
 
 namespace drillflex::io {
 
@@ -27,7 +28,7 @@ using units::Quantity;
 
 // The von Mises limit line of the static plots: the minimum yield strength of API 5DP grade E-75
 // drill pipe (75 ksi), the lowest grade of the string's steel: a screening line, not a design check.
-constexpr double kStressLimitPa = 75000.0 * 6894.757293168;
+const double kStressLimitPa = units::ToSI(75000.0, units::Quantity::Stress, units::System::Field);  // 75 ksi
 
 // A series never holds more points than this (the transient's are thinned evenly): the page stays
 // light and quick to open.
@@ -143,33 +144,12 @@ void ReportData::AddExcitations(const Case& c) {
   json names = json::array();
   if (c.analyses.vibration) {
     for (const analyses::Excitation& excitation : c.analyses.vibration->excitations) {
-      switch (excitation.type) {
-        case analyses::ExcitationType::Imbalance: names.push_back("imbalance 1×"); break;
-        case analyses::ExcitationType::Bit: names.push_back(fmt::format("bit {}×", excitation.harmonic)); break;
-        case analyses::ExcitationType::Motor: names.push_back("motor"); break;
-      }
+      names.push_back(analyses::ExcitationName(excitation));
     }
   }
   json_["excitations"] = std::move(names);
 }
 
-namespace {
-
-// The hole's diameter at `md` (m): the first section reaching it, linear between its ends when tapered.
-double HoleDiameterAt(const std::vector<well::HoleSection>& hole, double md) {
-  double from = 0.0;
-  for (const well::HoleSection& section : hole) {
-    if (!section.to_md || md <= *section.to_md) {
-      if (!section.diameter_at_end || !section.to_md || *section.to_md <= from) return section.diameter;
-      const double t = std::clamp((md - from) / (*section.to_md - from), 0.0, 1.0);
-      return section.diameter + t * (*section.diameter_at_end - section.diameter);
-    }
-    from = *section.to_md;
-  }
-  return hole.empty() ? 0.0 : hole.back().diameter;
-}
-
-}  // namespace
 
 void ReportData::AddTransient(const Case& c, const model::ModelInput& input, const analyses::TransientResult& result) {
   const Out out{c.output_units};
@@ -202,7 +182,7 @@ void ReportData::AddTransient(const Case& c, const model::ModelInput& input, con
                       {"contact_force", probe_force[p]}});
     if (input.trajectory && !input.hole.empty()) {
       // Radial clearance: the hole's radius less the contact circle's (joint, blade or body) there.
-      const double hole = HoleDiameterAt(input.hole, StationMd(c, result.probe_s[p]));
+      const double hole = well::HoleProfile(input.hole).Diameter(StationMd(c, result.probe_s[p]));
       const double string = model::ContactDiameterAt(input.string, result.probe_s[p]);
       probes.back()["clearance"] = out(0.5 * (hole - string), Quantity::Diameter);
     }

@@ -13,6 +13,7 @@
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
+#include "analyses/vibration_analysis.hpp"
 #include "io/case.hpp"
 #include "model/builder.hpp"
 

@@ -167,19 +167,9 @@ double BuoyedWeightPerLength(const Component& component, const ModelInput& input
   return input.gravity * mass_per_length;
 }
 
-namespace {
-
-double StringLengthOf(const StringConfig& string) {
-  double length = 0.0;
-  for (const Component& component : string.components) length += component.length * component.count;
-  return length;
-}
-
-}  // namespace
-
 double StringAboveWeight(const ModelInput& input) {
   if (!input.trajectory || input.string.components.empty()) return 0.0;
-  const double top_md = input.bit_md - StringLengthOf(input.string);
+  const double top_md = input.bit_md - StringLength(input.string);
   if (top_md <= input.trajectory->start_md()) return 0.0;
   const double tvd = input.trajectory->Position(top_md).z() - input.trajectory->Position(input.trajectory->start_md()).z();
   return BuoyedWeightPerLength(input.string.components.back(), input) * tvd;

@@ -11,6 +11,12 @@ double ContactDiameter(const Component& component) {
   return diameter;
 }
 
+double StringLength(const StringConfig& string) {
+  double length = 0.0;
+  for (const Component& component : string.components) length += component.length * component.count;
+  return length;
+}
+
 AveragedAreas AverageAreas(const Component& component) {
   auto circle = [](double diameter) { return kPi * diameter * diameter / 4.0; };
   AveragedAreas areas{circle(component.outer_diameter) - circle(component.inner_diameter),

@@ -130,4 +130,7 @@ struct StringConfig {
 
 const char* ComponentTypeName(ComponentType type);
 
+// The string's length from the bit to its top, m: Σ length × count.
+double StringLength(const StringConfig& string);
+
 }  // namespace drillflex::model
