@@ -33,7 +33,8 @@ FIELD_TO_SI = {
     "bending_stress": 6894.757293168361, "von_mises_stress": 6894.757293168361, "hole_offset": 0.0254,
     "offset_high_side_angle": math.pi / 180.0, "clearance": 0.0254, "hole_diameter": 0.0254,
 }
-SI_TO_SI = dict(FIELD_TO_SI, **{k: 1.0 for k in FIELD_TO_SI})
+# SI output: lengths, forces and stresses are SI already; the CSV's angles are in degrees.
+SI_TO_SI = {k: 1.0 for k in FIELD_TO_SI}
 SI_TO_SI["offset_high_side_angle"] = math.pi / 180.0
 
 failures = []
