@@ -72,7 +72,14 @@ struct VibrationSettings {
   double stress_limit = 10000.0 * 6894.757293168;  // Pa (10 ksi): a screening value, set your own
 };
 
+// Which loads the buckling multiplier scales (case key analyses.buckling.scale).
+enum class BucklingScale {
+  Automatic,  // the WOB when the case has one, else every load
+  Wob,        // the weight on bit alone; the weight, the fluid and the other loads stay as they are
+  AllLoads,   // every load: weight, WOB, torque, the case's loads
+};
 struct BucklingSettings {
+  BucklingScale scale = BucklingScale::Automatic;
   int modes = 1;  // buckling modes reported
   // The frequency-against-load method (the paper's Figure 5) beside the eigenproblem.
   bool frequency_method = true;

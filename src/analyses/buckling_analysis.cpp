@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -27,53 +29,79 @@ struct Equilibrium {
   bool converged = false;
 };
 
-// The static equilibria under λ × the case's loads, by the path the static analysis takes: a string
-// in a well (no case supports) by the energy's minimum (analyses/static_minimum.hpp), each from the
-// equilibrium already found at the nearest λ (the first from the string resting on the wall); any
-// other string by Newton's load stepping from the reference placement.
+// The static equilibria along the buckling load path, by the path the static analysis takes: a
+// string in a well (no case supports) by the energy's minimum (analyses/static_minimum.hpp), each
+// from the equilibrium already found at the nearest multiplier (the first from the string resting on
+// the wall); any other string by Newton's method from the nearest equilibrium found (the first from
+// the reference placement). The path scales every load
+// (one model, load factor μ) or the WOB alone (one model per μ with WOB × μ, load factor 1).
 class EquilibriumSolver {
  public:
   // In a well the string at rest (a rotating string's friction left out: it buckles as it lies).
-  EquilibriumSolver(const model::ModelInput& input, const model::BuiltModel& built, const StaticSettings& settings)
-      : input_(input), built_(built), settings_(settings),
+  EquilibriumSolver(const model::ModelInput& input, const model::BuiltModel& built, const StaticSettings& settings,
+                    bool scale_wob)
+      : input_(input), built_(built), settings_(settings), scale_wob_(scale_wob),
         in_well_(input.trajectory.has_value() && !input.hole.empty() && input.supports.empty()) {
     input_.static_sliding.reset();
   }
 
-  const model::SystemModel& model() const { return built_.system; }
   bool in_well() const { return in_well_; }
+  bool scale_wob() const { return scale_wob_; }
+  const model::SystemModel& model() const { return built_.system; }
+  // The model and its load parameters at multiplier μ (at rest: no friction).
+  const model::SystemModel& ModelAt(double multiplier) { return BuiltAt(multiplier).system; }
+  model::LoadParameters LoadsAt(double multiplier) const { return {scale_wob_ ? 1.0 : multiplier, 0.0}; }
 
-  Equilibrium At(double load_factor) {
-    const model::SystemModel& model = built_.system;
-    if (load_factor == 0.0) return {model.ReferencePositions(), true};
-    if (!in_well_) {
-      model::StaticModelProblem problem(model, load_factor);
-      solvers::NewtonOptions options = DefaultNewtonOptions();
-      options.throw_on_failure = false;
-      const solvers::StaticResult result = solvers::SolveStatic(problem, model.ReferencePositions(), options);
-      return {result.q, result.converged};
-    }
+  Equilibrium At(double multiplier) {
+    const model::SystemModel& model = ModelAt(multiplier);
+    if (multiplier == 0.0 && !scale_wob_) return {model.ReferencePositions(), true};
     const VecX* start = nullptr;
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto& [factor, q] : found_) {
-      if (factor == load_factor) return {q, true};  // found already
-      if (std::abs(factor - load_factor) < nearest) {
-        nearest = std::abs(factor - load_factor);
+      if (factor == multiplier) return {q, true};  // found already
+      if (std::abs(factor - multiplier) < nearest) {
+        nearest = std::abs(factor - multiplier);
         start = &q;
       }
     }
-    const StaticMinimum minimum = SolveStaticMinimum(input_, built_, settings_, load_factor, start);
-    if (!minimum.converged || minimum.at_rest_only) return {minimum.q, false};
-    found_.emplace_back(load_factor, minimum.q);
-    return {minimum.q, true};
+    Equilibrium result;
+    if (!in_well_) {
+      model::StaticModelProblem problem(model, LoadsAt(multiplier).load_factor);
+      solvers::NewtonOptions options = DefaultNewtonOptions();
+      options.throw_on_failure = false;
+      const VecX from = start != nullptr ? *start : model.ReferencePositions();
+      const solvers::StaticResult solved = solvers::SolveStatic(problem, from, options);
+      result = {solved.q, solved.converged};
+    } else {
+      const StaticMinimum minimum =
+          SolveStaticMinimum(InputAt(multiplier), BuiltAt(multiplier), settings_, LoadsAt(multiplier).load_factor, start);
+      result = {minimum.q, minimum.converged && !minimum.at_rest_only};
+    }
+    if (result.converged) found_.emplace_back(multiplier, result.q);
+    return result;
   }
 
  private:
+  model::ModelInput InputAt(double multiplier) const {
+    model::ModelInput scaled = input_;
+    if (scale_wob_) scaled.operation.weight_on_bit *= multiplier;
+    return scaled;
+  }
+  const model::BuiltModel& BuiltAt(double multiplier) {
+    if (!scale_wob_ || multiplier == 1.0) return built_;
+    auto [it, inserted] = models_.try_emplace(multiplier);
+    if (inserted) it->second = std::make_unique<model::BuiltModel>(model::BuildSystemModel(InputAt(multiplier), cache_));
+    return *it->second;
+  }
+
   model::ModelInput input_;
   const model::BuiltModel& built_;
   const StaticSettings& settings_;
+  const bool scale_wob_;
   const bool in_well_;
-  std::vector<std::pair<double, VecX>> found_;  // (λ, equilibrium) found so far
+  std::vector<std::pair<double, VecX>> found_;  // (μ, equilibrium) found so far
+  cms::ReductionCache cache_;
+  std::map<double, std::unique_ptr<model::BuiltModel>> models_;  // WOB × μ
 };
 
 // The largest axial compression along the string at q (N, ≥ 0).
@@ -176,115 +204,132 @@ void SolveEigenproblem(EquilibriumSolver& solver, const BucklingSettings& settin
   FillBuckledMode(model, current.q, buckling.modes.col(0), result);
 }
 
-// (a) in a well: the string is held laterally only by its contacts, which the reference placement on
-// the hole axis does not have (K_0 singular), so the problem is linearized about the case's own
-// stable equilibrium q_a at λ_a instead (the string at rest): K_a = K_T(q_a, λ_a), positive definite
-// (the static solve found a minimum), and K_G = dK_T/dλ along the equilibrium path with the contacts
-// as they are, dK_T/dλ = ∂K_T/∂λ + ∂K_T/∂q · dq/dλ, dq/dλ = −K_a⁻¹ ∂R/∂λ (the path's tangent), by
-// one difference over ε along it. (K_a + ν K_G) x = 0 gives μ = λ_a + ν; λ_a then moves halfway to
-// μ, re-linearized there, until μ repeats to kInWellTolerance (contacts take up load on the way).
-constexpr double kPathDifference = 1e-4;    // ε / λ_a of the difference along the path
-constexpr double kInWellTolerance = 1e-3;   // relative change of μ that ends the iteration
-constexpr int kInWellIterations = 8;
+// About the case's equilibrium (a string in a well, or the WOB scaled alone): the multiplier μ at
+// which the lowest lateral natural frequency of the string at rest about its equilibrium reaches
+// zero, i.e. where the tangent stiffness K_T(q(μ), μ) of the loaded static state stops being positive
+// definite (the paper's Figure 5 route, from the loaded state instead of from the unloaded string:
+// in a well nothing but the contacts and the tension above holds the string laterally, so K at no
+// load is singular). Samples: μ = 1, then 1 + kFirstStep, then steps toward the root of ω²(μ)
+// extrapolated through the three samples nearest it (ExtrapolateRoot), each kApproach of the way,
+// until the estimate repeats to kAboutTolerance. ω² is of the mode whose kinetic energy is mostly
+// lateral (SplitKineticEnergy), with the bodies' turns about their own axes held (the string's twist,
+// held only by the rotary table, is no buckling mode). Each equilibrium is warm-started from the
+// nearest one (the string stays in the same state of contact up to the onset).
+double ExtrapolateRoot(std::vector<std::pair<double, double>> points, double estimate);
 
-// dK_T/dλ at the equilibrium q of λ, contacts as they are (above); `tangent` = K_T(q, λ).
-SparseMat PathStiffnessChange(const model::SystemModel& model, const VecX& q, double load_factor,
-                              const SparseMat& tangent) {
-  const VecX zero = VecX::Zero(model.num_velocities());
-  const double epsilon = kPathDifference * load_factor;
-  const model::LoadParameters here{load_factor, 0.0}, ahead{load_factor + epsilon, 0.0};
-  const VecX load_rate = (model.Residual(0.0, q, zero, zero, ahead) - model.Residual(0.0, q, zero, zero, here)) / epsilon;
-  solvers::SparseLinearSolver solver;
-  solver.Factorize(tangent, solvers::MatrixSymmetry::kSymmetric);
-  VecX path = -solver.Solve(load_rate);
-  // The torque on bit twists the string by radians per unit load: its bodies turn about their axes
-  // along the path, and their body-frame coordinates with them, which a stiffness of 1e13 N/m turns
-  // into changes of 1e14 that are no stiffness at all. The twist is left out of the path: K_G is the
-  // rate of the lateral and axial stiffness under the growing weight and WOB (the lateral buckling
-  // an engineer asks about), the torque's own (Greenhill) softening not in it.
-  for (const model::Body& body : model.bodies()) path[body.v_offset + 3] = 0.0;
-  const VecX moved = model.IncrementKeepingShape(q, epsilon * path);
-  SparseMat stiffness = Linearize(model, moved, ahead).stiffness;
-  // A contact at its onset that the small move closes or opens would put its whole k_n a aᵀ / ε into
-  // the difference: each is restored to the state it has at q (the contacts as they are).
-  const std::vector<solvers::PenaltyTerm> before = model.PenaltyTerms(q, here);
-  const std::vector<solvers::PenaltyTerm> after = model.PenaltyTerms(moved, ahead);
-  for (std::size_t c = 0; c < before.size() && c < after.size(); ++c) {
-    const bool touching = before[c].value > 0.0, touches = after[c].value > 0.0;
-    if (touching == touches) continue;
-    const solvers::PenaltyTerm& term = after[c];
-    const double sign = touching ? 1.0 : -1.0;
-    for (std::size_t i = 0; i < term.indices.size(); ++i) {
-      for (std::size_t j = 0; j < term.indices.size(); ++j) {
-        stiffness.coeffRef(term.indices[i], term.indices[j]) += sign * term.stiffness * term.gradient[i] * term.gradient[j];
-      }
-    }
+constexpr double kFirstStep = 0.05;
+constexpr double kApproach = 0.7;
+constexpr double kAboutTolerance = 1e-3;
+constexpr int kAboutSamples = 14;
+
+struct LateralSample {
+  double multiplier = 0.0;
+  double eigenvalue = 0.0;   // ω², rad²/s²
+  double compression = 0.0;  // N
+  VecX q, mode;
+};
+
+// The lowest mostly-lateral mode about the equilibrium at μ; false if no equilibrium is found.
+bool SampleLateralMode(EquilibriumSolver& solver, double multiplier, LateralSample& sample) {
+  const Equilibrium equilibrium = solver.At(multiplier);
+  if (!equilibrium.converged) return false;
+  const model::SystemModel& model = solver.ModelAt(multiplier);
+  LinearizedSystem system = Linearize(model, equilibrium.q, solver.LoadsAt(multiplier));
+  const double stiff = system.stiffness.diagonal().cwiseAbs().maxCoeff();
+  for (const model::Body& body : model.bodies()) system.stiffness.coeffRef(body.v_offset + 3, body.v_offset + 3) += stiff;
+  solvers::ModalResult modal;
+  try {
+    modal = LowestModes(system, 6);
+  } catch (const SolverError&) {
+    return false;
   }
-  const SparseMat change = (stiffness - tangent) / epsilon;
-  return (0.5 * (change + SparseMat(change.transpose()))).pruned();
+  const auto poses = model.Poses(equilibrium.q);
+  for (Eigen::Index i = 0; i < modal.eigenvalues.size(); ++i) {
+    const EnergySplit split = SplitKineticEnergy(model, poses, modal.vectors.col(i));
+    const double total = split.axial + split.torsional + split.lateral;
+    if (total <= 0.0 || split.lateral < 0.5 * total) continue;
+    sample.multiplier = multiplier;
+    sample.eigenvalue = modal.eigenvalues[i];
+    sample.compression = MaxCompression(model, equilibrium.q, solver.LoadsAt(multiplier).load_factor);
+    sample.q = equilibrium.q;
+    sample.mode = modal.vectors.col(i);
+    return true;
+  }
+  return false;
 }
 
-void SolveEigenproblemInWell(EquilibriumSolver& solver, const BucklingSettings& settings, BucklingResult& result) {
-  const model::SystemModel& model = solver.model();
-  const int count = std::max(settings.modes, 1);
-  double reference = 1.0;
-  Equilibrium at = solver.At(reference);
-  if (!at.converged) throw SolverError("buckling: no static equilibrium found at the case's loads");
-  result.reference_compression = MaxCompression(model, at.q, 1.0);
-  double estimate = std::nan("");
-  solvers::BucklingResult buckling;
-  VecX mode_state = at.q;
-  for (int iteration = 0; iteration < kInWellIterations; ++iteration) {
-    // The string at rest: no rotating friction in its tangent.
-    const SparseMat tangent = Linearize(model, at.q, {reference, 0.0}).stiffness;
-    const SparseMat change = PathStiffnessChange(model, at.q, reference, tangent);
-    // Lateral buckling: the bodies' turns about their own axes (the string's twist, held only by the
-    // rotary table: 1e3 N·m/rad over hundreds of metres) are held, so that the twist, whose rate the
-    // path leaves out, does not pass for a buckling mode.
-    SparseMat held = tangent;
-    const double stiff = tangent.diagonal().cwiseAbs().maxCoeff();
-    SparseMat lateral = change;
-    for (const model::Body& body : model.bodies()) {
-      const int twist = body.v_offset + 3;
-      held.coeffRef(twist, twist) += stiff;
-      for (SparseMat::InnerIterator it(lateral, twist); it; ++it) it.valueRef() = 0.0;
+void SolveAboutEquilibrium(EquilibriumSolver& solver, BucklingResult& result) {
+  std::vector<LateralSample> samples;
+  auto take = [&](double multiplier) {
+    LateralSample sample;
+    if (!SampleLateralMode(solver, multiplier, sample)) return false;
+    samples.push_back(std::move(sample));
+    FrequencyLoadPoint point;
+    point.load_factor = multiplier;
+    point.compression = samples.back().compression;
+    point.frequency_hz = std::sqrt(std::max(samples.back().eigenvalue, 0.0)) / (2.0 * kPi);
+    result.frequency_table.push_back(point);
+    return true;
+  };
+  if (!take(1.0)) throw SolverError("buckling: no stable equilibrium (or no lateral mode about it) at the case's loads");
+  if (samples.front().eigenvalue <= 0.0) {
+    throw SolverError("buckling: the string is already unstable at the case's loads (its lowest lateral natural "
+                      "frequency is not positive)");
+  }
+  result.reference_compression = samples.front().compression;
+  result.unloaded_frequency_hz = result.frequency_table.front().frequency_hz;
+  if (!take(1.0 + kFirstStep)) throw SolverError("buckling: no equilibrium just above the case's loads");
+  auto points = [&] {
+    std::vector<std::pair<double, double>> xy;
+    for (const LateralSample& sample : samples) xy.emplace_back(sample.multiplier, sample.eigenvalue);
+    return xy;
+  };
+  double below = samples.back().multiplier;  // the largest multiplier sampled with ω² > 0
+  double above = std::numeric_limits<double>::infinity();  // the smallest one past the onset
+  double estimate = ExtrapolateRoot(points(), below);
+  if (!(estimate > below) || !std::isfinite(estimate)) {
+    throw SolverError(fmt::format("buckling: the string's lowest lateral frequency does not fall as the {} grows from "
+                                  "the case's loads ({:.6g} Hz at × 1, {:.6g} Hz at × {}): it is buckled already, or the "
+                                  "loads stiffen it",
+                                  solver.scale_wob() ? "WOB" : "load", result.frequency_table[0].frequency_hz,
+                                  result.frequency_table[1].frequency_hz, 1.0 + kFirstStep));
+  }
+  for (int taken = 2; taken < kAboutSamples; ++taken) {
+    const double target = std::min(below + kApproach * (estimate - below), 0.5 * (below + above));
+    const double last_eigenvalue = samples.back().eigenvalue;
+    if (!take(target) || samples.back().eigenvalue <= 0.0 || samples.back().eigenvalue > last_eigenvalue) {
+      // Past the onset (no equilibrium, or one that lies buckled and stiffer): the root is below it.
+      if (samples.back().multiplier == target) samples.pop_back();
+      above = target;
+      continue;
     }
-    lateral = SparseMat(lateral.transpose());
-    for (const model::Body& body : model.bodies()) {
-      for (SparseMat::InnerIterator it(lateral, body.v_offset + 3); it; ++it) it.valueRef() = 0.0;
+    below = target;
+    const double next = ExtrapolateRoot(points(), estimate);
+    const bool settled = std::abs(next - estimate) <= kAboutTolerance * estimate && next - below < 0.05 * next;
+    if (std::isfinite(next) && next > below) estimate = std::min(next, above);
+    if (settled) {
+      result.frequency_method_converged = true;
+      break;
     }
-    solvers::BucklingResult trial = solvers::SolveBuckling(held, lateral.pruned(), count);
-    if (trial.multipliers.size() == 0) break;  // the loads stiffen the string from here on
-    const double next = reference + trial.multipliers[0];
-    buckling = std::move(trial);
-    mode_state = at.q;
-    result.reference_load_factor = reference;
-    const bool settled = std::isfinite(estimate) && std::abs(next - estimate) <= kInWellTolerance * next;
-    estimate = next;
-    if (settled) break;
-    // Halfway to the estimate, from the equilibrium there (still below it: a stable one).
-    const double closer = reference + 0.5 * (next - reference);
-    const Equilibrium there = solver.At(closer);
-    if (!there.converged) break;
-    reference = closer;
-    at = there;
   }
-  if (!std::isfinite(estimate)) {
-    throw SolverError("buckling: the case's loads do not buckle the string in its hole (no positive load multiplier "
-                      "from its equilibrium: the loads stiffen it)");
-  }
-  result.load_factors.clear();
-  for (Eigen::Index i = 0; i < buckling.multipliers.size(); ++i) {
-    result.load_factors.push_back(result.reference_load_factor + buckling.multipliers[i]);
-  }
+  const LateralSample& nearest = samples.back();
   result.load_factor = estimate;
-  result.critical_load = result.load_factor * result.reference_compression;
-  FillBuckledMode(model, mode_state, buckling.modes.col(0), result);
+  result.load_factors = {estimate};
+  result.reference_load_factor = nearest.multiplier;
+  result.frequency_load_factor = estimate;
+  // The compression at the onset, extrapolated along the last two samples (prebuckling is linear).
+  const LateralSample& previous = samples[samples.size() - 2];
+  const double slope = (nearest.compression - previous.compression) / (nearest.multiplier - previous.multiplier);
+  result.critical_load = nearest.compression + slope * (estimate - nearest.multiplier);
+  result.frequency_critical_load = result.critical_load;
+  FillBuckledMode(solver.ModelAt(nearest.multiplier), nearest.q, nearest.mode, result);
+  std::sort(result.frequency_table.begin(), result.frequency_table.end(),
+            [](const auto& a, const auto& b) { return a.load_factor < b.load_factor; });
 }
 
 // Dawson–Paslay's and Chen's loads along the case's equilibrium q (λ = 1) in a well (header).
 SinusoidalBucklingScreen ScreenSinusoidalBuckling(const model::ModelInput& input, const model::BuiltModel& built,
-                                                  const VecX& q) {
+                                                  const VecX& q, bool scale_wob) {
   const model::SystemModel& model = built.system;
   std::vector<StaticNodeResult> nodes = StaticNodeResults(model, q, 1.0);
   AddWallOffsets(built, q, nodes);
@@ -300,7 +345,9 @@ SinusoidalBucklingScreen ScreenSinusoidalBuckling(const model::ModelInput& input
     const double inclination = input.trajectory->Inclination(node.md);
     const double clearance = std::max(node.hole_offset + node.clearance, 1e-6);  // r, m
     const double sinusoidal = 2.0 * std::sqrt(body.bending_rigidity * weight * std::sin(inclination) / clearance);
-    const double factor = (sinusoidal / compression) * (sinusoidal / compression);
+    // Every load × λ: F ∝ λ, F_sin ∝ √λ. The WOB × μ: F grows by (μ − 1) WOB, F_sin stays.
+    const double factor = scale_wob ? 1.0 + (sinusoidal - compression) / input.operation.weight_on_bit
+                                    : (sinusoidal / compression) * (sinusoidal / compression);
     screen.computed = true;
     // In a vertical hole F_sin = 0 (no weight holds the pipe to the wall): the ratio is left out.
     if (sinusoidal > 0.0) screen.largest_ratio = std::max(screen.largest_ratio, compression / sinusoidal);
@@ -406,17 +453,34 @@ void SolveByFrequencies(EquilibriumSolver& solver, const BucklingSettings& setti
 
 BucklingResult RunBuckling(const model::ModelInput& input, const model::BuiltModel& built,
                            const BucklingSettings& settings, const StaticSettings& static_settings) {
-  EquilibriumSolver solver(input, built, static_settings);
+  const double wob = input.operation.weight_on_bit;
+  const bool has_wob = wob != 0.0 && !(input.bit_rock && input.bit_rock->law == model::BitRockLaw::Detournay);
+  bool scale_wob = false;
+  switch (settings.scale) {
+    case BucklingScale::Automatic: scale_wob = has_wob; break;
+    case BucklingScale::Wob:
+      if (!has_wob) throw LogicError("buckling: scale wob without a weight on bit (the case reader checks it)");
+      scale_wob = true;
+      break;
+    case BucklingScale::AllLoads: break;
+  }
+  EquilibriumSolver solver(input, built, static_settings, scale_wob);
   BucklingResult result;
-  if (solver.in_well()) {
-    SolveEigenproblemInWell(solver, settings, result);
-    result.sinusoidal = ScreenSinusoidalBuckling(input, built, solver.At(1.0).q);
+  result.scaled_wob = scale_wob;
+  // A torque twists the string by radians before it buckles (Greenhill's rod by 2.86 π EI/GJ ≈ 11.7 rad
+  // clamped): (a)'s K_T(q_ref) − K_0 then holds the turn of every body's lateral coordinates, not a
+  // geometric stiffness, so torque goes the way of (c) too.
+  bool torque = input.operation.torque_on_bit != 0.0 && !input.bit_rock;
+  for (const model::Load& load : input.loads) torque = torque || load.moment.x() != 0.0 || load.moment_per_length.x() != 0.0;
+  if (solver.in_well() || scale_wob || torque) {
+    result.about_equilibrium = true;
+    SolveAboutEquilibrium(solver, result);
+    if (solver.in_well()) result.sinusoidal = ScreenSinusoidalBuckling(input, built, solver.At(1.0).q, scale_wob);
   } else {
     SolveEigenproblem(solver, settings, result);
+    if (settings.frequency_method) SolveByFrequencies(solver, settings, result);
   }
-  // In a well the sweep from λ = 0 starts on the hole axis without contacts; the eigenproblem about the
-  // equilibrium is the answer there.
-  if (settings.frequency_method && !solver.in_well()) SolveByFrequencies(solver, settings, result);
+  if (has_wob) result.critical_wob = wob * result.load_factor;
   return result;
 }
 

@@ -17,8 +17,21 @@
 //      below the estimate of (a) (or to 1), the root of a quadratic through the last three, then
 //      samples at 0.9, 0.97 and 0.99 of the current root estimate, re-extrapolated each time;
 //      converged when the last two estimates agree to 1e-4.
+//  (c) about the case's equilibrium, for a string in a well and whenever the WOB alone is scaled:
+//      the multiplier at which the lowest lateral natural frequency of the string at rest about
+//      its equilibrium under the scaled loads reaches zero, the equilibria found from the case's
+//      own upward (buckling_analysis.cpp SolveAboutEquilibrium). Nothing but its contacts and the
+//      tension above may hold such a string laterally, so (a)'s unloaded K_0 is singular; the
+//      stiffness of the loaded static state is not. (An eigenproblem about the equilibrium with
+//      K_G = dK_T/dμ along the path, differenced, was tried and dropped: the stiff springs' lever
+//      arm terms made it say 1.03 on the bundled example and 1.26 on Lubinski's string, whose
+//      equilibria stay stable to 2.0 and 8.6: docs/validation.md.)
+// Which loads the multiplier μ scales (BucklingSettings::scale): the WOB alone when the case has
+// one (the engineer's question: what WOB buckles the string; the weight, fluid and the other loads
+// stay), every load otherwise. The critical WOB is reported either way (WOB × μ).
 // The critical load is reported as the largest axial compression in the string at λ = 1 times
-// the multiplier (prebuckling is linear).
+// the multiplier for (a) and (b) (prebuckling is linear); for (c) as the largest compression
+// extrapolated along the last two equilibria to μ.
 #pragma once
 
 #include <vector>
@@ -41,10 +54,11 @@ struct FrequencyLoadPoint {
 // buckling load F_sin = 2 √(EI w sin θ / r) (w the buoyed weight per length, θ the inclination, r
 // the radial clearance of the contact circle) and Chen, Lin & Cheatham's (1990) helical load
 // F_hel = 2√2 F_sin. With every load scaled by λ, F grows as λ and F_sin as √λ, so the string
-// reaches F_sin first at λ = min (F_sin / F)² over the stations.
+// reaches F_sin first at λ = min (F_sin / F)² over the stations; with the WOB alone scaled by μ,
+// F grows by (μ − 1) WOB (a dead load, frictionless at rest) and F_sin stays: μ = min 1 + (F_sin − F)/WOB.
 struct SinusoidalBucklingScreen {
   bool computed = false;          // a string in a well with some station in compression
-  double load_factor = 0.0;       // λ at which the first station reaches F_sin (0: already beyond it)
+  double load_factor = 0.0;       // the multiplier at which the first station reaches F_sin (< 1: beyond it)
   double s = 0.0, md = 0.0;       // that station, m
   double compression = 0.0;       // its compression at λ = 1, N
   double sinusoidal_load = 0.0;   // its F_sin at λ = 1, N
@@ -53,6 +67,9 @@ struct SinusoidalBucklingScreen {
 };
 
 struct BucklingResult {
+  bool scaled_wob = false;        // the multiplier scales the WOB alone (else every load)
+  bool about_equilibrium = false; // found by (c) below, not by (a) and (b)
+  double critical_wob = 0.0;      // the WOB at buckling, N: WOB × μ (0 without a WOB)
   // (a) the eigenproblem
   double load_factor = 0.0;       // μ_cr: the case's loads × μ_cr buckle the string
   double critical_load = 0.0;     // compression at λ = 1 × μ_cr, N

@@ -247,14 +247,20 @@ void PrintVibration(const io::Case& c, const analyses::VibrationResult& result) 
 }
 
 void PrintBuckling(const io::Case& c, const analyses::BucklingResult& result) {
-  std::cout << fmt::format("buckling: load multiplier {:.6g}, critical compression {} (eigenproblem)\n",
-                           result.load_factor, Show(c, result.critical_load, Quantity::Force, 6));
+  const std::string scaled = result.scaled_wob ? "the WOB" : "every load";
+  const std::string how = result.about_equilibrium ? "the lowest lateral frequency about the equilibrium reaches 0"
+                                                   : "eigenproblem";
+  std::cout << fmt::format("buckling: {} × {:.6g} buckles the string, largest compression {} ({})\n", scaled,
+                           result.load_factor, Show(c, result.critical_load, Quantity::Force, 6), how);
+  if (result.critical_wob > 0.0) {
+    std::cout << fmt::format("  critical WOB {}\n", Show(c, result.critical_wob, Quantity::Force, 6));
+  }
   if (result.sinusoidal.computed) {
     const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;
     const std::string where = fmt::format("MD {}", Show(c, screen.md, Quantity::Length));
     if (screen.sinusoidal_load == 0.0) {
       std::cout << fmt::format("  Dawson-Paslay: at {} the hole is vertical and the string compressed ({}): no weight "
-                               "holds it to the wall, so it lies buckled there (Lubinski)\n",
+                               "holds it to the wall (Lubinski's case)\n",
                                where, Show(c, screen.compression, Quantity::Force));
     } else if (screen.load_factor < 1.0) {
       std::cout << fmt::format("  Dawson-Paslay: the compression {} at {} is {:.3g} times the sinusoidal buckling load "
@@ -262,20 +268,17 @@ void PrintBuckling(const io::Case& c, const analyses::BucklingResult& result) {
                                Show(c, screen.compression, Quantity::Force), where, screen.compression / screen.sinusoidal_load,
                                Show(c, screen.sinusoidal_load, Quantity::Force), Show(c, screen.helical_load, Quantity::Force));
     } else {
-      std::cout << fmt::format("  Dawson-Paslay: sinusoidal buckling first at {:.4g} times the loads, at {} (compression "
+      std::cout << fmt::format("  Dawson-Paslay: sinusoidal buckling first at {} × {:.4g}, at {} (compression "
                                "{} against {} now)\n",
-                               screen.load_factor, where, Show(c, screen.compression, Quantity::Force),
+                               scaled, screen.load_factor, where, Show(c, screen.compression, Quantity::Force),
                                Show(c, screen.sinusoidal_load, Quantity::Force));
     }
-    std::cout << "  (in a well the eigenproblem's multiplier is not validated: on the bundled example it says 1.03 where "
-                 "the equilibrium path buckles between 2.0 and 2.6, as Dawson-Paslay's 2.60 says; rely on the "
-                 "Dawson-Paslay check: docs/validation.md)\n";
   }
-  if (result.frequency_method_converged) {
+  if (!result.about_equilibrium && result.frequency_method_converged) {
     std::cout << fmt::format("  from the lowest frequency against load: multiplier {:.6g}, compression {}\n",
                              result.frequency_load_factor, Show(c, result.frequency_critical_load, Quantity::Force, 6));
-  } else {
-    std::cout << "  the frequency-against-load extrapolation did not converge\n";
+  } else if (!result.frequency_method_converged) {
+    std::cout << "  warning: the frequency extrapolation did not settle (samples in buckling.csv)\n";
   }
 }
 

@@ -349,6 +349,16 @@ ReducedBody Reduce(const fe::BodyFeModel& model, const ReductionOptions& options
   body.modal_geometric_stiffness = u.transpose() * (model.geometric_stiffness * u);
   body.modal_geometric_stiffness =
       0.5 * (body.modal_geometric_stiffness + body.modal_geometric_stiffness.transpose()).eval();
+  body.modal_torque_geometric_stiffness = u.transpose() * (model.torque_geometric_stiffness * u);
+  body.modal_torque_geometric_stiffness =
+      0.5 * (body.modal_torque_geometric_stiffness + body.modal_torque_geometric_stiffness.transpose()).eval();
+  const int elements = model.node_count() - 1;
+  body.element_modal_geometric_stiffness.reserve(elements);
+  for (int e = 0; e < elements; ++e) {
+    const auto rows = u.middleRows(fe::kDofPerNode * e, 2 * fe::kDofPerNode);
+    const MatX modal = rows.transpose() * model.element_geometric_stiffness * rows;
+    body.element_modal_geometric_stiffness.push_back(0.5 * (modal + modal.transpose()));
+  }
   // The turn about x (ReducedBody::twist_generator): S and E_⊥ act on each node's (u, v, w) and
   // (θx, θy, θz) alike.
   MatX turned = MatX::Zero(u.rows(), u.cols()), across = MatX::Zero(u.rows(), u.cols());

@@ -51,6 +51,10 @@ struct ReducedBody {
   MatX modal_damping;              // D_ff = diag(2 ζ_s ω_j)
   MatX modal_mass;                 // M_ff = Uᵀ M U with the reduction's own M (identity)
   MatX modal_geometric_stiffness;  // K_G,ff = Uᵀ K_G U per unit axial force (tension +), 1/m
+  MatX modal_torque_geometric_stiffness;  // K_T,ff = Uᵀ K_T U per unit torque (fe/beam_element.hpp)
+  // U_eᵀ K_G,e U_e of each element e (U_e the rows of its two nodes): Σ_e = K_G,ff. An axial force
+  // that varies along the body weights them one by one (model/nodal_loads.hpp).
+  std::vector<MatX> element_modal_geometric_stiffness;
   // The body's shape turned about its x axis, in modal coordinates: a nodal field turned by φ,
   // R_x(φ) = E_x + cos φ E_⊥ + sin φ S (S u = e_x × u on each node's translation and rotation, E_⊥
   // the projection across x), is η ↦ G(φ) η = η − (1 − cos φ) P_⊥ η + sin φ J η, with

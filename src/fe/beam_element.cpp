@@ -1,6 +1,7 @@
 #include "fe/beam_element.hpp"
 
 #include <array>
+#include <cmath>
 
 namespace drillflex::fe {
 namespace {
@@ -149,6 +150,58 @@ Mat12 ElementGeometricStiffness(const BeamElementProperties& p, BeamTheory theor
   Mat12 kg = Mat12::Zero();
   AddBendingBlock(s / L * AntisymmetricPattern(a, b, d, e), kg);
   return kg;
+}
+
+namespace {
+
+// The shear-dependent lateral interpolation of the x-y plane (Friedman & Kosmatka 1993), DOFs
+// (v1, θz1, v2, θz2): first and second derivatives in x at ξ = x/L.
+struct LateralShapeDerivatives {
+  Eigen::Vector4d first, second;
+};
+LateralShapeDerivatives LateralShapes(double xi, double L, double phi) {
+  const double c = 1.0 / (1.0 + phi);
+  LateralShapeDerivatives d;
+  // N1 = c(2ξ³ − 3ξ² − Φξ + 1 + Φ), N2 = cL(ξ³ − (2 + Φ/2)ξ² + (1 + Φ/2)ξ),
+  // N3 = c(−2ξ³ + 3ξ² + Φξ),        N4 = cL(ξ³ − (1 − Φ/2)ξ² − (Φ/2)ξ); d/dx = (1/L) d/dξ.
+  d.first << c * (6.0 * xi * xi - 6.0 * xi - phi) / L,               //
+      c * (3.0 * xi * xi - 2.0 * (2.0 + 0.5 * phi) * xi + 1.0 + 0.5 * phi),  //
+      c * (-6.0 * xi * xi + 6.0 * xi + phi) / L,                      //
+      c * (3.0 * xi * xi - 2.0 * (1.0 - 0.5 * phi) * xi - 0.5 * phi);
+  d.second << c * (12.0 * xi - 6.0) / (L * L),             //
+      c * (6.0 * xi - 2.0 * (2.0 + 0.5 * phi)) / L,             //
+      c * (-12.0 * xi + 6.0) / (L * L),                         //
+      c * (6.0 * xi - 2.0 * (1.0 - 0.5 * phi)) / L;
+  return d;
+}
+
+}  // namespace
+
+Mat12 ElementTorqueGeometricStiffness(const BeamElementProperties& p, BeamTheory theory) {
+  const double L = p.length;
+  const double phi = ShearParameter(p, theory);
+  // v = N·(v1, θz1, v2, θz2), w = N·(w1, −θy1, w2, −θy2) (θy = −w′): the x-z plane's DOFs enter
+  // with the rotation signs flipped.
+  const Eigen::Vector4d sign(1.0, -1.0, 1.0, -1.0);
+  // C_ab = ∫ (N_a′ N_b″ − N_b′ N_a″) dx, antisymmetric; Q = Σ v_a w_b C_ab.
+  Mat4 coupling = Mat4::Zero();
+  const double root = std::sqrt(0.6);
+  const std::array<double, 3> points = {0.5 * (1.0 - root), 0.5, 0.5 * (1.0 + root)};
+  const std::array<double, 3> weights = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+  for (int g = 0; g < 3; ++g) {
+    const LateralShapeDerivatives d = LateralShapes(points[g], L, phi);
+    coupling += weights[g] * L * (d.first * d.second.transpose() - d.second * d.first.transpose());
+  }
+  // dᵀ K d = −Q: the symmetric matrix puts −½ C_ab (with the x-z signs) on (v_a, w_b) and (w_b, v_a).
+  Mat12 k = Mat12::Zero();
+  for (int a = 0; a < 4; ++a) {
+    for (int b = 0; b < 4; ++b) {
+      const double value = -0.5 * sign(b) * coupling(a, b);
+      k(kPlaneXy[a], kPlaneXz[b]) += value;
+      k(kPlaneXz[b], kPlaneXy[a]) += value;
+    }
+  }
+  return k;
 }
 
 }  // namespace drillflex::fe

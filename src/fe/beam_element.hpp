@@ -68,4 +68,14 @@ Mat12 ElementLumpedMass(const BeamElementProperties& properties, LumpedRotaryIne
 // torsional (Wagner) terms are left out: they only shift axial/torsional frequencies by O(N/EA).
 Mat12 ElementGeometricStiffness(const BeamElementProperties& properties, BeamTheory theory);
 
+// Geometric stiffness per unit torque T (the moment about x the part beyond x exerts, the internal
+// torque's sign): dᵀ K_T d = −∫ (v′w″ − w′v″) dx over the lateral interpolation (both planes; the
+// same shear-dependent v, w fields as ElementGeometricStiffness, by 3-point Gauss quadrature, exact
+// for these cubics). Why: a bent rod's material twist is κ_x = θx′ − ½ (θ × θ′)_x (Simo 1985, the
+// curvature of a rotation field to second order; θz = v′, θy = −w′), so the torsional energy
+// ½ GJ ∫ κ_x² holds the coupling T · (−½ ∫ (v′w″ − w′v″)) = ½ T dᵀ K_T d, which turns a straight
+// rod under torque into a helix (Greenhill: pinned ends buckle at N = −(π²EI/L² − T²/(4EI))).
+// Zero on the axial and torsional DOFs; symmetric, with zero diagonal blocks per plane.
+Mat12 ElementTorqueGeometricStiffness(const BeamElementProperties& properties, BeamTheory theory);
+
 }  // namespace drillflex::fe

@@ -71,7 +71,9 @@ BodyFeModel BuildBodyFeModel(const BodySpec& spec) {
       options.mass == MassKind::kConsistent ? ElementConsistentMass(element, options.beam) : lumped;
   model.stiffness = Assemble(ElementStiffness(element, options.beam), n);
   model.mass = Assemble(mass, n);
-  model.geometric_stiffness = Assemble(ElementGeometricStiffness(element, options.beam), n);
+  model.element_geometric_stiffness = ElementGeometricStiffness(element, options.beam);
+  model.geometric_stiffness = Assemble(model.element_geometric_stiffness, n);
+  model.torque_geometric_stiffness = Assemble(ElementTorqueGeometricStiffness(element, options.beam), n);
 
   // Lumped nodal data: the sum of the element lumped diagonals meeting at each node.
   const double structural_half = element.density * element.area * 0.5 * element.length;

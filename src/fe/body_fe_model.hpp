@@ -47,6 +47,10 @@ struct BodyFeModel {
   SparseMat stiffness;            // K, N × N, N = 6 (n + 1)
   SparseMat mass;                 // M (consistent or lumped per spec.options.mass)
   SparseMat geometric_stiffness;  // K_G per unit axial force (tension positive), 1/m
+  SparseMat torque_geometric_stiffness;  // K_T per unit torque (fe::ElementTorqueGeometricStiffness), 1/(N·m)
+  // The one element's K_G per unit axial force (every element is the same): the body's axial force
+  // varying from element to element (model/nodal_loads.hpp) weights it element by element.
+  Mat12 element_geometric_stiffness = Mat12::Zero();
   // The lumped representation, whatever spec.options.mass is (the floating-frame node sum):
   std::vector<double> node_mass;          // structural mass ρ A L_k (isotropic), kg
   std::vector<double> node_lateral_mass;  // fluid mass moving laterally only (y, z), kg

@@ -212,10 +212,24 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::
   if (const auto item = node.PresentChild("vibration")) config.vibration = ReadVibration(*item);
   if (const auto item = node.PresentChild("buckling")) {
     item->ExpectMap("the buckling settings");
-    item->AllowOnlyKeys({"modes"});
+    item->AllowOnlyKeys({"modes", "scale"});
     config.buckling = analyses::BucklingSettings{};
     config.buckling->modes = item->IntegerOr("modes", 1);
     if (config.buckling->modes < 1) item->Child("modes").Fail("expected at least 1 buckling mode");
+    // Which loads the multiplier scales: the WOB alone, or every load (default: the WOB if there is one).
+    if (const auto scale = item->OptionalChild("scale")) {
+      const std::string name = scale->AsString();
+      if (name == "wob") {
+        if (operation.weight_on_bit == 0.0 && !operation.hook_load) {
+          scale->Fail("`wob` scales the weight on bit, and the case has none (operation.wob or operation.hook_load)");
+        }
+        config.buckling->scale = analyses::BucklingScale::Wob;
+      } else if (name == "all") {
+        config.buckling->scale = analyses::BucklingScale::AllLoads;
+      } else {
+        scale->Fail(fmt::format("expected wob or all, got '{}'", name));
+      }
+    }
   }
   if (const auto item = node.PresentChild("transient")) config.transient = ReadTransient(*item, operation);
   return config;

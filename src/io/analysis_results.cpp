@@ -266,6 +266,8 @@ void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, R
     mode_displacement.push_back(json::array({d.x(), d.y(), d.z()}));
   }
   files.json()["buckling"] = {
+      {"scaled", result.scaled_wob ? "wob" : "all"},
+      {"method", result.about_equilibrium ? "lateral frequency about the equilibrium" : "eigenproblem"},
       {"load_factor", result.load_factor},
       {"critical_load", out(result.critical_load, Quantity::Force)},
       {"load_factors", result.load_factors},
@@ -277,6 +279,7 @@ void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, R
         {"critical_load", out(result.frequency_critical_load, Quantity::Force)},
         {"unloaded_frequency_hz", result.unloaded_frequency_hz},
         {"table", points}}}};
+  if (result.critical_wob > 0.0) files.json()["buckling"]["critical_wob"] = out(result.critical_wob, Quantity::Force);
   if (result.sinusoidal.computed) {
     const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;
     files.json()["buckling"]["dawson_paslay"] = {

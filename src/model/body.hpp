@@ -36,6 +36,10 @@ struct Body {
   // The body's mean axial force is N = axial_force_rowᵀ η (tension positive): EA/L times the
   // elongation between the end nodes, u_x(L) − u_x(0), read from the translational mode rows.
   VecX axial_force_row;
+  // Likewise its torque T = torque_rowᵀ η (the linear part): GJ/L times the twist between the end
+  // nodes, θx(L) − θx(0), read from the rotational mode rows (model/body_dynamics.hpp adds the
+  // twist of bending).
+  VecX torque_row;
   // ReferenceMassMatrix − NodalReferenceMassMatrix (cms/reduced_body.hpp): the constant
   // correction that makes the node-sum mass exact for a consistent FE mass at η = 0.
   MatX mass_correction;

@@ -1,5 +1,7 @@
 #include "model/body_dynamics.hpp"
 
+#include <array>
+
 #include "core/so3.hpp"
 #include "model/body_inertia_jacobian.hpp"
 
@@ -77,29 +79,57 @@ VecX BodyVelocityForces(const Body& body, const BodyPose& pose, const VecX& velo
 }
 
 namespace {
-// EA/L of a body, N/m.
-double AxialStiffness(const Body& body) { return body.axial_rigidity / body.length(); }
+
+// The body's two membrane strains, each the linear end-node part plus a quadratic part of the
+// bending (method.md §3; fe/beam_element.hpp):
+//   axial:   ε L = Δu + ½ ηᵀ K_G,ff η      (the foreshortening, ½ ∫ (v′² + w′²)),   force N = (EA/L) ε L;
+//   torsion: φ   = Δθx + ½ ηᵀ K_T,ff η     (the twist of bending, −½ ∫ (v′w″ − w′v″)), torque T = (GJ/L) φ.
+// Each stores energy (k/2) s², s = rowᵀη/k + ½ ηᵀGη, of which the K_ff part holds (k/2)(rowᵀη/k)²:
+//   V_c = ½ (rowᵀη) ηᵀGη + (k/8) (ηᵀGη)²,   ∂V_c/∂η = F G η + ½ (ηᵀGη) row,  F = rowᵀη + (k/2) ηᵀGη,
+//   ∂²V_c/∂η² = F G + Gη rowᵀ + row (Gη)ᵀ + k Gη (Gη)ᵀ.
+struct MembraneStrain {
+  const VecX& row;   // rowᵀη: the linear force (N) or torque (N·m)
+  const MatX& geometric;  // G per unit force or torque
+  double stiffness;  // k = EA/L (N) or GJ/L (N·m)
+};
+
+std::array<MembraneStrain, 2> MembraneStrains(const Body& body) {
+  return {MembraneStrain{body.axial_force_row, body.reduced->modal_geometric_stiffness,
+                         body.axial_rigidity / body.length()},
+          MembraneStrain{body.torque_row, body.reduced->modal_torque_geometric_stiffness,
+                         body.torsional_rigidity / body.length()}};
+}
+
+// F = rowᵀη + (k/2) ηᵀGη of one strain (0 for a body built without it).
+double MembraneForce(const MembraneStrain& strain, const VecX& eta) {
+  if (strain.row.size() == 0 || strain.geometric.size() == 0) return 0.0;
+  return strain.row.dot(eta) + 0.5 * strain.stiffness * eta.dot(strain.geometric * eta);
+}
+
 }  // namespace
 
 double BodyAxialForce(const Body& body, const BodyPose& pose) {
   // N = EA ε with the mean axial strain including the foreshortening of the bending:
-  // ε L = Δu + ½ ∫(v′² + w′²) dx = Δu + ½ ηᵀ K_G,ff η (K_G per unit axial force).
-  const VecX& eta = pose.eta;
-  return body.axial_force_row.dot(eta) +
-         0.5 * AxialStiffness(body) * eta.dot(body.reduced->modal_geometric_stiffness * eta);
+  // ε L = Δu + ½ ∫(v′² + w′²) = Δu + ½ ηᵀ K_G,ff η (K_G per unit axial force).
+  return MembraneForce(MembraneStrains(body)[0], pose.eta);
+}
+
+double BodyTorque(const Body& body, const BodyPose& pose) {
+  return MembraneForce(MembraneStrains(body)[1], pose.eta);
 }
 
 void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& velocity, VecX& residual) {
   const cms::ReducedBody& reduced = *body.reduced;
   const int nf = body.flexible_count;
   const VecX& eta = pose.eta;
-  const double axial_force = BodyAxialForce(body, pose);
-  const VecX geometric = reduced.modal_geometric_stiffness * eta;
-  // V = ½ηᵀK_ffη + ½(EA/L)[(Δu + ½ηᵀGη)² − Δu²] (the axial part of K_ff is ½(EA/L)Δu²), so
-  // ∂V/∂η = K_ff η + N G η + ½ (ηᵀ G η) ∂Δu-row, with N the corrected axial force above.
-  residual.tail(nf).noalias() += reduced.modal_stiffness * eta + axial_force * geometric +
-                                 0.5 * eta.dot(geometric) * body.axial_force_row +
-                                 reduced.modal_damping * velocity.tail(nf);
+  auto modal = residual.tail(nf);
+  modal.noalias() += reduced.modal_stiffness * eta + reduced.modal_damping * velocity.tail(nf);
+  for (const MembraneStrain& strain : MembraneStrains(body)) {
+    if (strain.row.size() == 0 || strain.geometric.size() == 0) continue;
+    const VecX geometric = strain.geometric * eta;
+    const double force = strain.row.dot(eta) + 0.5 * strain.stiffness * eta.dot(geometric);
+    modal.noalias() += force * geometric + 0.5 * eta.dot(geometric) * strain.row;
+  }
 }
 
 void AddElasticMatrices(const Body& body, const BodyPose& pose, double cK, double cD, MatX& matrix) {
@@ -107,13 +137,15 @@ void AddElasticMatrices(const Body& body, const BodyPose& pose, double cK, doubl
   const int nf = body.flexible_count;
   auto block = matrix.bottomRightCorner(nf, nf);
   if (cK != 0.0) {
-    const double axial_force = BodyAxialForce(body, pose);
-    const VecX geometric = reduced.modal_geometric_stiffness * pose.eta;
-    // ∂/∂η of the force above, with ∂N/∂η = row + (EA/L) G η.
-    block.noalias() += cK * (reduced.modal_stiffness + axial_force * reduced.modal_geometric_stiffness +
-                             geometric * body.axial_force_row.transpose() +
-                             AxialStiffness(body) * geometric * geometric.transpose() +
-                             body.axial_force_row * geometric.transpose());
+    block.noalias() += cK * reduced.modal_stiffness;
+    for (const MembraneStrain& strain : MembraneStrains(body)) {
+      if (strain.row.size() == 0 || strain.geometric.size() == 0) continue;
+      const VecX geometric = strain.geometric * pose.eta;
+      const double force = strain.row.dot(pose.eta) + 0.5 * strain.stiffness * pose.eta.dot(geometric);
+      block.noalias() += cK * (force * strain.geometric + geometric * strain.row.transpose() +
+                               strain.row * geometric.transpose() +
+                               strain.stiffness * geometric * geometric.transpose());
+    }
   }
   if (cD != 0.0) block.noalias() += cD * reduced.modal_damping;
 }
@@ -121,9 +153,13 @@ void AddElasticMatrices(const Body& body, const BodyPose& pose, double cK, doubl
 double BodyElasticEnergy(const Body& body, const BodyPose& pose) {
   const cms::ReducedBody& reduced = *body.reduced;
   const VecX& eta = pose.eta;
-  const double bending = eta.dot(reduced.modal_geometric_stiffness * eta);  // ηᵀGη = ∫(v′² + w′²)
-  return 0.5 * eta.dot(reduced.modal_stiffness * eta) + 0.5 * body.axial_force_row.dot(eta) * bending +
-         AxialStiffness(body) * bending * bending / 8.0;
+  double energy = 0.5 * eta.dot(reduced.modal_stiffness * eta);
+  for (const MembraneStrain& strain : MembraneStrains(body)) {
+    if (strain.row.size() == 0 || strain.geometric.size() == 0) continue;
+    const double bending = eta.dot(strain.geometric * eta);
+    energy += 0.5 * strain.row.dot(eta) * bending + strain.stiffness * bending * bending / 8.0;
+  }
+  return energy;
 }
 
 double BodyKineticEnergy(const Body& body, const BodyPose& pose, const VecX& velocity) {

@@ -22,10 +22,16 @@ VecX BodyVelocityForces(const Body& body, const BodyPose& pose, const VecX& velo
 // the elongation of the end nodes plus the foreshortening of the bending.
 double BodyAxialForce(const Body& body, const BodyPose& pose);
 
+// The body's torque T = torque_rowᵀ η + ½ (GJ/L) ηᵀ K_T,ff η, N·m: the twist of the end nodes plus
+// the twist of the bending (fe/beam_element.hpp ElementTorqueGeometricStiffness).
+double BodyTorque(const Body& body, const BodyPose& pose);
+
 // Elastic and modal damping forces on the modal rows, from the potential
-//   V = ½ ηᵀ K_ff η + ½ N_lin ηᵀ G η + (EA/8L) (ηᵀ G η)²,  G = K_G,ff, N_lin = rowᵀη,
-// the energy of the mean axial strain (Δu + ½ηᵀGη)/L (geometric stiffness of the body's own
-// axial force, with the foreshortening that keeps a free bent body free of axial force)
+//   V = ½ ηᵀ K_ff η + ½ N_lin ηᵀ G η + (EA/8L) (ηᵀ G η)² + ½ T_lin ηᵀ G_T η + (GJ/8L) (ηᵀ G_T η)²,
+// G = K_G,ff, N_lin = axial rowᵀη, G_T = K_T,ff, T_lin = torque rowᵀη: the energy of the mean
+// axial strain (Δu + ½ηᵀGη)/L (geometric stiffness of the body's own axial force, with the
+// foreshortening that keeps a free bent body free of axial force) and of the mean twist
+// (Δθx + ½ηᵀG_Tη)/L (the torque's geometric stiffness: Greenhill's buckling under torque)
 // plus D_ff η̇. Added into `residual` (size 6 + n_f).
 void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& velocity, VecX& residual);
 

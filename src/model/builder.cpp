@@ -64,6 +64,8 @@ Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::
   const int last = reduced->node_count() - 1;
   body.axial_force_row = (body.axial_rigidity / spec.length) *
                          (reduced->node_translation_modes[last].row(0) - reduced->node_translation_modes[0].row(0)).transpose();
+  body.torque_row = (body.torsional_rigidity / spec.length) *
+                    (reduced->node_rotation_modes[last].row(0) - reduced->node_rotation_modes[0].row(0)).transpose();
   body.mass_correction = mass_correction;
   body.reference_mass = cms::NodalReferenceMassMatrix(*reduced) + mass_correction;
   return body;

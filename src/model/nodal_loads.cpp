@@ -41,7 +41,67 @@ NodalLoadElement::NodalLoadElement(const Body* body, std::vector<Vec3> forces, s
     }
     for (int j = 0; j < 3; ++j) offset_load_modes_.middleRows<3>(3 * j) += force(j) * phi;
   }
+  // Ĝ_i = Σ_e (A_e − mean A) G_e with A_e = Σ_{k>e} F_k(i) (header).
+  const std::vector<MatX>& elements = reduced.element_modal_geometric_stiffness;
+  const int element_count = static_cast<int>(elements.size());
+  if (element_count == body->node_count() - 1 && element_count > 1) {
+    gradient_by_axis_.assign(3, MatX::Zero(nf, nf));
+    for (int i = 0; i < 3; ++i) {
+      std::vector<double> above(element_count, 0.0);
+      double sum = 0.0;
+      for (int e = element_count - 1; e >= 0; --e) {
+        sum += forces_[e + 1](i);
+        above[e] = sum;
+      }
+      double mean = 0.0;
+      for (double value : above) mean += value / element_count;
+      for (int e = 0; e < element_count; ++e) gradient_by_axis_[i] += (above[e] - mean) * elements[e];
+    }
+    bool any = false;
+    for (const MatX& g : gradient_by_axis_) any = any || !g.isZero(0.0);
+    if (!any) gradient_by_axis_.clear();
+  }
 }
+
+double NodalLoadElement::GradientEnergy(const BodyPose& pose, double load_factor) const {
+  if (gradient_by_axis_.empty()) return 0.0;
+  const Vec3 axis = pose.A.col(0);
+  double energy = 0.0;
+  for (int i = 0; i < 3; ++i) energy += axis(i) * pose.eta.dot(gradient_by_axis_[i] * pose.eta);
+  return 0.5 * load_factor * energy;
+}
+
+namespace {
+
+// The gradient's part of the residual and its stiffness (NodalLoadElement header), c = A e_x:
+//   η:  λ G_d η,   θ: ½ λ e_x × (Aᵀ g),  g_i = ηᵀ Ĝ_i η,  with δc = −A ẽ_x δθ, δ(Aᵀg) = skew(Aᵀg) δθ:
+//   ηη: λ G_d,  ηθ: −λ P A ẽ_x,  θη: λ ẽ_x Aᵀ Pᵀ,  θθ: ½ λ ẽ_x skew(Aᵀ g),  P = [Ĝ_0η Ĝ_1η Ĝ_2η].
+void AddAxialGradient(const std::vector<MatX>& by_axis, const BodyPose& pose, double lambda, bool with_matrices,
+                      ElementContribution& out) {
+  if (by_axis.empty()) return;
+  const int nf = static_cast<int>(pose.eta.size());
+  const Vec3 axis = pose.A.col(0);
+  MatX combined = MatX::Zero(nf, nf);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> products(nf, 3);
+  Vec3 squares;
+  for (int i = 0; i < 3; ++i) {
+    combined += axis(i) * by_axis[i];
+    products.col(i) = by_axis[i] * pose.eta;
+    squares(i) = pose.eta.dot(products.col(i));
+  }
+  const Mat3 skew_x = Skew(Vec3::UnitX());
+  const Vec3 body_squares = pose.A.transpose() * squares;
+  out.force.tail(nf).noalias() += lambda * (combined * pose.eta);
+  out.force.segment<3>(3) += 0.5 * lambda * Vec3::UnitX().cross(body_squares);
+  if (!with_matrices) return;
+  out.stiffness.bottomRightCorner(nf, nf) += lambda * combined;
+  const MatX eta_theta = -lambda * products * pose.A * skew_x;
+  out.stiffness.block(6, 3, nf, 3) += eta_theta;
+  out.stiffness.block(3, 6, 3, nf) += eta_theta.transpose();
+  out.stiffness.block<3, 3>(3, 3) += 0.5 * lambda * skew_x * Skew(body_squares);
+}
+
+}  // namespace
 
 std::string NodalLoadElement::Describe() const {
   return fmt::format("loads on the body at {:.4g} m from the bit", bodies()[0]->s_start);
@@ -71,6 +131,7 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
     out.force.head<3>() -= lambda * force_sum_;
     out.force.segment<3>(3) -= lambda * moment;
     out.force.tail(nf).noalias() -= lambda * (modal_by_rotation_ * a);
+    AddAxialGradient(gradient_by_axis_, pose, lambda, false, out);
     return;
   }
   thread_local VecX nodal;
@@ -104,6 +165,7 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
   // θη: only the force rows (F̂̃_k, the translations Φ_k); F̂̃ᵀ = −F̂̃.
   for (int k = 0; k < nodes; ++k) skews.middleRows<3>(6 * k + 3).setZero();
   out.stiffness.block(3, 6, 3, nf).noalias() -= lambda * skews.transpose().lazyProduct(reduced.mode_shapes);
+  AddAxialGradient(gradient_by_axis_, pose, lambda, true, out);
 }
 
 double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {
@@ -115,7 +177,7 @@ double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {
     const Vec3 rest = body.reference_position + reference * body.reduced->node_positions[k];
     energy -= state.load_factor * forces_[k].dot(pose.NodePosition(body, k) - rest);
   }
-  return energy;
+  return energy + GradientEnergy(pose, state.load_factor);
 }
 
 double NodalLoadElement::DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
@@ -126,7 +188,8 @@ double NodalLoadElement::DoPotentialEnergyChange(const ElementState& from, const
     const NodeMove move = NodeMoveBetween(body, *from.poses[0], *to.poses[0], k);
     change -= forces_[k].dot(move.translation) + moments_[k].dot(move.rotation);
   }
-  return to.load_factor * change;
+  return to.load_factor * change + GradientEnergy(*to.poses[0], to.load_factor) -
+         GradientEnergy(*from.poses[0], to.load_factor);
 }
 
 void AddUniformLineLoad(const Vec3& start, const Vec3& end, const Vec3& load_per_length, Vec3& force_start,

@@ -3,6 +3,18 @@
 // forces and moments) and point loads of a body are all gathered into one element per body.
 // Generalized force of a nodal force F and moment M (method.md §4, Q_e = Σ L_kᵀ (F_k, M_k)):
 //   [F;  u_k × AᵀF + AᵀM;  Φ_kᵀ AᵀF + Ψ_kᵀ AᵀM].
+//
+// The axial force's gradient inside the body. The body's own geometric stiffness carries its mean
+// axial force N̄ (model/body_dynamics.hpp); the axial components a_k = F_k · A e_x of the loads at
+// its interior nodes make the force vary from element to element, N_e = N̄ + d_e with
+// d_e = A_e − mean(A), A_e = Σ_{k>e} a_k (the loads above element e; elements are equal). Their
+// geometric stiffness is the work of those loads through the nodes' axial shortening by the
+// bending that the linear modes leave out: node k sits δ_k = −½∫₀^{x_k}(v′² + w′²) + (x_k/L)·½∫₀^L(…)
+// lower than they place it (the end nodes are where they are), and −Σ a_k δ_k = ½ Σ_e d_e ηᵀ G_e η,
+// G_e = U_eᵀ K_G,e U_e (cms::ReducedBody::element_modal_geometric_stiffness). So the element adds
+//   V_g = ½ λ ηᵀ G_d(A) η,   G_d(A) = Σ_i (A e_x)_i Ĝ_i,   Ĝ_i = Σ_e d_e(F(i)) G_e,
+// with its exact derivatives in η and in the frame's turn (a_k follows the body's axis). A column
+// under its own weight then buckles at Greenhill's w L³/EI = 7.837 with few bodies (validation V2).
 #pragma once
 
 #include <vector>
@@ -38,6 +50,9 @@ class NodalLoadElement : public ForceElement {
   Eigen::Matrix<double, Eigen::Dynamic, 9> modal_by_rotation_;  // G, n_f × 9
   Eigen::Matrix<double, 3, 9> moment_by_rotation_;       // H: column j + 3i = Σ_k F_k(j) x_k × e_i
   Eigen::Matrix<double, 9, Eigen::Dynamic> offset_load_modes_;  // P_0; P_1; P_2 stacked, 9 × n_f
+  // Ĝ_0, Ĝ_1, Ĝ_2 of the axial force's gradient (above), n_f × n_f each; empty without one.
+  std::vector<MatX> gradient_by_axis_;
+  double GradientEnergy(const BodyPose& pose, double load_factor) const;
 };
 
 // Work-equivalent nodal forces and moments of a uniform line load q (N/m, global) on a straight

@@ -172,7 +172,8 @@ namespace {
 // Dawson & Paslay's check beside the eigenproblem in a well: 300 ft of 4-3/4 in collars (no tool
 // joints) lying in a straight 8-1/2 in hole at 60°, dry, under 40 klbf WOB. The compression is
 // largest at the bit, F ≈ WOB, and F_sin = 2 √(EI w sin θ / r) by hand (w = ρ g A, r the radial
-// clearance), so the loads × (F_sin / WOB)² reach it first there.
+// clearance), so the WOB × F_sin / WOB (the default: the WOB scaled alone, F growing with it) or
+// every load × (F_sin / WOB)² (F ∝ λ, F_sin ∝ √λ) reach it first there.
 TEST(BucklingInWell, DawsonPaslayLoadFactorMatchesTheHandFormula) {
   model::ModelInput input;
   const double od = 4.75 * testing::kIn, id = 2.25 * testing::kIn;
@@ -187,8 +188,11 @@ TEST(BucklingInWell, DawsonPaslayLoadFactorMatchesTheHandFormula) {
   input.operation.weight_on_bit = wob;
   cms::ReductionCache cache;
   const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const BucklingResult result = RunBuckling(input, built, BucklingSettings{});
+  BucklingSettings every_load;
+  every_load.scale = BucklingScale::AllLoads;
+  const BucklingResult result = RunBuckling(input, built, every_load);
   ASSERT_TRUE(result.sinusoidal.computed);
+  EXPECT_FALSE(result.scaled_wob);
   const double area = kPi / 4.0 * (od * od - id * id);
   const double inertia = kPi / 64.0 * (std::pow(od, 4) - std::pow(id, 4));
   const double weight = 7850.0 * 9.81 * area;
@@ -199,6 +203,11 @@ TEST(BucklingInWell, DawsonPaslayLoadFactorMatchesTheHandFormula) {
   EXPECT_LT(result.sinusoidal.s, 1.0);  // at the bit
   const double expected = (sinusoidal / wob) * (sinusoidal / wob);
   EXPECT_NEAR(result.sinusoidal.load_factor, expected, 0.02 * expected);
+  const BucklingResult by_wob = RunBuckling(input, built, BucklingSettings{});
+  ASSERT_TRUE(by_wob.scaled_wob);
+  EXPECT_NEAR(by_wob.sinusoidal.load_factor, sinusoidal / wob, 0.02 * sinusoidal / wob);
+  std::printf("[ measure  ] 60° hole: critical WOB %.0f N by the lateral frequency (the top free), Dawson-Paslay %.0f N\n",
+              by_wob.critical_wob, sinusoidal);
 }
 
 }  // namespace

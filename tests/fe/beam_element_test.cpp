@@ -250,3 +250,41 @@ TEST(BeamElement, GeometricStiffnessIsTheStringEnergyOfARotation) {
 
 }  // namespace
 }  // namespace drillflex::fe
+
+namespace drillflex::fe {
+namespace {
+
+// The torque's geometric stiffness of an Euler–Bernoulli element (cubic interpolation, exact for
+// cubic fields): for v = x², w = x³ on [0, L], v′w″ − w′v″ = 12x² − 6x² = 6x², so dᵀ K_T d = −2L³;
+// no entries on the axial and torsional DOFs; symmetric.
+TEST(ElementTorqueGeometricStiffness, CubicFieldGivesTheExactIntegral) {
+  BeamElementProperties p;
+  p.length = 0.7;
+  p.area = 1e-3;
+  p.second_moment = 1e-6;
+  p.polar_moment = 2e-6;
+  p.youngs_modulus = 2e11;
+  p.shear_modulus = 8e10;
+  p.density = 7850.0;
+  const Mat12 k = ElementTorqueGeometricStiffness(p, BeamTheory::kEulerBernoulli);
+  const double L = p.length;
+  Eigen::Matrix<double, 12, 1> d = Eigen::Matrix<double, 12, 1>::Zero();
+  // Node 2: v = L², θz = v′ = 2L; w = L³, θy = −w′ = −3L² (node 1: all zero for these fields).
+  d(6 + 1) = L * L;
+  d(6 + 5) = 2.0 * L;
+  d(6 + 2) = L * L * L;
+  d(6 + 4) = -3.0 * L * L;
+  EXPECT_NEAR(d.dot(k * d), -2.0 * L * L * L, 1e-12);
+  EXPECT_LT((k - k.transpose()).norm(), 1e-14 * k.norm());
+  for (int dof : {0, 3, 6, 9}) EXPECT_EQ(k.row(dof).norm(), 0.0);
+  // A field in one plane only stores nothing (the form couples the two planes).
+  Eigen::Matrix<double, 12, 1> planar = Eigen::Matrix<double, 12, 1>::Zero();
+  planar(1) = 0.3;
+  planar(5) = -0.2;
+  planar(7) = 0.1;
+  planar(11) = 0.4;
+  EXPECT_NEAR(planar.dot(k * planar), 0.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace drillflex::fe
