@@ -89,6 +89,11 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
     const auto& block = static_cast<const model::BlockElement&>(*model.elements()[built.block_element]);
     sample.hook_load = block.HookLoad(model.StateOf(block, poses, v, time, 1.0));
   }
+  // With a bottom contact the WOB is what it carries (0 while the bit is off bottom).
+  if (built.bit_bottom_element >= 0) {
+    const auto& bottom = static_cast<const model::BitBottomElement&>(*model.elements()[built.bit_bottom_element]);
+    sample.weight_on_bit = bottom.ContactForce(model.StateOf(bottom, poses, v, time, 1.0));
+  }
   const model::Energies energies = model.ComputeEnergies(q, v, 1.0);
   sample.kinetic_energy = energies.kinetic;
   sample.potential_energy = energies.elastic + energies.potential;

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/bit_bottom_start.hpp"
 #include "analyses/bit_tendency.hpp"
 #include "analyses/buckling_analysis.hpp"
 #include "analyses/gyroscopic_modes.hpp"
@@ -433,8 +434,10 @@ int RunAnalyses(const CommandOptions& options, Requested requested, const char* 
     const VecX start_q = reuse_equilibrium
                              ? equilibrium
                              : analyses::TransientStartPositions(input, built, cache, settings, static_settings);
-    // The model in motion: with the drives, the friction following the motion (same coordinates).
-    const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache);
+    // The model in motion: with the drives, the friction following the motion (same coordinates),
+    // and a bottom contact where the bit rests at the start.
+    const model::BuiltModel moving = model::BuildSystemModel(
+        analyses::PlaceBottomAtStart(analyses::TransientModelInput(input, settings), built, start_q), cache);
     analyses::TransientResult result;
     {
       ProgressBar bar;

@@ -64,6 +64,13 @@ void Require(bool condition, const char* what) {
 
 void CheckBitRockParameters(const BitRockParameters& p) {
   Require(p.stick_speed > 0.0, "the stick speed must be positive");
+  if (p.bottom) {
+    Require(p.law != BitRockLaw::Detournay,
+            "a bottom contact does not go with Detournay's law (its WOB is already the rock's axial reaction)");
+    CheckBitBottomParameters(*p.bottom);
+  }
+  if (p.side_cutting) CheckBitSideCuttingParameters({*p.side_cutting, p.stick_speed});
+  if (p.law == BitRockLaw::None) return;
   if (p.law == BitRockLaw::Detournay) {
     Require(p.radius > 0.0, "the bit radius must be positive");
     Require(p.specific_energy > 0.0, "the intrinsic specific energy must be positive");
@@ -81,6 +88,7 @@ void CheckBitRockParameters(const BitRockParameters& p) {
 
 BitRockForces EvaluateBitRock(const BitRockParameters& parameters, double penetration_rate, double spin_rate) {
   CheckBitRockParameters(parameters);
+  if (parameters.law == BitRockLaw::None) return {};
   return parameters.law == BitRockLaw::Detournay ? Detournay(parameters, penetration_rate, spin_rate)
                                                  : Friction(parameters, spin_rate);
 }
@@ -89,6 +97,7 @@ BitRockElement::BitRockElement(const Body* bit, const BitRockParameters& paramet
     : ForceElement({bit}), parameters_(parameters),
       axis_(bit->reference_orientation.toRotationMatrix().col(0)) {
   CheckBitRockParameters(parameters_);
+  if (parameters_.law == BitRockLaw::None) throw LogicError("BitRockElement: no law to apply");
 }
 
 std::string BitRockElement::Describe() const {

@@ -27,15 +27,32 @@
 //                                                                    static to the kinetic level
 //                                                                    over the speed Ω_d)
 // The force element has the exact derivatives of both (piecewise: at the kinks the one-sided ones).
+//
+// Beside the law, at the bit (each optional, none by default, so that a case without them is as
+// before):
+//  * the hole bottom as a unilateral axial contact (model/bit_bottom.hpp): the WOB is then what it
+//    carries, not the case's applied WOB, and the bit can bounce. With the friction law (or no law:
+//    the case's TOB stays applied) only; not with Detournay's, whose WOB already is the rock's axial
+//    reaction as a law of the penetration rate: a bit pressing ahead cuts its way down, so a bottom
+//    fixed in place under it would stop the drilling, and a bottom that moves down with the cut
+//    needs the depth-of-cut history (the delay equation of Richard, Germay & Detournay 2007), which
+//    is not modelled;
+//  * side cutting (model/bit_side_cutting.hpp): the rock's lateral reaction, in place of the rigid
+//    hold of the bit at the hole centre.
 #pragma once
 
+#include <optional>
 #include <string>
 
+#include "model/bit_bottom.hpp"
+#include "model/bit_side_cutting.hpp"
 #include "model/force_element.hpp"
 
 namespace drillflex::model {
 
-enum class BitRockLaw { Detournay, Friction };
+// None: no torque law (the case's TOB stays applied), for a section with a bottom contact or side
+// cutting only.
+enum class BitRockLaw { Detournay, Friction, None };
 
 struct BitRockParameters {
   BitRockLaw law = BitRockLaw::Detournay;
@@ -51,8 +68,11 @@ struct BitRockParameters {
   double static_torque = 0.0;    // T_s, N·m (> T_d)
   double kinetic_torque = 0.0;   // T_d, N·m (≥ 0)
   double stribeck_speed = 0.0;   // Ω_d, rad/s (> 0)
-  // Both.
+  // Both (and side cutting).
   double stick_speed = 0.0;      // Ω_ε, rad/s (> 0)
+  // The bottom contact and the side cutting (see above).
+  std::optional<BitBottomParameters> bottom;
+  std::optional<double> side_cutting;  // k_s, N/m (model/bit_side_cutting.hpp)
 };
 
 // Defaults of the regularization: small against drilling speeds (1 rpm ≈ 0.1 rad/s, 1 m/h).
@@ -89,7 +109,8 @@ class BitRockElement : public ForceElement {
   Vec3 axis_;  // t, global
 };
 
-// Checks the parameters of `law` (throws LogicError naming the first out of range).
+// Checks the parameters of `law`, the bottom's and the side cutting's (throws LogicError naming the
+// first out of range, or a bottom contact under Detournay's law).
 void CheckBitRockParameters(const BitRockParameters& parameters);
 
 }  // namespace drillflex::model

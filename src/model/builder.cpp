@@ -266,6 +266,11 @@ Mat3 BentHousingRotation(const StringConfig& string, double s) {
   return Mat3::Identity();
 }
 
+double BitBottomStiffness(const BitBottomParameters& bottom, const Body& bit, const ModelSettings& settings) {
+  return bottom.stiffness > 0.0 ? bottom.stiffness
+                                : kSupportStiffnessFactor * SectionCouplingStiffness(bit, settings.coupling_factor)[kX];
+}
+
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache) {
   if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
   std::vector<Body> bodies = CutBodies(input, cache);
@@ -293,7 +298,10 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   std::vector<Support> supports =
       input.trajectory && input.supports.empty() ? DefaultWellSupports(length) : input.supports;
   const auto top = FindNodeAt(placed, length);
+  const bool side_cutting = input.bit_rock && input.bit_rock->side_cutting;
   for (Support& support : supports) {
+    // Side cutting holds the bit laterally instead (model/bit_side_cutting.hpp).
+    if (side_cutting && FindNodeAt(placed, support.at) == FindNodeAt(placed, 0.0)) support.fixed[kY] = support.fixed[kZ] = false;
     if (FindNodeAt(placed, support.at) != top) continue;
     if (input.top_drive) support.fixed[kRx] = false;  // the top drive holds the top's rotation
     if (input.block) support.fixed[kX] = false;       // the block holds its axial place
@@ -408,8 +416,9 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   // A bit-rock law gives the rock's reaction from the bit's motion instead (model/bit_rock.hpp):
   // the torque on bit, and under Detournay's law the WOB too.
   std::vector<Load> point_loads = input.loads;
-  const double wob = input.bit_rock && input.bit_rock->law == BitRockLaw::Detournay ? 0.0 : input.operation.weight_on_bit;
-  const double tob = input.bit_rock ? 0.0 : input.operation.torque_on_bit;
+  const bool rock_wob = input.bit_rock && (input.bit_rock->law == BitRockLaw::Detournay || input.bit_rock->bottom);
+  const double wob = rock_wob ? 0.0 : input.operation.weight_on_bit;
+  const double tob = input.bit_rock && input.bit_rock->law != BitRockLaw::None ? 0.0 : input.operation.torque_on_bit;
   if (wob != 0.0 || tob != 0.0) {
     Load bit;
     bit.at = 0.0;
@@ -428,12 +437,27 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
     elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
   }
-  int bit_rock_element = -1;
-  if (input.bit_rock) {
+  int bit_rock_element = -1, bit_bottom_element = -1, bit_side_element = -1;
+  if (input.bit_rock && input.bit_rock->law != BitRockLaw::None) {
     BitRockParameters parameters = *input.bit_rock;
     if (parameters.radius == 0.0) parameters.radius = 0.5 * input.string.components.front().outer_diameter;
     bit_rock_element = static_cast<int>(elements.size());
     elements.push_back(std::make_unique<BitRockElement>(&placed.front(), parameters));
+  }
+  if (input.bit_rock && input.bit_rock->bottom) {
+    const BitBottomParameters& bottom = *input.bit_rock->bottom;
+    const Body& bit = placed.front();
+    const Mat3 frame = bit.reference_orientation.toRotationMatrix();
+    const double stiffness = BitBottomStiffness(bottom, bit, input.settings);
+    const double damping = 2.0 * bottom.damping_ratio * std::sqrt(stiffness * ElementInertia(bit)[kX]);
+    bit_bottom_element = static_cast<int>(elements.size());
+    elements.push_back(std::make_unique<BitBottomElement>(&bit, 0, bit.reference_position + frame * bit.reduced->node_positions[0],
+                                                          frame.col(0), bottom, stiffness, damping));
+  }
+  if (side_cutting) {
+    bit_side_element = static_cast<int>(elements.size());
+    elements.push_back(std::make_unique<BitSideCuttingElement>(
+        &placed.front(), BitSideCuttingParameters{*input.bit_rock->side_cutting, input.bit_rock->stick_speed}));
   }
   for (const Imbalance& imbalance : input.imbalances) {
     const auto [b, node] = FindNodeAt(placed, imbalance.at);
@@ -445,7 +469,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   system.set_force_scale(force_scale);
   return BuiltModel{std::move(system),   std::move(support_elements), std::move(contact_elements),
                     top_drive_element,   block_element,               force_scale,
-                    bit_rock_element};
+                    bit_rock_element,    bit_bottom_element,          bit_side_element};
 }
 
 }  // namespace drillflex::model

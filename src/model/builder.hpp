@@ -39,8 +39,9 @@ struct ModelInput {
   // the friction follows the state's velocities (none at rest).
   std::optional<PrescribedSliding> static_sliding;
   // The rock's reaction on the bit node as a law of its motion (model/bit_rock.hpp; a transient's
-  // `bit_rock`); a radius of 0 is taken as half the OD of the first component. It replaces the
-  // operation's torque on bit, and under Detournay's law its WOB.
+  // `bit_rock`); a radius of 0 is taken as half the OD of the first component. Its law replaces the
+  // operation's torque on bit, and Detournay's law or a bottom contact its WOB; side cutting
+  // replaces the lateral hold of the supports at the bit node.
   std::optional<BitRockParameters> bit_rock;
   // The drives at the top node (s = the string length) of a transient run (model/drives.hpp):
   // each replaces the hold of the supports at the top in its direction (the top drive: rx; the
@@ -98,6 +99,8 @@ struct BuiltModel {
   int block_element = -1;             // element index of the block (-1: none)
   double force_scale = 0.0;           // a typical applied force, N (Newton tolerance)
   int bit_rock_element = -1;          // element index of the bit-rock interaction (−1: none)
+  int bit_bottom_element = -1;        // element index of the bit's bottom contact (−1: none)
+  int bit_side_element = -1;          // element index of the bit's side cutting (−1: none)
 };
 
 // Friction regularization velocity v_ε of the wall contacts, m/s (method.md §6): below it the
@@ -108,6 +111,11 @@ inline constexpr double kFrictionRegularizationVelocity = 1e-3;
 inline constexpr double kCouplingDampingRatio = 0.05;
 // Supports are this many times stiffer than a coupling of the same section.
 inline constexpr double kSupportStiffnessFactor = 10.0;
+
+// The stiffness of the bit's bottom contact, N/m: the case's, or by default as stiff as the
+// model's supports (kSupportStiffnessFactor × c·EA/ℓ of the bit body: the bottom is the string's
+// axial support at the bit; model/bit_bottom.hpp).
+double BitBottomStiffness(const BitBottomParameters& bottom, const Body& bit, const ModelSettings& settings);
 
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache);
 

@@ -190,6 +190,44 @@ analyses:
   EXPECT_DOUBLE_EQ(f.stribeck_speed, f.stick_speed);  // default: the drop over the stick speed
 }
 
+// `bit_rock.bottom` and `bit_rock.side_cutting`, with the friction law or without a law.
+TEST(CaseReader, BitBottomAndSideCutting) {
+  const Case field = ParseCase(R"(units: field
+string:
+  - {type: bit, od: 8.5, length: 1}
+  - {type: collar, od: 6.75, id: 2.8125, length: 30}
+analyses:
+  transient:
+    bit_rock:
+      law: friction
+      static_torque: 3000
+      kinetic_torque: 2000
+      bottom: {stiffness: 2e6, damping_ratio: 0.1, motion: {amplitude: 0.25, frequency: 6 Hz, ramp: 2 s}}
+      side_cutting: {resistance: 1e5}
+)",
+                               "bottom.yaml");
+  const model::BitRockParameters& f = *field.analyses.transient->bit_rock;
+  EXPECT_EQ(f.law, model::BitRockLaw::Friction);
+  ASSERT_TRUE(f.bottom.has_value());
+  EXPECT_NEAR(f.bottom->stiffness, 2e6 * kLbf / kIn, 1e-6 * f.bottom->stiffness);  // lbf/in
+  EXPECT_DOUBLE_EQ(f.bottom->damping_ratio, 0.1);
+  EXPECT_NEAR(f.bottom->amplitude, 0.25 * kIn, 1e-15);  // in
+  EXPECT_DOUBLE_EQ(f.bottom->frequency, 6.0);
+  EXPECT_DOUBLE_EQ(f.bottom->ramp_time, 2.0);
+  EXPECT_EQ(f.bottom->level, 0.0);  // placed at the transient's start
+  ASSERT_TRUE(f.side_cutting.has_value());
+  EXPECT_NEAR(*f.side_cutting, 1e5 * kLbf / kIn, 1e-6 * *f.side_cutting);
+  // No law: a bottom alone, with its defaults (stiffness from the model, 5 % damping, no motion).
+  const Case bare = ParseCase("string:\n  - {type: collar, od: 8, id: 2.8125, length: 30}\nanalyses:\n  transient:\n    bit_rock: {bottom: }\n", "bare.yaml");
+  const model::BitRockParameters& b = *bare.analyses.transient->bit_rock;
+  EXPECT_EQ(b.law, model::BitRockLaw::None);
+  ASSERT_TRUE(b.bottom.has_value());
+  EXPECT_EQ(b.bottom->stiffness, 0.0);
+  EXPECT_DOUBLE_EQ(b.bottom->damping_ratio, 0.05);
+  EXPECT_EQ(b.bottom->amplitude, 0.0);
+  EXPECT_FALSE(b.side_cutting.has_value());
+}
+
 TEST(CaseReader, TransientDrives) {
   // Field units: rpm, ft·lbf, ft/s; the speed drive defaults to operation.rpm with a 2 s ramp.
   const char* head = "units: field\nstring:\n  - {type: collar, od: 8, id: 2.8125, length: 90}\n"
@@ -385,6 +423,25 @@ INSTANTIATE_TEST_SUITE_P(
                      std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {law: detournay, specific_energy: 9000,\n"
                                                 "               cutting_ratio: 0.6, static_torque: 1}\n",
                      6, "analyses.transient.bit_rock.static_torque", "unknown key 'static_torque'"},
+        RejectedCase{"bottom contact under Detournay's law",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {law: detournay, specific_energy: 9000,\n"
+                                                "               cutting_ratio: 0.6, bottom: {}}\n",
+                     6, "analyses.transient.bit_rock.bottom", "does not go with law 'detournay'"},
+        RejectedCase{"bottom motion without a frequency",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {bottom: {motion: {amplitude: 1}}}\n",
+                     5, "analyses.transient.bit_rock.bottom.motion", "missing required key 'frequency'"},
+        RejectedCase{"negative bottom damping",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {bottom: {damping_ratio: -0.1}}\n",
+                     5, "analyses.transient.bit_rock.bottom.damping_ratio", "0 or more"},
+        RejectedCase{"misspelt bottom key",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {bottom: {stifness: 1e6}}\n",
+                     5, "analyses.transient.bit_rock.bottom.stifness", "did you mean 'stiffness'"},
+        RejectedCase{"side cutting of no resistance",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {side_cutting: {resistance: 0}}\n",
+                     5, "analyses.transient.bit_rock.side_cutting.resistance", "greater than zero"},
+        RejectedCase{"bit-rock section with nothing in it",
+                     std::string(kGoodString) + "analyses:\n  transient:\n    bit_rock: {stick_speed: 1}\n",
+                     5, "analyses.transient.bit_rock", "expected a 'law'"},
         RejectedCase{"top drive with speed and torque",
                      std::string(kGoodString) + "analyses:\n  transient:\n    top_drive: {rpm: 100, torque: 5000}\n",
                      5, "analyses.transient.top_drive", "not both"},
