@@ -18,7 +18,7 @@
 //   |w(a)| = m e Ω² φ(a)² / (M₁ |ω₁² − Ω² + i(2ζ_s ω₁² + 2ζ_s s ω₁ Ω)|),
 // the single-mode response of Den Hartog, Mechanical Vibrations (4th ed., 1956) §3.3 (rotating
 // unbalance), with hysteretic damping as in Bishop & Johnson, The Mechanics of Vibration (1960).
-// Its peak is found on a fine grid of Ω (about ω₁(1 + ζ_eq²), ζ_eq = ζ_s(1 + s)).
+// Its peak is found on a fine grid of Ω (within 2ζ² of ω₁, ζ = ζ_s(1 + s)).
 // Shear is not in the Euler–Bernoulli model; what it would change (Timoshenko, Cowper's κ) is
 // checked with `model.beam: timoshenko` against the closed-form Timoshenko frequency.
 // Tolerances (the issue's): peak RPM within 0.5 %, amplitudes within 2 % (the other modes (3rd at

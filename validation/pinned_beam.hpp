@@ -89,7 +89,7 @@ inline double TimoshenkoFirstFrequency(const Tube& tube) {
 inline double BodyModalDampingShare(const Tube& tube, int bodies, int modes) {
   constexpr int kSteps = 400;  // Simpson intervals a body
   const double l = tube.length / bodies, k = tube.wavenumber();
-  double sum = 0.0;  // Σ ω_j η_j² / (m sqrt(EI/m)), per unit length-scaled
+  double sum = 0.0;  // Σ ω_j η_j² / (m sqrt(EI/m)) over the bodies and modes
   for (int j = 0; j < modes; ++j) {
     double beta = (j + 1.5) * kPi;  // Newton on cos β cosh β − 1 from the asymptotic root
     for (int it = 0; it < 50; ++it) {
