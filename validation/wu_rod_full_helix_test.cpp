@@ -7,7 +7,13 @@
 //    half pitch each out of it; a helix still forming spans a third or less);
 //  * it forms in a snap (under displacement control the load drops as the rod jumps into it): the
 //    load at full helix is the peak the load cell reads before that sample, within 10 % of the
-//    44 N at which Wu saw the full helix (Wu's theory 2(2√2 − 1) sqrt(EI w / r) = 43.6 N);
+//    44 N at which Wu saw the full helix (Wu's theory 2(2√2 − 1) sqrt(EI w / r) = 43.6 N: the load at
+//    which the helix forms on loading);
+//  * the load after the snap, at the first sample of the full helix, is below that peak (the screw
+//    holds the displacement while the helix shortens the rod) and within 10 % of the load at which a
+//    formed helix holds, Chen's 2√2 sqrt(EI w / r) = 33.7 N (Chen, Lin & Cheatham 1990; the unloading
+//    branch of Wu's own theory). Against Wu's 44 N it is −19 %: reported, not within 10 %
+//    (docs/validation.md V3 lists what was tried);
 //  * the helix then holds: at the end the helical run still spans half the rod; it winds through at
 //    least two coils, its pitch (length / coils) within 15 % of 2π sqrt(2EI/F) at the load there.
 #include <algorithm>
@@ -63,13 +69,19 @@ TEST(V3WuRod, LoadAtFullHelixWithin10PercentOf44N) {
   const double coils = end.turn / 360.0, pitch = end.length / coils;
   const double pitch_reference = 2.0 * kPi * std::sqrt(2.0 * rod.ei / run.load[last]);
   const double wu_full_helix = 44.0;  // N, seen in the experiment
+  const double chen_helix = 2.0 * std::sqrt(2.0) * std::sqrt(rod.ei * rod.w / rod.r);  // 33.7 N
+  const double after = run.load[full];
   std::printf("V3 Wu rod, full helix: spans half the rod at t = %.2f s (d = %.3f mm, load %.2f N after the snap); "
               "peak before it %.2f N at %.2f s against 44 N (%+.2f %%); at the end (%.2f N, d = %.3f mm) %.2f coils "
               "over %.1f m, pitch %.3f m against 2 pi sqrt(2EI/F) = %.3f m (%+.1f %%)\n",
               run.time[full], 1e3 * run.travel[full], run.load[full], run.load[peak], run.time[peak],
               100.0 * RelativeError(run.load[peak], wu_full_helix), run.load[last], 1e3 * run.travel[last], coils,
               end.length, pitch, pitch_reference, 100.0 * RelativeError(pitch, pitch_reference));
+  std::printf("  after the snap %.2f N: against Chen's %.2f N %+.1f %%, against Wu's 44 N %+.1f %%\n", after, chen_helix,
+              100.0 * RelativeError(after, chen_helix), 100.0 * RelativeError(after, wu_full_helix));
   EXPECT_LT(std::abs(RelativeError(run.load[peak], wu_full_helix)), 0.10);
+  EXPECT_LT(after, run.load[peak]);
+  EXPECT_LT(std::abs(RelativeError(after, chen_helix)), 0.10);
   EXPECT_GE(end.length, 0.5 * kLength);
   EXPECT_GE(coils, 2.0);
   EXPECT_LT(std::abs(RelativeError(pitch, pitch_reference)), 0.15);
