@@ -2,6 +2,7 @@
 #include "model/static_problem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -211,7 +212,8 @@ void SolveEigenproblem(EquilibriumSolver& solver, const BucklingSettings& settin
 // in a well nothing but the contacts and the tension above holds the string laterally, so K at no
 // load is singular). Samples: μ = 1, then 1 + kFirstStep, then steps toward the root of ω²(μ)
 // extrapolated through the three samples nearest it (ExtrapolateRoot), each kApproach of the way,
-// until the estimate repeats to kAboutTolerance. ω² is of the mode whose kinetic energy is mostly
+// until the estimate repeats to kAboutTolerance. While ω² does not yet fall (a string on the wall
+// pressed harder by the load) the samples march up (kMarch) first. ω² is of the mode whose kinetic energy is mostly
 // lateral (SplitKineticEnergy), with the bodies' turns about their own axes held (the string's twist,
 // held only by the rotary table, is no buckling mode). Each equilibrium is warm-started from the
 // nearest one (the string stays in the same state of contact up to the onset).
@@ -221,6 +223,8 @@ constexpr double kFirstStep = 0.05;
 constexpr double kApproach = 0.7;
 constexpr double kAboutTolerance = 1e-3;
 constexpr int kAboutSamples = 14;
+// Where to look next while ω² does not yet fall (× the loads).
+constexpr std::array<double, 6> kMarch = {1.5, 2.0, 3.0, 4.0, 6.0, 8.0};
 
 struct LateralSample {
   double multiplier = 0.0;
@@ -284,15 +288,29 @@ void SolveAboutEquilibrium(EquilibriumSolver& solver, BucklingResult& result) {
     for (const LateralSample& sample : samples) xy.emplace_back(sample.multiplier, sample.eigenvalue);
     return xy;
   };
+  // The secant root of the last two samples: where the local trend of ω² reaches zero.
+  auto trend_root = [&] {
+    const LateralSample& a = samples[samples.size() - 2];
+    const LateralSample& b = samples.back();
+    if (!(b.eigenvalue < a.eigenvalue)) return std::nan("");
+    return b.multiplier - b.eigenvalue * (b.multiplier - a.multiplier) / (b.eigenvalue - a.eigenvalue);
+  };
+  // A string lying on the wall may first stiffen as the load grows (its contacts press harder): march
+  // up until ω² falls.
+  for (const double multiplier : kMarch) {
+    if (std::isfinite(trend_root())) break;
+    if (!take(multiplier) || samples.back().eigenvalue <= 0.0) break;
+  }
   double below = samples.back().multiplier;  // the largest multiplier sampled with ω² > 0
   double above = std::numeric_limits<double>::infinity();  // the smallest one past the onset
-  double estimate = ExtrapolateRoot(points(), below);
+  double estimate = trend_root();
   if (!(estimate > below) || !std::isfinite(estimate)) {
     throw SolverError(fmt::format("buckling: the string's lowest lateral frequency does not fall as the {} grows from "
-                                  "the case's loads ({:.6g} Hz at × 1, {:.6g} Hz at × {}): it is buckled already, or the "
-                                  "loads stiffen it",
-                                  solver.scale_wob() ? "WOB" : "load", result.frequency_table[0].frequency_hz,
-                                  result.frequency_table[1].frequency_hz, 1.0 + kFirstStep));
+                                  "the case's loads up to × {:g} ({:.6g} Hz at × 1, {:.6g} Hz at × {:g}): the loads "
+                                  "stiffen it, or it is buckled already",
+                                  solver.scale_wob() ? "WOB" : "load", samples.back().multiplier,
+                                  result.frequency_table[0].frequency_hz, result.frequency_table.back().frequency_hz,
+                                  samples.back().multiplier));
   }
   for (int taken = 2; taken < kAboutSamples; ++taken) {
     const double target = std::min(below + kApproach * (estimate - below), 0.5 * (below + above));

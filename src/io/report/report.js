@@ -613,18 +613,24 @@
     const s = section('buckling', 'Buckling');
     nav.appendChild(el('a', {href: '#buckling', text: 'buckling'}));
     const p = el('p');
-    p.append('Critical load multiplier ', value(b.load_factor, '', 'buckling.load_factor', 6), ' of the case\'s loads: a largest compression of ',
-             value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force}).`);
+    const scaled = b.scaled === 'wob' ? 'the WOB' : 'every load';
+    p.append(`Critical multiplier of ${scaled} `, value(b.load_factor, '', 'buckling.load_factor', 6), ': a largest compression of ',
+             value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force})`);
+    if (b.critical_wob !== undefined) p.append(', a critical WOB of ', value(b.critical_wob, U.force, 'buckling.critical_wob'));
+    p.append(b.method ? ` (${b.method}).` : '.');
     s.appendChild(p);
+    if (b.frequency_method && !b.frequency_method.converged) {
+      s.appendChild(el('p', {class: 'note', text: 'The frequency extrapolation did not settle: read the multiplier with its samples below.'}));
+    }
     if (b.dawson_paslay) {
       const d = b.dawson_paslay;
       const text = d.sinusoidal_load === 0
-        ? `Dawson–Paslay: at MD ${num(d.md, 6)} ${U.length} the hole is vertical and the string compressed (${num(d.compression, 5)} ${U.force}): no weight holds it to the wall, so it lies buckled there (Lubinski).`
+        ? `Dawson–Paslay: at MD ${num(d.md, 6)} ${U.length} the hole is vertical and the string compressed (${num(d.compression, 5)} ${U.force}): no weight holds it to the wall (Lubinski\'s case).`
         : d.load_factor < 1
           ? `Dawson–Paslay: at MD ${num(d.md, 6)} ${U.length} the compression ${num(d.compression, 5)} ${U.force} exceeds the sinusoidal buckling load ${num(d.sinusoidal_load, 5)} ${U.force} (helical ${num(d.helical_load, 5)} ${U.force}): the string lies buckled there.`
-          : `Dawson–Paslay: sinusoidal buckling first at ${num(d.load_factor, 4)} × the loads, at MD ${num(d.md, 6)} ${U.length} (compression ${num(d.compression, 5)} ${U.force} against ${num(d.sinusoidal_load, 5)} ${U.force} now; helical ${num(d.helical_load, 5)} ${U.force}).`;
+          : `Dawson–Paslay: sinusoidal buckling first at ${scaled} × ${num(d.load_factor, 4)}, at MD ${num(d.md, 6)} ${U.length} (compression ${num(d.compression, 5)} ${U.force} against ${num(d.sinusoidal_load, 5)} ${U.force} now; helical ${num(d.helical_load, 5)} ${U.force}).`;
       s.appendChild(el('p', {text: text}));
-      s.appendChild(el('p', {class: 'note', text: 'In a well the eigenproblem\'s multiplier is not validated: on the bundled example it says 1.03 where the equilibrium path buckles between 2.0 and 2.6, as Dawson–Paslay\'s 2.60 says. Rely on the Dawson–Paslay check (docs/validation.md).'}));
+      s.appendChild(el('p', {class: 'note', text: 'In an inclined hole the modelled string\'s top is free sideways and may buckle first (Hetényi\'s end mode, about half the Dawson–Paslay load): docs/validation.md, V2 torque and weight.'}));
     }
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
