@@ -431,7 +431,13 @@ int RunAnalyses(const CommandOptions& options, Requested requested, const char* 
                              ? equilibrium
                              : analyses::TransientStartPositions(input, built, cache, settings, static_settings);
     // The model in motion: with the drives, the friction following the motion (same coordinates).
-    const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache);
+    // The fluid moves with the bodies, its annulus terms at TransientFluidFrequency.
+    const double fluid_frequency = analyses::TransientFluidFrequency(input, built, start_q, settings);
+    if (fluid_frequency > 0.0) {
+      std::cout << fmt::format("transient: the annulus fluid's C_m and C_v at {:.4g} Hz\n", fluid_frequency / (2.0 * kPi));
+    }
+    const model::BuiltModel moving =
+        model::BuildSystemModel(analyses::TransientModelInput(input, settings, fluid_frequency), cache);
     analyses::TransientResult result;
     {
       ProgressBar bar;

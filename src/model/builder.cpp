@@ -11,6 +11,7 @@
 #include "model/contact_circles.hpp"
 #include "model/drive_elements.hpp"
 #include "model/imbalance_element.hpp"
+#include "model/lateral_fluid.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
@@ -268,6 +269,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
   std::vector<Body> bodies = CutBodies(input, cache);
   if (input.trajectory) PlaceAlongWell(bodies, *input.trajectory, input.bit_md);
+  if (input.transient_fluid_frequency) AttachLateralFluid(input, *input.transient_fluid_frequency, bodies);
   double length = 0.0;
   for (const Body& body : bodies) length = std::max(length, body.s_start + body.length());
   // Elements refer to bodies by address; moving the vector into the SystemModel keeps its buffer.
