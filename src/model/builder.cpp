@@ -360,7 +360,8 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(stiffness * ElementInertia(*body)[0]);
       parameters.tangential_friction = contact.friction;
       parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
-      parameters.regularization_velocity = kFrictionRegularizationVelocity;
+      parameters.regularization_velocity =
+          contact.friction_velocity.value_or(kFrictionRegularizationRate * parameters.contact_radius);
       parameters.prescribed_sliding = input.static_sliding;
       contact_elements.push_back(static_cast<int>(elements.size()));
       elements.push_back(std::make_unique<WallContactElement>(body, k, wellbore, parameters, input.bit_md - s));
