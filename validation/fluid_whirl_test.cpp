@@ -5,7 +5,7 @@
 //    −Ω R_c/(R_h − R_c) = −188.24 rpm whatever the mass that whirls (Jansen 1991, "Whirl and chaotic
 //    motion of stabilized drill collars"; Vandiver, Nicholson & Shyu 1990). The fluid changes the
 //    forces: its added mass whirls with the collar, and its damping takes power that the friction at
-//    the contact has to supply (the whirl builds up later than in air, 4.5 s instead of ~2 s here).
+//    the contact has to supply (the whirl rolls from ~5 s instead of ~3 s in air).
 //    Asserted: the rate over the last 1.5 s within 2 % of −188.24 rpm (V8's tolerance), on the wall,
 //    turning at the drive's 100 rpm.
 //  * The contact force at the mid-span node of a span that lies on the wall is the centripetal force
