@@ -119,6 +119,9 @@ struct TransientSettings {
   // The case's `vtk_frames` when it gives one (io/analyses_section.cpp): the frames the command line
   // asks for, instead of its default, when it writes the VTK files. RunTransient reads state_frames only.
   std::optional<int> vtk_frames;
+  // The circular frequency at which the annulus fluid's C_m(ω) and C_v(ω) are taken (`fluid_frequency`
+  // in Hz in the case), rad/s; unset: analyses/transient_analysis.hpp TransientFluidFrequency's default.
+  std::optional<double> fluid_frequency;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

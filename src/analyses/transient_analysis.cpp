@@ -6,12 +6,14 @@
 
 #include <fmt/format.h>
 
+#include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/string_stations.hpp"
 #include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
 #include "model/drive_elements.hpp"
 #include "model/dynamic_problem.hpp"
+#include "model/lateral_fluid.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -157,8 +159,10 @@ solvers::GeneralizedAlphaOptions TransientIntegratorOptions(const TransientSetti
   return options;
 }
 
-model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings) {
+model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings,
+                                      double fluid_frequency) {
   model::ModelInput transient = input;
+  if (input.fluid) transient.transient_fluid_frequency = fluid_frequency;
   transient.static_sliding.reset();
   transient.top_drive = settings.top_drive;
   transient.block = settings.block;
@@ -168,6 +172,24 @@ model::ModelInput TransientModelInput(const model::ModelInput& input, const Tran
   transient.bit_rock = settings.bit_rock;  // the builder then leaves out the bit loads the law replaces
   transient.imbalances = settings.imbalances;
   return transient;
+}
+
+double TransientFluidFrequency(const model::ModelInput& input, const model::BuiltModel& at_rest, const VecX& q0,
+                               const TransientSettings& transient) {
+  if (!input.fluid) return 0.0;
+  if (transient.fluid_frequency) return *transient.fluid_frequency;
+  const model::LateralFluid fluid = model::MakeLateralFluid(input, at_rest.system);
+  if (!fluid.frequency_dependent()) return 0.0;
+  ModesSettings settings;
+  settings.count = 1;
+  settings.kind = ModeKind::Lateral;
+  const ModesResult modes = RunModes(at_rest, q0, settings, &fluid);
+  const ModeResult* first = FirstLateralMode(modes);
+  if (!first) {
+    throw SolverError("transient: the linearized model has no lateral mode to take the fluid's damping at; "
+                      "give the transient's fluid_frequency");
+  }
+  return 2.0 * kPi * first->frequency_hz;
 }
 
 VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,

@@ -78,8 +78,23 @@ using TransientProgress = std::function<void(double time, double duration)>;
 // The model a transient run integrates: the case's `input` with the settings' drives and bit-rock
 // law, and without a static analysis's prescribed sliding (the friction follows the motion). Same
 // coordinates. The bit-rock law (model/bit_rock.hpp) takes over from the operation's torque on bit
-// (and under Detournay's law its WOB), which then act in the start equilibrium only.
-model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings);
+// (and under Detournay's law its WOB), which then act in the start equilibrium only. With a `fluid`,
+// the fluid moves with the bodies sideways (model/fluid_inertia.hpp), the annulus's C_m and C_v
+// taken at `fluid_frequency` (rad/s; TransientFluidFrequency).
+model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings,
+                                      double fluid_frequency = 0.0);
+
+// The circular frequency (rad/s) at which a transient takes the annulus's frequency-dependent
+// added mass C_m(ω) and damping C_v(ω) (Chen, Wambsganss & Jendrzejczyk 1976; fe/annulus_fluid.hpp):
+//  * the transient's `fluid_frequency`, when given;
+//  * 0 when they do not depend on ω (no fluid, an inviscid one, or a given added_mass_coefficient:
+//    then there is no annulus damping, model/lateral_fluid.hpp);
+//  * else the lowest lateral natural frequency of the linearized model `at_rest` at q0 with the
+//    fluid (analyses/modes_analysis.hpp RunModes, FirstLateralMode: the frequency a free lateral
+//    vibration rings at, where a linear analysis would take them). A whirl or a forced vibration at
+//    another frequency is better served by giving it. Throws SolverError without a lateral mode.
+double TransientFluidFrequency(const model::ModelInput& input, const model::BuiltModel& at_rest, const VecX& q0,
+                               const TransientSettings& settings);
 
 // The start state q: the static equilibrium of the case's model at rest (without prescribed
 // sliding; the supports hold the top, the drives start from it) with `initial_loads` added (solved

@@ -435,9 +435,15 @@ int RunAnalyses(const CommandOptions& options, Requested requested, const char* 
                              ? equilibrium
                              : analyses::TransientStartPositions(input, built, cache, settings, static_settings);
     // The model in motion: with the drives, the friction following the motion (same coordinates),
-    // and a bottom contact where the bit rests at the start.
+    // a bottom contact where the bit rests at the start. The fluid moves with the bodies, its annulus
+    // terms at TransientFluidFrequency.
+    const double fluid_frequency = analyses::TransientFluidFrequency(input, built, start_q, settings);
+    if (fluid_frequency > 0.0) {
+      std::cout << fmt::format("transient: the annulus fluid's C_m and C_v at {:.4g} Hz\n", fluid_frequency / (2.0 * kPi));
+    }
     const model::BuiltModel moving = model::BuildSystemModel(
-        analyses::PlaceBottomAtStart(analyses::TransientModelInput(input, settings), built, start_q), cache);
+        analyses::PlaceBottomAtStart(analyses::TransientModelInput(input, settings, fluid_frequency), built, start_q),
+        cache);
     analyses::TransientResult result;
     {
       ProgressBar bar;

@@ -137,7 +137,8 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
 analyses::TransientSettings ReadTransient(const YamlView& node, const model::Operation& operation) {
   node.ExpectMap("the transient settings {duration, output_interval, probes}");
   node.AllowOnlyKeys({"duration", "output_interval", "probes", "time_step", "rho_infinity", "tolerance", "start",
-                      "initial_loads", "top_drive", "block", "bit_rock", "excitations", "vtk_frames"});
+                      "initial_loads", "top_drive", "block", "bit_rock", "excitations", "vtk_frames",
+                      "fluid_frequency"});
   analyses::TransientSettings settings;
   settings.duration = node.OptionalPositive("duration", Quantity::Time).value_or(settings.duration);
   settings.output_interval = node.OptionalPositive("output_interval", Quantity::Time).value_or(settings.output_interval);
@@ -145,6 +146,8 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
     node.Fail("more than 10 million output samples: use a larger output_interval");
   }
   settings.time_step = node.OptionalPositive("time_step", Quantity::Time);
+  // Hz in the case, ω = 2π f inside (the annulus fluid's C_m and C_v; TransientFluidFrequency).
+  if (const auto f = node.OptionalPositive("fluid_frequency", Quantity::Frequency)) settings.fluid_frequency = 2.0 * kPi * *f;
   // The frames of transient.pvd (io/vtk_files.hpp): string_0000.vtp to string_9999.vtp at the most.
   if (const auto frames = node.OptionalChild("vtk_frames")) {
     settings.vtk_frames = frames->AsInteger();

@@ -85,12 +85,13 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
   if (const auto rotary = node.OptionalChild("rotary_inertia")) settings.rotary_inertia = rotary->AsBool();
   if (const auto contact = node.OptionalChild("contact")) {
     contact->ExpectMap("the contact settings {stiffness, damping_ratio, friction}");
-    contact->AllowOnlyKeys({"stiffness", "damping_ratio", "friction", "axial_friction"});
+    contact->AllowOnlyKeys({"stiffness", "damping_ratio", "friction", "axial_friction", "friction_velocity"});
     auto& c = settings.contact;
     c.stiffness = contact->OptionalPositive("stiffness", Quantity::Stiffness).value_or(c.stiffness);
     c.damping_ratio = contact->QuantityOr("damping_ratio", Quantity::Dimensionless, c.damping_ratio);
     c.friction = contact->QuantityOr("friction", Quantity::Dimensionless, c.friction);
     c.axial_friction = contact->OptionalQuantity("axial_friction", Quantity::Dimensionless);
+    c.friction_velocity = contact->OptionalPositive("friction_velocity", Quantity::Velocity);
     if (c.damping_ratio < 0.0) contact->Child("damping_ratio").Fail("expected a damping ratio >= 0");
     if (c.friction < 0.0) contact->Child("friction").Fail("expected a friction coefficient >= 0");
     if (c.axial_friction && *c.axial_friction < 0.0) contact->Child("axial_friction").Fail("expected a friction coefficient >= 0");

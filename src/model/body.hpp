@@ -47,6 +47,10 @@ struct Body {
   // (cms::NodalReferenceMassMatrix) plus mass_correction, i.e. cms::ReferenceMassMatrix.
   // (6 + n_f)², kg, kg·m, kg·m². Whoever changes the node masses recomputes it.
   MatX reference_mass;
+  // The drilling fluid that moves with the body sideways in a transient (model/fluid_inertia.hpp):
+  // per node, the lateral mass (bore fluid plus the annulus's added mass), kg, and the annulus's
+  // damping, N·s/m. Empty: none (the static and linear analyses add the fluid themselves).
+  VecX fluid_lateral_mass, fluid_lateral_damping;
 
   double length() const { return reduced->length; }
   int velocity_count() const { return 6 + flexible_count; }

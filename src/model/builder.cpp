@@ -11,6 +11,7 @@
 #include "model/contact_circles.hpp"
 #include "model/drive_elements.hpp"
 #include "model/imbalance_element.hpp"
+#include "model/lateral_fluid.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
@@ -275,6 +276,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
   std::vector<Body> bodies = CutBodies(input, cache);
   if (input.trajectory) PlaceAlongWell(bodies, *input.trajectory, input.bit_md);
+  if (input.transient_fluid_frequency) AttachLateralFluid(input, *input.transient_fluid_frequency, bodies);
   double length = 0.0;
   for (const Body& body : bodies) length = std::max(length, body.s_start + body.length());
   // Elements refer to bodies by address; moving the vector into the SystemModel keeps its buffer.
@@ -368,7 +370,8 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(stiffness * ElementInertia(*body)[0]);
       parameters.tangential_friction = contact.friction;
       parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
-      parameters.regularization_velocity = kFrictionRegularizationVelocity;
+      parameters.regularization_velocity =
+          contact.friction_velocity.value_or(kFrictionRegularizationRate * parameters.contact_radius);
       parameters.prescribed_sliding = input.static_sliding;
       contact_elements.push_back(static_cast<int>(elements.size()));
       elements.push_back(std::make_unique<WallContactElement>(body, k, wellbore, parameters, input.bit_md - s));

@@ -50,6 +50,12 @@ struct ModelInput {
   std::optional<BlockDrive> block;
   // Imbalances turning with the string (a transient's `excitations`; model/imbalance_element.hpp).
   std::vector<Imbalance> imbalances;
+  // Set (a transient's model): the drilling fluid moves with the bodies sideways, as lumps of lateral
+  // mass and damping at their nodes (model/fluid_inertia.hpp), the annulus's C_m and C_v taken at
+  // this circular frequency, rad/s (model/lateral_fluid.hpp CalcNodeFluidTerms; 0: the inviscid
+  // C_m and no damping, allowed only for an inviscid fluid or a given C_m). Unset: the model's mass
+  // is the steel's, and the linear analyses add the fluid themselves.
+  std::optional<double> transient_fluid_frequency;
 };
 
 // The supports a string in a well gets when the case gives none (method.md §8, the static BHA
@@ -103,9 +109,15 @@ struct BuiltModel {
   int bit_side_element = -1;          // element index of the bit's side cutting (−1: none)
 };
 
-// Friction regularization velocity v_ε of the wall contacts, m/s (method.md §6): below it the
-// friction is viscous.
-inline constexpr double kFrictionRegularizationVelocity = 1e-3;
+// The wall contacts' friction regularization velocity v_ε (method.md §6: below it the friction is
+// viscous) by default, per contact: v_ε = Ω_ε R_c, R_c the contact circle's radius. The paper
+// (Pogorelov et al., ESDA 2012, §2.3) sets v_ε "equal to [...] where [...] is the characteristic size
+// (radius) of contacting bodies"; its factor is lost from the text we have. Taken: Ω_ε = 0.01 rad/s
+// (0.1 rpm), the bit-rock law's stick speed (model/bit_rock.hpp kDefaultStickSpeed): a section
+// turning slower than 0.1 rpm on the wall slides viscously, whatever its size. For the 8 in collar of
+// V8 that is 1.02 mm/s, the 1 mm/s drillflex used for every contact before. The case's
+// `model.contact.friction_velocity` replaces it (ContactSettings::friction_velocity).
+inline constexpr double kFrictionRegularizationRate = 0.01;  // rad/s
 
 // Damping ratio of the coupling and support springs, with the element masses of the joined bodies.
 inline constexpr double kCouplingDampingRatio = 0.05;

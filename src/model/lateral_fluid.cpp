@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/error.hpp"
 #include "core/so3.hpp"
 #include "fe/annulus_fluid.hpp"
 #include "well/hole.hpp"
@@ -23,6 +24,10 @@ double TributaryLength(const Body& body, int k) {
 }  // namespace
 
 LateralFluid MakeLateralFluid(const ModelInput& input, const SystemModel& model) {
+  return MakeLateralFluid(input, model.bodies());
+}
+
+LateralFluid MakeLateralFluid(const ModelInput& input, const std::vector<Body>& bodies) {
   LateralFluid fluid;
   if (!input.fluid) return fluid;
   fluid.density = input.fluid->density;
@@ -31,8 +36,8 @@ LateralFluid MakeLateralFluid(const ModelInput& input, const SystemModel& model)
   const double inside = input.fluid->internal_density.value_or(input.fluid->density);
   std::optional<well::HoleProfile> hole;
   if (input.trajectory && !input.hole.empty()) hole.emplace(input.hole);
-  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
-    const Body& body = model.bodies()[b];
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const Body& body = bodies[b];
     const AveragedAreas areas = AverageAreas(input.string.components.at(body.component));
     for (int k = 0; k < body.node_count(); ++k) {
       LateralFluidNode node;
@@ -51,6 +56,24 @@ LateralFluid MakeLateralFluid(const ModelInput& input, const SystemModel& model)
     }
   }
   return fluid;
+}
+
+void AttachLateralFluid(const ModelInput& input, double circular_frequency, std::vector<Body>& bodies) {
+  const LateralFluid fluid = MakeLateralFluid(input, bodies);
+  if (fluid.empty()) return;
+  if (fluid.frequency_dependent() && !(circular_frequency > 0.0)) {
+    throw LogicError("AttachLateralFluid: a viscous fluid's annulus terms need a positive frequency");
+  }
+  for (Body& body : bodies) {
+    body.fluid_lateral_mass = VecX::Zero(body.node_count());
+    body.fluid_lateral_damping = VecX::Zero(body.node_count());
+  }
+  for (std::size_t i = 0; i < fluid.nodes.size(); ++i) {
+    const LateralFluidNode& node = fluid.nodes[i];
+    const NodeFluidTerms terms = CalcNodeFluidTerms(fluid, i, circular_frequency);
+    bodies[node.body].fluid_lateral_mass[node.node] = terms.mass;
+    bodies[node.body].fluid_lateral_damping[node.node] = terms.damping;
+  }
 }
 
 NodeFluidTerms CalcNodeFluidTerms(const LateralFluid& fluid, std::size_t index, double circular_frequency) {

@@ -49,6 +49,13 @@ struct LateralFluid {
 
 // The fluid of a model built from `input` (empty without `input.fluid`).
 LateralFluid MakeLateralFluid(const ModelInput& input, const SystemModel& model);
+// The same for the bodies of a model being built.
+LateralFluid MakeLateralFluid(const ModelInput& input, const std::vector<Body>& bodies);
+
+// Gives every body its fluid lumps for the time domain (Body::fluid_lateral_mass, _damping;
+// model/fluid_inertia.hpp): each node's CalcNodeFluidTerms at the circular frequency ω (rad/s).
+// Throws LogicError for ω ≤ 0 when the annulus terms depend on ω (a viscous fluid without a C_m).
+void AttachLateralFluid(const ModelInput& input, double circular_frequency, std::vector<Body>& bodies);
 
 // Lateral mass (kg) and damping (N·s/m) of node `index` at the circular frequency ω (rad/s):
 // internal fluid plus annulus. At ω = 0 a viscous annulus takes its inviscid C_m (the ω → ∞

@@ -11,6 +11,7 @@
 #include "core/so3.hpp"
 #include "model/body_dynamics.hpp"
 #include "model/body_inertia_jacobian.hpp"
+#include "model/fluid_inertia.hpp"
 
 namespace drillflex::model {
 
@@ -250,7 +251,10 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
     const int n = body.velocity_count();
     local.setZero(n);
     velocity = v.segment(body.v_offset, n);
-    if (accelerating || moving) local += BodyInertialForces(body, poses[b], velocity, a.segment(body.v_offset, n));
+    if (accelerating || moving) {
+      local += BodyInertialForces(body, poses[b], velocity, a.segment(body.v_offset, n));
+      if (HasLateralFluid(body)) local += BodyFluidForces(body, poses[b], velocity, a.segment(body.v_offset, n));
+    }
     AddElasticForces(body, poses[b], velocity, local);
     auto rows = residual.segment(body.v_offset, n);
     rows = local;
@@ -296,6 +300,9 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
     local.setZero(n, n);
     // cK K_in + cD D_in + cM M of the inertia (exact, model/body_inertia_jacobian.hpp).
     AddInertiaMatrices(body, poses[b], v.segment(body.v_offset, n), a.segment(body.v_offset, n), cK, cD, cM, local);
+    if (HasLateralFluid(body)) {
+      AddFluidMatrices(body, poses[b], v.segment(body.v_offset, n), a.segment(body.v_offset, n), cK, cD, cM, local);
+    }
     AddElasticMatrices(body, poses[b], cK, cD, local);
     // The body's own elements (wall contacts, loads, fluid) summed into its dense block first: one
     // scatter into the pattern a body instead of one an element (~10 contacts a body).
@@ -316,7 +323,9 @@ SparseMat SystemModel::MassMatrix(const VecX& q) const {
   const auto poses = Poses(q);
   SparseMat matrix = mass_pattern_.Zero();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    mass_pattern_.Add(BodyMassMatrix(bodies_[b], poses[b]), {static_cast<int>(b)}, matrix);
+    MatX mass = BodyMassMatrix(bodies_[b], poses[b]);
+    if (HasLateralFluid(bodies_[b])) mass += BodyFluidMassMatrix(bodies_[b], poses[b]);
+    mass_pattern_.Add(mass, {static_cast<int>(b)}, matrix);
   }
   return matrix;
 }
@@ -329,6 +338,9 @@ Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, LoadParamete
   ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
     const Body& body = bodies_[b];
     kinetic[b] = BodyKineticEnergy(body, poses[b], v.segment(body.v_offset, body.velocity_count()));
+    if (HasLateralFluid(body)) {
+      kinetic[b] += BodyFluidKineticEnergy(body, poses[b], v.segment(body.v_offset, body.velocity_count()));
+    }
     elastic[b] = BodyElasticEnergy(body, poses[b]);
   });
   ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {

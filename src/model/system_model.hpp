@@ -69,7 +69,9 @@ class SystemModel {
   // bodies sharing an element, structural zeros included, the same at every state.
   SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load, double cK,
                             double cD, double cM) const;
+  // The bodies' mass, with the fluid lumps a transient's bodies carry (model/fluid_inertia.hpp).
   SparseMat MassMatrix(const VecX& q) const;
+  // Kinetic energy: the bodies' and their fluid lumps'.
   Energies ComputeEnergies(const VecX& q, const VecX& v, LoadParameters load) const;
   // Π(to) − Π(from) at rest (J): the bodies' elastic energies and the elements' potential energies
   // (with the dead loads' work over the step, ForceElement::PotentialEnergyChange), each term's

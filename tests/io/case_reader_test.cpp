@@ -322,6 +322,24 @@ TEST(CaseReader, TransientImbalances) {
   EXPECT_EQ(key, "analyses.transient.excitations[0].at");
 }
 
+// `model.contact.friction_velocity` (a velocity: ft/s in field units, any unit given) and a
+// transient's `fluid_frequency` (Hz in the case, rad/s inside); unset by default.
+TEST(CaseReader, FrictionVelocityAndFluidFrequency) {
+  const std::string head = std::string("units: field\n") + kGoodString;
+  const Case given = ParseCase(head + "model:\n  contact: {friction: 0.3, friction_velocity: 2 mm/s}\n"
+                                      "analyses:\n  transient: {fluid_frequency: 3 Hz}\n",
+                               "given.yaml");
+  ASSERT_TRUE(given.model.contact.friction_velocity.has_value());
+  EXPECT_NEAR(*given.model.contact.friction_velocity, 2e-3, 1e-15);
+  ASSERT_TRUE(given.analyses.transient && given.analyses.transient->fluid_frequency);
+  EXPECT_NEAR(*given.analyses.transient->fluid_frequency, 6.0 * kPi, 1e-12);
+  const Case bare = ParseCase(head + "model:\n  contact: {friction_velocity: 0.01}\n", "bare.yaml");
+  EXPECT_NEAR(*bare.model.contact.friction_velocity, 0.01 * kFt, 1e-15);  // ft/s
+  const Case unset = ParseCase(head + "analyses:\n  transient: {duration: 1 s}\n", "unset.yaml");
+  EXPECT_FALSE(unset.model.contact.friction_velocity.has_value());
+  EXPECT_FALSE(unset.analyses.transient->fluid_frequency.has_value());
+}
+
 struct RejectedCase {
   const char* label;
   std::string text;
@@ -352,6 +370,12 @@ INSTANTIATE_TEST_SUITE_P(
     CaseReader, RejectedInput,
     ::testing::Values(
         RejectedCase{"unknown key", std::string(kGoodString) + "modle: {}\n", 3, "modle", "did you mean 'model'"},
+        RejectedCase{"zero friction velocity", std::string(kGoodString) + "model:\n  contact:\n    friction_velocity: 0 m/s\n",
+                     5, "model.contact.friction_velocity", "greater than zero"},
+        RejectedCase{"friction velocity not a velocity", std::string(kGoodString) + "model:\n  contact: {friction_velocity: 1 rpm}\n",
+                     4, "model.contact.friction_velocity", "velocity"},
+        RejectedCase{"negative fluid frequency", std::string(kGoodString) + "analyses:\n  transient:\n    fluid_frequency: -2 Hz\n",
+                     5, "analyses.transient.fluid_frequency", "greater than zero"},
         RejectedCase{"unknown nested key", "units: field\nstring:\n  - {type: collar, od: 8, idd: 2, length: 30}\n", 3,
                      "string[0].idd", "did you mean 'id'"},
         RejectedCase{"missing key", "units: field\nstring:\n  - {type: collar, od: 8, length: 30}\n", 3,

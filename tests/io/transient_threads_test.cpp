@@ -65,9 +65,13 @@ TEST(TransientThreads, RotatingBundledExampleIsIdenticalOnOneAndTwoThreads) {
   ASSERT_TRUE(settings.top_drive.has_value());
   settings.top_drive->setting.ramp_time = 0.02;
   const model::BuiltModel at_rest = model::BuildSystemModel(input, cache);
-  const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache);
-  ASSERT_GE(moving.system.bodies().size(), 32u);  // the model's parallel assembly (system_model.cpp)
   const VecX start = analyses::TransientStartPositions(input, at_rest, cache, settings, analyses::StaticSettings{});
+  // With the drilling fluid moving with the bodies (model/fluid_inertia.hpp), as the command line runs it.
+  const double fluid_frequency = analyses::TransientFluidFrequency(input, at_rest, start, settings);
+  ASSERT_GT(fluid_frequency, 0.0);
+  const model::BuiltModel moving =
+      model::BuildSystemModel(analyses::TransientModelInput(input, settings, fluid_frequency), cache);
+  ASSERT_GE(moving.system.bodies().size(), 32u);  // the model's parallel assembly (system_model.cpp)
 
   const ThreadRun one = RunOnThreads(1, c, moving, start, settings);
   const ThreadRun two = RunOnThreads(2, c, moving, start, settings);
