@@ -38,11 +38,7 @@ CouplingKinematics ComputeCouplingKinematics(const CouplingEnd& end1, const Coup
   k.vee_r = VeeSkew(k.R);
   const auto& psi_b = body2.reduced->node_rotation_modes[end2.node];
   k.strain.head<3>() = k.w - u_a;
-  // Side 2's elastic node rotation, in side 2's frame, taken into the strain's frame by R: frames
-  // that are turned about the string axis against each other (a string twisted by its torque turns
-  // each body's frame by T ℓ / GJ) would otherwise add lateral rotations in two different bases.
-  k.psi_eta_b = psi_b * end2.pose.eta;
-  k.strain.tail<3>() = k.vee_r + k.R * k.psi_eta_b;
+  k.strain.tail<3>() = k.vee_r + psi_b * end2.pose.eta;
 
   const double trace = k.R.trace();
   const Mat3 g1 = -0.5 * (trace * Mat3::Identity() - k.R);            // ∂vee/∂δθ1' (δθ1' = R0ᵀδθ1)
@@ -56,18 +52,15 @@ CouplingKinematics ComputeCouplingKinematics(const CouplingEnd& end1, const Coup
     k.jacobian.block<3, 3>(0, 0) = -k.A1.transpose();
     k.jacobian.block<3, 3>(0, 3) = Skew(k.w);
     k.jacobian.block(0, 6, 3, body1.flexible_count) = -phi_a;
-    // δ(R ψ_b) over δθ1: δR = −R0ᵀ skew(δθ1) R12, so R0ᵀ skew(R12 ψ_b) δθ1.
-    k.jacobian.block<3, 3>(3, 3) = g1 * k.R0.transpose() + k.R0.transpose() * Skew(k.R12 * k.psi_eta_b);
+    k.jacobian.block<3, 3>(3, 3) = g1 * k.R0.transpose();
     k.jacobian.block(3, 6, 3, body1.flexible_count) = -psi_a;
   }
   const int o = k.n1;
   k.jacobian.block<3, 3>(0, o) = k.A1.transpose();
   k.jacobian.block<3, 3>(0, o + 3) = -k.R12 * Skew(k.u_b);
   k.jacobian.block(0, o + 6, 3, body2.flexible_count) = k.R12 * (*k.phi_b);
-  // δ(R ψ_b) over δθ2: δR = R skew(δθ2), so −R skew(ψ_b) δθ2; over η2: R Ψ_b.
-  k.jacobian.block<3, 3>(3, o + 3) = g2 - k.R * Skew(k.psi_eta_b);
-  k.jacobian.block(3, o + 6, 3, body2.flexible_count) = k.R * psi_b;
-  k.psi_b = &psi_b;
+  k.jacobian.block<3, 3>(3, o + 3) = g2;
+  k.jacobian.block(3, o + 6, 3, body2.flexible_count) = psi_b;
   return k;
 }
 
@@ -108,23 +101,6 @@ MatX CouplingJacobianDerivative(const CouplingKinematics& k, const Vec6& lambda)
   h.block(o + 3, o + 6, 3, nf2) += -Skew(r12t_lt) * phi_b;         // [θ2, η2]
   h.block(o + 6, o + 3, nf2, 3) += phi_b.transpose() * Skew(r12t_lt);  // [η2, θ2]
   h.block<3, 3>(o + 3, o + 3) += g2_d2;
-  // The turned elastic rotation R ψ_b (its generalized force with s = R0 λ_r: θ1: skew(s) R12 ψ_b,
-  // θ2: skew(ψ_b) R12ᵀ s, η2: Ψ_bᵀ R12ᵀ s), differentiated with δR12 = −skew(δθ1) R12 + R12 skew(δθ2).
-  const Eigen::Matrix<double, 3, Eigen::Dynamic>& psi_b = *k.psi_b;
-  const Vec3 s = k.R0 * lr;
-  const Vec3 back = k.R12.transpose() * s;  // R12ᵀ s
-  const Mat3 skew_psi = Skew(k.psi_eta_b);
-  h.block<3, 3>(o + 3, o + 3) += skew_psi * Skew(back);                  // [θ2, θ2]
-  h.block(o + 3, o + 6, 3, nf2) += -Skew(back) * psi_b;                   // [θ2, η2]
-  h.block(o + 6, o + 3, nf2, 3) += psi_b.transpose() * Skew(back);        // [η2, θ2]
-  if (k.n1 > 0) {
-    const Mat3 skew_s = Skew(s);
-    h.block<3, 3>(3, 3) += skew_s * Skew(k.R12 * k.psi_eta_b);             // [θ1, θ1]
-    h.block<3, 3>(3, o + 3) += -skew_s * k.R12 * skew_psi;                 // [θ1, θ2]
-    h.block(3, o + 6, 3, nf2) += skew_s * k.R12 * psi_b;                   // [θ1, η2]
-    h.block<3, 3>(o + 3, 3) += -skew_psi * k.R12.transpose() * skew_s;     // [θ2, θ1]
-    h.block(o + 6, 3, nf2, 3) += -psi_b.transpose() * k.R12.transpose() * skew_s;  // [η2, θ1]
-  }
   return h;
 }
 

@@ -4,11 +4,10 @@
 //
 // Strain in side 1's frame A1 (for the ground: a fixed frame):
 //   e_t = A1ᵀ (r2 + A2 u_b − r1) − u_a                          (relative translation)
-//   e_r = vee(skew(R)) + R Ψ_b η2 − Ψ_a η1,  R = R0ᵀ A1ᵀ A2      (relative rotation)
+//   e_r = vee(skew(R)) + Ψ_b η2 − Ψ_a η1,  R = R0ᵀ A1ᵀ A2        (relative rotation)
 // with u the node offsets ρ + Φη, Ψη the small elastic node rotations, R0 a built-in relative
 // rotation (a bent housing; I otherwise). vee(skew(R)) = ½ (R − Rᵀ)^∨ is the rotation vector for
-// small relative rotations; R takes side 2's small elastic rotation into the strain's frame (frames
-// twisted against each other by a torque are not parallel). Columns of the Jacobian B = ∂e/∂v follow the velocities of side 1
+// small relative rotations. Columns of the Jacobian B = ∂e/∂v follow the velocities of side 1
 // (ṙ1, ω1, η̇1; absent for the ground) then side 2 (ṙ2, ω2, η̇2), with δA = A skew(δθ).
 #pragma once
 
@@ -32,8 +31,6 @@ struct CouplingKinematics {
   Mat3 A1 = Mat3::Identity(), R12 = Mat3::Identity(), R0 = Mat3::Identity(), R = Mat3::Identity();
   Vec3 w = Vec3::Zero(), u_b = Vec3::Zero(), vee_r = Vec3::Zero();
   const Eigen::Matrix<double, 3, Eigen::Dynamic>* phi_b = nullptr;
-  const Eigen::Matrix<double, 3, Eigen::Dynamic>* psi_b = nullptr;
-  Vec3 psi_eta_b = Vec3::Zero();  // Ψ_b η2, side 2's frame
 };
 
 CouplingKinematics ComputeCouplingKinematics(const CouplingEnd& end1, const CouplingEnd& end2,

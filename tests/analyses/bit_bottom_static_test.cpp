@@ -65,7 +65,9 @@ TEST(BitBottomStatic, TransientStartsOnBottomInBalance) {
   TransientSettings settings;
   settings.bit_rock = BottomOnly();
   const VecX q0 = TransientStartPositions(input, start, cache, settings, StaticSettings{});
-  const model::ModelInput moving_input = PlaceBottomAtStart(TransientModelInput(input, settings), start, q0);
+  const double fluid_frequency = TransientFluidFrequency(input, start, q0, settings);
+  const model::ModelInput moving_input =
+      PlaceBottomAtStart(TransientModelInput(input, settings, fluid_frequency), start, q0);
   const model::BuiltModel moving = model::BuildSystemModel(moving_input, cache);
   // The contact carries the start's WOB, pressed in by W/k.
   EXPECT_NEAR(ContactForce(moving, q0), wob, 1e-9 * wob);
