@@ -10,6 +10,7 @@
 #include <cmath>
 #include <complex>
 #include <functional>
+#include <string>
 
 #include "validation_support.hpp"
 
@@ -78,6 +79,13 @@ double ClampedDeterminant(double compression, double torque, double ei, double l
   return (det * std::exp(-i * (m1 + m2) * length / 2.0)).imag();
 }
 
+// Prints the figure beside its reference and asserts it within 1 %.
+void ExpectWithinOnePercent(const std::string& what, double computed, double reference) {
+  std::printf("[ measure  ] %s: %.6g against %.6g (%+.3f %%)\n", what.c_str(), computed, reference,
+              100.0 * RelativeError(computed, reference));
+  EXPECT_LT(std::abs(RelativeError(computed, reference)), 0.01) << what;
+}
+
 TEST(V2GreenhillTorque, ClampedRodPureTorqueWithinOnePercent) {
   // tan x = x: x1 = 4.493409457909064 (A&S Table 4.19); T_cr = 2 x1 EI/L.
   const double x1 = Bisect([](double x) { return std::tan(x) - x; }, 4.4, 4.6);
@@ -86,9 +94,7 @@ TEST(V2GreenhillTorque, ClampedRodPureTorqueWithinOnePercent) {
   const auto results = RunCase("buckling", "v2-torque-buckling/clamped-torque.yaml");
   ASSERT_TRUE(results.contains("buckling"));
   const double critical = results["buckling"]["load_factor"].get<double>() * 50e3;
-  std::printf("[ measure  ] Greenhill clamped: T_cr %.1f N·m against %.1f N·m (%+.3f %%)\n", critical, reference,
-              100.0 * RelativeError(critical, reference));
-  EXPECT_LT(std::abs(RelativeError(critical, reference)), 0.01);
+  ExpectWithinOnePercent("Greenhill clamped, T_cr (N·m)", critical, reference);
 }
 
 TEST(V2GreenhillTorque, ClampedRodTorqueAndCompressionWithinOnePercent) {
@@ -103,10 +109,9 @@ TEST(V2GreenhillTorque, ClampedRodTorqueAndCompressionWithinOnePercent) {
   const auto results = RunCase("buckling", "v2-torque-buckling/clamped-combined.yaml");
   ASSERT_TRUE(results.contains("buckling"));
   const double computed = results["buckling"]["load_factor"].get<double>();
-  std::printf("[ measure  ] Greenhill combined: multiplier %.5f against %.5f (%+.3f %%; P = %.3f P_E, T = %.3f EI/L)\n",
-              computed, multiplier, 100.0 * RelativeError(computed, multiplier), multiplier * compression / euler,
-              multiplier * torque * kRodLength / kRodEI);
-  EXPECT_LT(std::abs(RelativeError(computed, multiplier)), 0.01);
+  ExpectWithinOnePercent(fmt::format("Greenhill combined, multiplier (onset at P = {:.3f} P_E, T = {:.3f} EI/L)",
+                                     multiplier * compression / euler, multiplier * torque * kRodLength / kRodEI),
+                         computed, multiplier);
 }
 
 // The collars of the vertical-hole cases: 6-3/4 in × 2-13/16 in steel (E = 210 GPa, 7850 kg/m³), no
@@ -131,9 +136,7 @@ TEST(V2VerticalHole, StandingColumnUnderItsWeightWithinOnePercent) {
   ASSERT_TRUE(results.contains("buckling"));
   EXPECT_EQ(results["buckling"]["scaled"], "all");
   const double computed = results["buckling"]["load_factor"].get<double>();
-  std::printf("[ measure  ] standing column: multiplier %.5f against %.5f (%+.3f %%)\n", computed, reference,
-              100.0 * RelativeError(computed, reference));
-  EXPECT_LT(std::abs(RelativeError(computed, reference)), 0.01);
+  ExpectWithinOnePercent("standing column, multiplier", computed, reference);
 }
 
 TEST(V2VerticalHole, LubinskiStringWithItsTopFreeWithinOnePercent) {
@@ -143,9 +146,7 @@ TEST(V2VerticalHole, LubinskiStringWithItsTopFreeWithinOnePercent) {
   ASSERT_TRUE(results.contains("buckling"));
   EXPECT_EQ(results["buckling"]["scaled"], "wob");
   const double computed = results["buckling"]["critical_wob"].get<double>();
-  std::printf("[ measure  ] Lubinski, top free: critical WOB %.1f N against %.1f N (%+.3f %%)\n", computed, reference,
-              100.0 * RelativeError(computed, reference));
-  EXPECT_LT(std::abs(RelativeError(computed, reference)), 0.01);
+  ExpectWithinOnePercent("Lubinski, top free, critical WOB (N)", computed, reference);
 }
 
 // Lubinski's hinged–hinged column in units of m: the slope u = y′ obeys u″ − (x − p) u = c (the
@@ -191,10 +192,9 @@ TEST(V2VerticalHole, LubinskiStringPinnedAtBothEndsWithinOnePercent) {
   const auto results = RunCase("buckling", "v2-vertical-hole/lubinski-pinned-top.yaml");
   ASSERT_TRUE(results.contains("buckling"));
   const double computed = results["buckling"]["critical_wob"].get<double>();
-  std::printf("[ measure  ] Lubinski, both ends pinned %.2f m apart (p = %.5f): critical WOB %.1f N against %.1f N "
-              "(%+.3f %%)\n",
-              length, p, computed, reference, 100.0 * RelativeError(computed, reference));
-  EXPECT_LT(std::abs(RelativeError(computed, reference)), 0.01);
+  ExpectWithinOnePercent(fmt::format("Lubinski, both ends pinned {:.2f} m units apart (p = {:.5f}), critical WOB (N)",
+                                     length, p),
+                         computed, reference);
 }
 
 }  // namespace

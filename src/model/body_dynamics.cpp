@@ -91,6 +91,7 @@ struct MembraneStrain {
   const VecX& row;   // rowᵀη: the linear force (N) or torque (N·m)
   const MatX& geometric;  // G per unit force or torque
   double stiffness;  // k = EA/L (N) or GJ/L (N·m)
+  bool present() const { return row.size() > 0 && geometric.size() > 0; }  // a body built without it: none
 };
 
 std::array<MembraneStrain, 2> MembraneStrains(const Body& body) {
@@ -100,10 +101,18 @@ std::array<MembraneStrain, 2> MembraneStrains(const Body& body) {
                          body.torsional_rigidity / body.length()}};
 }
 
-// F = rowᵀη + (k/2) ηᵀGη of one strain (0 for a body built without it).
-double MembraneForce(const MembraneStrain& strain, const VecX& eta) {
-  if (strain.row.size() == 0 || strain.geometric.size() == 0) return 0.0;
-  return strain.row.dot(eta) + 0.5 * strain.stiffness * eta.dot(strain.geometric * eta);
+// One strain at η: Gη, ηᵀGη and the force F = rowᵀη + (k/2) ηᵀGη.
+struct MembraneState {
+  VecX geometric;      // G η
+  double bending = 0;  // ηᵀ G η
+  double force = 0;    // F
+};
+MembraneState EvaluateMembrane(const MembraneStrain& strain, const VecX& eta) {
+  MembraneState state;
+  state.geometric = strain.geometric * eta;
+  state.bending = eta.dot(state.geometric);
+  state.force = strain.row.dot(eta) + 0.5 * strain.stiffness * state.bending;
+  return state;
 }
 
 }  // namespace
@@ -111,11 +120,13 @@ double MembraneForce(const MembraneStrain& strain, const VecX& eta) {
 double BodyAxialForce(const Body& body, const BodyPose& pose) {
   // N = EA ε with the mean axial strain including the foreshortening of the bending:
   // ε L = Δu + ½ ∫(v′² + w′²) = Δu + ½ ηᵀ K_G,ff η (K_G per unit axial force).
-  return MembraneForce(MembraneStrains(body)[0], pose.eta);
+  const MembraneStrain axial = MembraneStrains(body)[0];
+  return axial.present() ? EvaluateMembrane(axial, pose.eta).force : 0.0;
 }
 
 double BodyTorque(const Body& body, const BodyPose& pose) {
-  return MembraneForce(MembraneStrains(body)[1], pose.eta);
+  const MembraneStrain torsion = MembraneStrains(body)[1];
+  return torsion.present() ? EvaluateMembrane(torsion, pose.eta).force : 0.0;
 }
 
 void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& velocity, VecX& residual) {
@@ -125,10 +136,9 @@ void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& veloci
   auto modal = residual.tail(nf);
   modal.noalias() += reduced.modal_stiffness * eta + reduced.modal_damping * velocity.tail(nf);
   for (const MembraneStrain& strain : MembraneStrains(body)) {
-    if (strain.row.size() == 0 || strain.geometric.size() == 0) continue;
-    const VecX geometric = strain.geometric * eta;
-    const double force = strain.row.dot(eta) + 0.5 * strain.stiffness * eta.dot(geometric);
-    modal.noalias() += force * geometric + 0.5 * eta.dot(geometric) * strain.row;
+    if (!strain.present()) continue;
+    const MembraneState state = EvaluateMembrane(strain, eta);
+    modal.noalias() += state.force * state.geometric + 0.5 * state.bending * strain.row;
   }
 }
 
@@ -139,12 +149,11 @@ void AddElasticMatrices(const Body& body, const BodyPose& pose, double cK, doubl
   if (cK != 0.0) {
     block.noalias() += cK * reduced.modal_stiffness;
     for (const MembraneStrain& strain : MembraneStrains(body)) {
-      if (strain.row.size() == 0 || strain.geometric.size() == 0) continue;
-      const VecX geometric = strain.geometric * pose.eta;
-      const double force = strain.row.dot(pose.eta) + 0.5 * strain.stiffness * pose.eta.dot(geometric);
-      block.noalias() += cK * (force * strain.geometric + geometric * strain.row.transpose() +
-                               strain.row * geometric.transpose() +
-                               strain.stiffness * geometric * geometric.transpose());
+      if (!strain.present()) continue;
+      const MembraneState state = EvaluateMembrane(strain, pose.eta);
+      const VecX& g = state.geometric;
+      block.noalias() += cK * (state.force * strain.geometric + g * strain.row.transpose() +
+                               strain.row * g.transpose() + strain.stiffness * g * g.transpose());
     }
   }
   if (cD != 0.0) block.noalias() += cD * reduced.modal_damping;
@@ -155,8 +164,8 @@ double BodyElasticEnergy(const Body& body, const BodyPose& pose) {
   const VecX& eta = pose.eta;
   double energy = 0.5 * eta.dot(reduced.modal_stiffness * eta);
   for (const MembraneStrain& strain : MembraneStrains(body)) {
-    if (strain.row.size() == 0 || strain.geometric.size() == 0) continue;
-    const double bending = eta.dot(strain.geometric * eta);
+    if (!strain.present()) continue;
+    const double bending = EvaluateMembrane(strain, eta).bending;
     energy += 0.5 * strain.row.dot(eta) * bending + strain.stiffness * bending * bending / 8.0;
   }
   return energy;

@@ -171,3 +171,24 @@ TEST(ElasticForces, BentBodyWithFreeAxialEndCarriesNoAxialForce) {
 
 }  // namespace
 }  // namespace drillflex::model
+
+namespace drillflex::model {
+namespace {
+
+// The body's torque (body_dynamics.hpp BodyTorque) of a uniform twist θx′ = τ is GJ τ: the body
+// twisted by TwistKeepingShape's elastic twist rate (its modes fitted to θx,k = τ (x_k − x_mid)).
+TEST(ElasticForces, UniformTwistCarriesTorqueGJTimesTwistRate) {
+  cms::ReductionCache cache;
+  const BuiltModel built = BuildSystemModel(testing::RodInput(1, 10, 6), cache);
+  const Body& body = built.system.bodies().front();
+  VecX q = built.system.ReferencePositions();
+  const double twist_rate = 0.02;  // rad/m
+  TwistKeepingShape(body, 0.0, q, twist_rate);
+  const BodyPose pose = PoseOf(body, q);
+  EXPECT_NEAR(BodyTorque(body, pose), body.torsional_rigidity * twist_rate,
+              1e-6 * body.torsional_rigidity * twist_rate);
+  EXPECT_NEAR(BodyAxialForce(body, pose), 0.0, 1e-6);  // N: a twist does not stretch it
+}
+
+}  // namespace
+}  // namespace drillflex::model
