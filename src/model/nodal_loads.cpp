@@ -81,20 +81,19 @@ void AddAxialGradient(const std::vector<MatX>& by_axis, const BodyPose& pose, do
   if (by_axis.empty()) return;
   const int nf = static_cast<int>(pose.eta.size());
   const Vec3 axis = pose.A.col(0);
-  MatX combined = MatX::Zero(nf, nf);
-  Eigen::Matrix<double, Eigen::Dynamic, 3> products(nf, 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> products(nf, 3);  // P
   Vec3 squares;
   for (int i = 0; i < 3; ++i) {
-    combined += axis(i) * by_axis[i];
     products.col(i) = by_axis[i] * pose.eta;
     squares(i) = pose.eta.dot(products.col(i));
   }
   const Mat3 skew_x = Skew(Vec3::UnitX());
   const Vec3 body_squares = pose.A.transpose() * squares;
-  out.force.tail(nf).noalias() += lambda * (combined * pose.eta);
+  out.force.tail(nf).noalias() += lambda * (products * axis);  // G_d η = P c
   out.force.segment<3>(3) += 0.5 * lambda * Vec3::UnitX().cross(body_squares);
   if (!with_matrices) return;
-  out.stiffness.bottomRightCorner(nf, nf) += lambda * combined;
+  auto eta_eta = out.stiffness.bottomRightCorner(nf, nf);
+  for (int i = 0; i < 3; ++i) eta_eta += (lambda * axis(i)) * by_axis[i];
   const MatX eta_theta = -lambda * products * pose.A * skew_x;
   out.stiffness.block(6, 3, nf, 3) += eta_theta;
   out.stiffness.block(3, 6, 3, nf) += eta_theta.transpose();
