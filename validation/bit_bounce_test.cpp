@@ -18,6 +18,8 @@
 #include <sstream>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
@@ -67,6 +69,7 @@ Bounce RunAt(double amplitude, const std::string& name) {
   text << in.rdbuf();
   const std::string variant = std::regex_replace(text.str(), std::regex(R"(amplitude: [0-9.]+ mm)"),
                                                  fmt::format("amplitude: {:.9g} m", amplitude));
+  EXPECT_NE(variant, text.str()) << "the case's bottom amplitude was not found to vary";
   const std::string path = ResultsDirectory("v8-transient/bit-bounce") + "-" + name + ".yaml";
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   std::ofstream(path) << variant;
@@ -105,7 +108,7 @@ TEST(BitBounce, OnsetAmplitudeMatchesTheContinuousBar) {
               "onset %.5g mm, %+.3f %% off\n",
               below.smallest, below.largest, mean, kWob, swing, 0.95 * onset * per_amplitude, 1e3 * measured_onset,
               100.0 * RelativeError(measured_onset, onset));
-  EXPECT_NEAR(RelativeError(measured_onset, onset), 0.0, 0.05);
+  EXPECT_NEAR(RelativeError(measured_onset, onset), 0.0, 0.01);  // measured −0.32 % (validation.md)
   EXPECT_NEAR(RelativeError(mean, kWob), 0.0, 0.01);  // the static WOB the contact took over at t = 0
   // Above it the bit leaves the bottom.
   EXPECT_TRUE(above.opened) << "smallest contact force " << above.smallest << " N";
@@ -120,7 +123,8 @@ TEST(BitBounce, OnsetAmplitudeMatchesTheContinuousBar) {
   const double bisected = 0.5 * (closed + open);
   std::printf("  bisected onset %.5g mm (between %.5g and %.5g), %+.3f %% off\n", 1e3 * bisected, 1e3 * closed,
               1e3 * open, 100.0 * RelativeError(bisected, onset));
-  EXPECT_NEAR(RelativeError(bisected, onset), 0.0, 0.05);
+  // Within 1 % (measured −0.39 %): the bracket itself is ±5 %, so a 5 % check could not fail.
+  EXPECT_NEAR(RelativeError(bisected, onset), 0.0, 0.01);
 }
 
 }  // namespace

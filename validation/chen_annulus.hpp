@@ -15,6 +15,8 @@
 // Inviscid check: C, D → 0 and the slip allowed give H = (α² + 1)/(α² − 1).
 #pragma once
 
+#include <stdexcept>
+
 #include <array>
 #include <cmath>
 #include <complex>
@@ -69,6 +71,7 @@ inline Complex PowerSeriesBesselI(int n, Complex z) {
 // H = C_m − i C_v for the radius ratio α = b/a > 1 and Stokes number S = ω a²/ν with |β| ≥ 20
 // (S ≥ 400: the expansions' range; V5's S is 1.7e4).
 inline Complex ForceRatio(double alpha, double stokes) {
+  if (stokes < 400.0) throw std::invalid_argument("ForceRatio: the scaled columns hold for S >= 400 only");
   const Complex beta = std::sqrt(Complex(0.0, stokes));
   // The Bessel columns scaled by e^{−βα} (I₁) and e^{β} (K₁) so that every entry is O(1) or less:
   // at x, I₁(βx) e^{−βα} = e^{β(x − α)} [e^{−βx} I₁(βx)], K₁(βx) e^{β} = e^{−β(x − 1)} [e^{βx} K₁(βx)].

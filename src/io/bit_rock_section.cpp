@@ -43,6 +43,7 @@ model::BitRockParameters ReadBitRockSection(const YamlView& node) {
   node.ExpectMap("the bit-rock interaction {law, ...}", false);
   model::BitRockParameters p;
   p.stick_speed = node.OptionalPositive("stick_speed", Quantity::RotarySpeed).value_or(model::kDefaultStickSpeed);
+  // `bottom:` present even empty (`bottom: {}`, `bottom:`) switches the contact on with its defaults.
   if (const auto bottom = node.PresentChild("bottom")) p.bottom = ReadBottom(*bottom);
   if (const auto side = node.OptionalChild("side_cutting")) p.side_cutting = ReadSideCutting(*side);
   const std::string law = node.Has("law") ? node.Child("law").AsString() : "";

@@ -24,13 +24,6 @@ std::string BitSideCuttingElement::Describe() const {
   return fmt::format("side cutting of the bit (k_s = {:.4g} N/m)", parameters_.resistance);
 }
 
-Vec3 BitSideCuttingElement::LateralForce(const ElementState& state) const {
-  const NodeMotion motion = ComputeNodeMotion(*bodies()[0], *state.poses[0], 0, state.velocity);
-  const double spin = -axis_.dot(motion.angular_velocity);
-  const double omega_r = std::sqrt(spin * spin + parameters_.stick_speed * parameters_.stick_speed);
-  return -(2.0 * kPi * parameters_.resistance / omega_r) * (motion.velocity - axis_ * axis_.dot(motion.velocity));
-}
-
 void BitSideCuttingElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
   const Body& bit = *bodies()[0];
   const BodyPose& pose = *state.poses[0];

@@ -37,8 +37,6 @@ class BitSideCuttingElement : public ForceElement {
   BitSideCuttingElement(const Body* bit, const BitSideCuttingParameters& parameters);
   std::string Describe() const override;
   const BitSideCuttingParameters& parameters() const { return parameters_; }
-  // The lateral force on the bit at a state (global), N.
-  Vec3 LateralForce(const ElementState& state) const;
 
  protected:
   void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;
