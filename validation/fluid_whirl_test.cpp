@@ -12,7 +12,8 @@
 //    of the mass whirling with the node, (m_s + m_i + C_m ρ π a²) L_k e ω_w² (L_k = 2.5 ft, the node's
 //    share; e the offset), within 10 %: an estimate, not an exact reference (the bow's elastic push
 //    and the neighbouring nodes' share are left out of it: in air the steel alone gives 803 lbf
-//    against the 824 measured, +2.6 %; in mud +7.3 % measured, the buoyed span being more compressed).
+//    against the 824 measured, +2.6 %; in mud +7.3 % measured, the difference not explained: not buoyancy,
+//    the gravity-free eccentric collar reads the same).
 //    Without the fluid's mass (56 % over the steel's) the force would be 35 % below the estimate.
 #include <algorithm>
 #include <cmath>

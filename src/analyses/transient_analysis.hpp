@@ -82,7 +82,7 @@ using TransientProgress = std::function<void(double time, double duration)>;
 // the fluid moves with the bodies sideways (model/fluid_inertia.hpp), the annulus's C_m and C_v
 // taken at `fluid_frequency` (rad/s; TransientFluidFrequency).
 model::ModelInput TransientModelInput(const model::ModelInput& input, const TransientSettings& settings,
-                                      double fluid_frequency = 0.0);
+                                      double fluid_frequency);
 
 // The circular frequency (rad/s) at which a transient takes the annulus's frequency-dependent
 // added mass C_m(ω) and damping C_v(ω) (Chen, Wambsganss & Jendrzejczyk 1976; fe/annulus_fluid.hpp):

@@ -40,7 +40,8 @@ struct ReducedBody {
   // Per node k (body frame):
   std::vector<Vec3> node_positions;              // ρ_k = (x_k, 0, 0), m
   std::vector<double> node_mass;                 // structural lumped mass m_k (isotropic), kg
-  std::vector<double> node_lateral_mass;         // fluid lumped mass, moves in y and z only, kg
+  std::vector<double> node_lateral_mass;         // fluid lumped mass, moves in y and z only, kg (the FE route;
+                                                 // a string's model carries its fluid as Body::fluid_lateral_mass)
   std::vector<Mat3> node_rotary_inertia;         // J_k about the node, kg·m²
   std::vector<Matrix3X> node_translation_modes;  // Φ_k: rows (u, v, w) of U, m per unit η
   std::vector<Matrix3X> node_rotation_modes;     // Ψ_k: rows (θx, θy, θz) of U, rad per unit η

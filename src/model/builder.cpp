@@ -371,7 +371,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       parameters.tangential_friction = contact.friction;
       parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
       parameters.regularization_velocity =
-          contact.friction_velocity.value_or(kFrictionRegularizationRate * parameters.contact_radius);
+          contact.friction_velocity.value_or(kFrictionRegularizationSpin * parameters.contact_radius);
       parameters.prescribed_sliding = input.static_sliding;
       contact_elements.push_back(static_cast<int>(elements.size()));
       elements.push_back(std::make_unique<WallContactElement>(body, k, wellbore, parameters, input.bit_md - s));

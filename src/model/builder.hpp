@@ -112,12 +112,13 @@ struct BuiltModel {
 // The wall contacts' friction regularization velocity v_ε (method.md §6: below it the friction is
 // viscous) by default, per contact: v_ε = Ω_ε R_c, R_c the contact circle's radius. The paper
 // (Pogorelov et al., ESDA 2012, §2.3) sets v_ε "equal to [...] where [...] is the characteristic size
-// (radius) of contacting bodies"; its factor is lost from the text we have. Taken: Ω_ε = 0.01 rad/s
-// (0.1 rpm), the bit-rock law's stick speed (model/bit_rock.hpp kDefaultStickSpeed): a section
+// (radius) of contacting bodies"; its factor is lost from the text we have. Taken (drillflex's own
+// choice, not the paper's): Ω_ε = 0.01 rad/s (0.1 rpm), the bit-rock law's stick speed
+// (model/bit_rock.hpp kDefaultStickSpeed): a section
 // turning slower than 0.1 rpm on the wall slides viscously, whatever its size. For the 8 in collar of
 // V8 that is 1.02 mm/s, the 1 mm/s drillflex used for every contact before. The case's
 // `model.contact.friction_velocity` replaces it (ContactSettings::friction_velocity).
-inline constexpr double kFrictionRegularizationRate = 0.01;  // rad/s
+inline constexpr double kFrictionRegularizationSpin = kDefaultStickSpeed;  // Ω_ε, rad/s
 
 // Damping ratio of the coupling and support springs, with the element masses of the joined bodies.
 inline constexpr double kCouplingDampingRatio = 0.05;

@@ -65,6 +65,11 @@ void AttachLateralFluid(const ModelInput& input, double circular_frequency, std:
     throw LogicError("AttachLateralFluid: a viscous fluid's annulus terms need a positive frequency");
   }
   for (Body& body : bodies) {
+    // The reduction's own lateral node mass (fe::BodyFeOptions added/internal fluid mass) is the
+    // other way to carry the fluid; both at once would count it twice.
+    for (const double m : body.reduced->node_lateral_mass) {
+      if (m != 0.0) throw LogicError("AttachLateralFluid: the body's reduction already carries a lateral fluid mass");
+    }
     body.fluid_lateral_mass = VecX::Zero(body.node_count());
     body.fluid_lateral_damping = VecX::Zero(body.node_count());
   }

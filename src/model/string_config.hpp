@@ -71,7 +71,7 @@ struct ContactSettings {
   double friction = 0.25;        // tangential (rotating) Coulomb coefficient
   std::optional<double> axial_friction;  // sliding along the hole, default = friction
   // The friction's regularization velocity v_ε, m/s (model/wall_contact.hpp): below it the friction
-  // is viscous. Unset: each contact's from its circle's radius, kFrictionRegularizationRate × R_c
+  // is viscous. Unset: each contact's from its circle's radius, kFrictionRegularizationSpin × R_c
   // (model/builder.hpp; the paper sets v_ε from the characteristic size of the contacting bodies).
   std::optional<double> friction_velocity;
 };

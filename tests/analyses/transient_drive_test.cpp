@@ -50,7 +50,7 @@ DrivenRun RunDriven(std::optional<model::TopDrive> drive, std::optional<model::B
   settings.top_drive = drive;
   settings.block = block;
   cms::ReductionCache cache;
-  const model::BuiltModel built = model::BuildSystemModel(TransientModelInput(input, settings), cache);
+  const model::BuiltModel built = model::BuildSystemModel(TransientModelInput(input, settings, 0.0), cache);
   return {RunTransient(built, built.system.ReferencePositions(), settings)};
 }
 

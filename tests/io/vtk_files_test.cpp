@@ -332,7 +332,7 @@ TEST(VtkFiles, TransientFramesAreACollectionOfStringFilesAtTheirTimes) {
   const model::ModelInput input = MakeModelInput(c);
   const model::BuiltModel built = model::BuildSystemModel(input, cache);
   const VecX start = analyses::TransientStartPositions(input, built, cache, settings, analyses::StaticSettings{});
-  const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings), cache);
+  const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings, 0.0), cache);
   const analyses::TransientResult result = analyses::RunTransient(moving, start, settings);
   // 21 samples: every 5th (⌈20 / 4⌉) is a frame, t = 0 and the end among them.
   ASSERT_EQ(result.frame_q.size(), 5u);

@@ -21,6 +21,7 @@
 #include "core/so3.hpp"
 #include "model/builder.hpp"
 #include "model/spring_elements.hpp"
+#include "model_test_support.hpp"
 #include "model/static_problem.hpp"
 #include "solvers/newton.hpp"
 #include "solvers/problem.hpp"
@@ -663,6 +664,41 @@ TEST(WallContactStaticTest, PinnedStringInAHorizontalHoleMatchesBeamTheory) {
   EXPECT_NEAR(std::abs(tilt.y()) / expected_tilt, 1.0, 0.02);
   EXPECT_NEAR(tilt.z() / expected_tilt, 0.0, 1e-3);  // in the vertical plane
   EXPECT_NEAR(middle_force / (q * element), 1.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace drillflex::model
+
+namespace drillflex::model {
+namespace {
+
+// The wall contacts' friction regularization velocity (builder.hpp kFrictionRegularizationSpin): by
+// default Ω_ε R_c for each contact circle, its own radius; the case's friction_velocity replaces it.
+TEST(WallContactBuilder, FrictionVelocityIsTheSpinTimesTheContactRadiusUnlessGiven) {
+  ModelInput input = testing::RodInput(3, 5, 4);
+  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.5, 0.0}, {100.0, 0.5, 0.0}});
+  input.hole = {well::HoleSection{std::nullopt, 0.1524, std::nullopt}};
+  input.bit_md = 50.0;
+  input.gravity = 9.81;
+  input.settings.contact.friction = 0.25;
+  cms::ReductionCache cache;
+  auto velocities = [&](const ModelInput& in) {
+    const BuiltModel built = BuildSystemModel(in, cache);
+    std::vector<std::pair<double, double>> pairs;  // (R_c, v_ε)
+    for (const int index : built.contact_elements) {
+      const auto& contact = static_cast<const WallContactElement&>(*built.system.elements()[index]);
+      pairs.emplace_back(contact.parameters().contact_radius, contact.parameters().regularization_velocity);
+    }
+    return pairs;
+  };
+  const auto defaults = velocities(input);
+  ASSERT_FALSE(defaults.empty());
+  for (const auto& [radius, velocity] : defaults) {
+    EXPECT_GT(radius, 0.0);
+    EXPECT_DOUBLE_EQ(velocity, 0.01 * radius);  // Ω_ε = 0.01 rad/s (0.1 rpm)
+  }
+  input.settings.contact.friction_velocity = 2.5e-3;
+  for (const auto& [radius, velocity] : velocities(input)) EXPECT_DOUBLE_EQ(velocity, 2.5e-3);
 }
 
 }  // namespace
