@@ -44,14 +44,6 @@ NodeMotion NodeMotionOf(const Body& body, const BodyPose& pose, const FrameMotio
   return node;
 }
 
-// J_k = [Aᵀ, −ũ_k, Φ_k], 3 × (6 + n_f).
-void NodeJacobian(const Body& body, const BodyPose& pose, int k, const Vec3& offset, Rows3& jacobian) {
-  jacobian.resize(3, body.velocity_count());
-  jacobian.leftCols<3>() = pose.A.transpose();
-  jacobian.middleCols<3>(3) = -Skew(offset);
-  jacobian.rightCols(body.flexible_count) = body.reduced->node_translation_modes[k];
-}
-
 // F_k = m (Π ṫ + ω × Π t) + c Π t, body frame.
 Vec3 NodeForce(double mass, double damping, const Vec3& omega, const NodeMotion& node) {
   const Vec3 lateral = Lateral(node.velocity);
@@ -59,6 +51,14 @@ Vec3 NodeForce(double mass, double damping, const Vec3& omega, const NodeMotion&
 }
 
 }  // namespace
+
+void NodeVelocityJacobian(const Body& body, const BodyPose& pose, int k, const Vec3& offset,
+                          Eigen::Matrix<double, 3, Eigen::Dynamic>& jacobian) {
+  jacobian.resize(3, body.velocity_count());
+  jacobian.leftCols<3>() = pose.A.transpose();
+  jacobian.middleCols<3>(3) = -Skew(offset);  // ω × u = −ũ ω
+  jacobian.rightCols(body.flexible_count) = body.reduced->node_translation_modes[k];
+}
 
 VecX BodyFluidForces(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration) {
   const int nf = body.flexible_count;
@@ -92,14 +92,14 @@ void AddFluidMatrices(const Body& body, const BodyPose& pose, const VecX& veloci
   const Mat3 projection = Vec3(0.0, 1.0, 1.0).asDiagonal();
   const Mat3 omega_skew = Skew(frame.omega);
   const Mat3 velocity_skew = Skew(frame.velocity);
-  thread_local Rows3 jacobian, velocity_part, rate_part, force_part, moment_part;
+  thread_local Rows3 jacobian, velocity_part, rate_part, force_part, moment_part, lateral_velocity_part;
   for (int k = 0; k < body.node_count(); ++k) {
     const double mass = body.fluid_lateral_mass[k], damping = body.fluid_lateral_damping[k];
     if (mass == 0.0 && damping == 0.0) continue;
     const auto& phi = body.reduced->node_translation_modes[k];
     const NodeMotion node = NodeMotionOf(body, pose, frame, velocity, acceleration, k);
     const Vec3 lateral = Lateral(node.velocity);
-    NodeJacobian(body, pose, k, node.offset, jacobian);
+    NodeVelocityJacobian(body, pose, k, node.offset, jacobian);
     // cK ∂t/∂q + cD ∂t/∂v and cK ∂ṫ/∂q + cD ∂ṫ/∂v + cM ∂ṫ/∂a.
     velocity_part.noalias() = cD * jacobian;
     rate_part.noalias() = cM * jacobian;
@@ -114,12 +114,13 @@ void AddFluidMatrices(const Body& body, const BodyPose& pose, const VecX& veloci
       rate_part.middleCols<3>(3) += cK * (Skew(frame.acceleration) - omega_skew * velocity_skew);
       rate_part.rightCols(nf).noalias() += cK * Skew(frame.omega_rate) * phi;
     }
-    const Rows3 lateral_velocity_part = projection * velocity_part;
+    lateral_velocity_part = velocity_part;  // Π (∂t): the row across x zeroed
+    lateral_velocity_part.row(0).setZero();
     force_part.noalias() = mass * (projection * rate_part + omega_skew * lateral_velocity_part);
     force_part.noalias() += damping * lateral_velocity_part;
     if (cD != 0.0) force_part.middleCols<3>(3) -= (cD * mass) * Skew(lateral);
     moment_part.noalias() = mass * (Skew(node.velocity) * lateral_velocity_part - Skew(lateral) * velocity_part);
-    matrix.noalias() += jacobian.transpose() * force_part;
+    matrix.noalias() += jacobian.transpose().lazyProduct(force_part);
     matrix.middleRows<3>(3) += moment_part;
     if (cK != 0.0) {
       const Vec3 force = NodeForce(mass, damping, frame.omega, node);
@@ -136,7 +137,7 @@ MatX BodyFluidMassMatrix(const Body& body, const BodyPose& pose) {
   Rows3 jacobian;
   for (int k = 0; k < body.node_count(); ++k) {
     if (body.fluid_lateral_mass[k] == 0.0) continue;
-    NodeJacobian(body, pose, k, pose.NodeOffset(body, k), jacobian);
+    NodeVelocityJacobian(body, pose, k, pose.NodeOffset(body, k), jacobian);
     mass.noalias() += body.fluid_lateral_mass[k] * jacobian.bottomRows<2>().transpose() * jacobian.bottomRows<2>();
   }
   return mass;

@@ -28,6 +28,11 @@
 
 namespace drillflex::model {
 
+// J_k = [Aᵀ, −ũ_k, Φ_k] (3 × (6 + n_f)): node k's body-frame velocity t_k = J_k v, u_k its `offset`.
+// Shared with the linear analyses' J_lat (model/lateral_fluid.hpp: its last two rows).
+void NodeVelocityJacobian(const Body& body, const BodyPose& pose, int k, const Vec3& offset,
+                          Eigen::Matrix<double, 3, Eigen::Dynamic>& jacobian);
+
 // Whether the body carries fluid lumps.
 inline bool HasLateralFluid(const Body& body) { return body.fluid_lateral_mass.size() > 0; }
 

@@ -1,5 +1,7 @@
 #include "model/lateral_fluid.hpp"
 
+#include "model/fluid_inertia.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -105,11 +107,9 @@ NodeFluidTerms CalcNodeFluidTerms(const LateralFluid& fluid, std::size_t index, 
 MatX LateralNodeJacobian(const SystemModel& model, const std::vector<BodyPose>& poses, const LateralFluidNode& node) {
   const Body& body = model.bodies()[node.body];
   const BodyPose& pose = poses[node.body];
-  MatX jacobian(3, body.velocity_count());
-  // t_k = Aᵀṙ + ω × u_k + Φ_k η̇ (body frame, method.md §4); ω × u = −ũ ω.
-  jacobian.leftCols<3>() = pose.A.transpose();
-  jacobian.middleCols<3>(3) = -so3::Skew(pose.NodeOffset(body, node.node));
-  jacobian.rightCols(body.flexible_count) = body.reduced->node_translation_modes[node.node];
+  // t_k = Aᵀṙ + ω × u_k + Φ_k η̇ (body frame, method.md §4).
+  Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian;
+  NodeVelocityJacobian(body, pose, node.node, pose.NodeOffset(body, node.node), jacobian);
   return jacobian.bottomRows<2>();
 }
 
