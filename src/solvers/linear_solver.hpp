@@ -55,6 +55,7 @@ class SparseLinearSolver {
   bool SamePattern(const SparseMat& matrix) const;
 
   SparseMat matrix_;  // compressed copy, for the backward-error check and the LU fallback
+  double matrix_norm_ = 0.0;  // ‖matrix_‖_F
   std::unique_ptr<Factors> factors_;
   bool factorized_ = false;
   bool use_lu_ = false;
