@@ -1,9 +1,10 @@
 // Reads the drives of `analyses.transient` (model/drives.hpp):
 //   top_drive: {rpm: 120, ramp: 2 s}   or   {torque: 15000 ft*lbf, ramp: 1 s}
-//   block:     {velocity: 0.5 m/s, ramp: 1 s}   or   {hook_load: 250 klbf}
+//   block:     {velocity: 0.5 m/s, ramp: 1 s}   or   {hook_load: 250 klbf, ramp: 1 s}
 // A top drive without rpm or torque turns at operation.rpm; without `top_drive` a transient whose
 // operation has rpm > 0 gets that speed drive with the default ramp. A block without velocity or
-// hook_load holds operation.hook_load.
+// hook_load holds operation.hook_load (a tension, ≥ 0: settings_section.cpp); the block's own
+// hook_load may be negative, a compression: the block pushes the top down-hole with that force.
 #include <fmt/format.h>
 
 #include "io/case_sections.hpp"
@@ -48,7 +49,7 @@ model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& opera
 }
 
 model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operation) {
-  node.ExpectMap("the block {velocity, ramp} or {hook_load}");
+  node.ExpectMap("the block {velocity, ramp} or {hook_load, ramp}");
   node.AllowOnlyKeys({"velocity", "hook_load", "ramp"});
   if (node.Has("velocity") && node.Has("hook_load")) {
     node.Fail("give the block either 'velocity' (+ pulling out, - running in) or 'hook_load', not both");
@@ -69,7 +70,6 @@ model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operat
   } else {
     node.Fail("the block has neither 'velocity' nor 'hook_load' (nor is there 'hook_load' under 'operation')");
   }
-  if (block.setting.target < 0.0) node.Child("hook_load").Fail("the hook load must not be negative (it is the tension the hook holds)");
   block.setting.ramp_time = RampTime(node, 0.0);
   return block;
 }

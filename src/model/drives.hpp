@@ -5,7 +5,7 @@
 // Signs, as a drilling engineer reads them: a speed or torque is positive clockwise looking
 // down-hole (right-hand about the down-hole axis, i.e. about −x of the string frame); the block
 // velocity is positive pulling out (up-hole, +x of the string frame); the hook load is the tension
-// the hook holds (pulling up-hole).
+// the hook holds (pulling up-hole; a negative one pushes the top down-hole).
 #pragma once
 
 #include <algorithm>
@@ -42,7 +42,7 @@ struct TopDrive {
 
 enum class BlockMode {
   Velocity,  // the top's axial position follows ∫ velocity dt through a stiff axial spring
-  HookLoad,  // a set axial force at the top (tension)
+  HookLoad,  // a set axial force at the top (tension; negative: compression, pushing the top down-hole)
 };
 
 struct BlockDrive {

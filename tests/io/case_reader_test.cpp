@@ -254,6 +254,14 @@ TEST(CaseReader, TransientDrives) {
   EXPECT_DOUBLE_EQ(torque.top_drive->setting.ramp_time, 0.0);
   EXPECT_EQ(torque.block->mode, model::BlockMode::HookLoad);
   EXPECT_NEAR(torque.block->setting.target, 50 * kLbf, 1e-9);  // operation.hook_load (lbf)
+  // The block's own hook load may be negative: a compression, pushing the top down-hole, here
+  // ramped from 0 over 25 s.
+  const auto pushing = transient("{block: {hook_load: -11 lbf, ramp: 25 s}}");
+  ASSERT_TRUE(pushing.block);
+  EXPECT_EQ(pushing.block->mode, model::BlockMode::HookLoad);
+  EXPECT_NEAR(pushing.block->setting.target, -11 * kLbf, 1e-9);
+  EXPECT_DOUBLE_EQ(pushing.block->setting.ramp_time, 25.0);
+  EXPECT_FALSE(pushing.block->at_surface);
   // No rpm anywhere: no drive.
   const Case resting = ParseCase("string:\n  - {type: collar, od: 0.2, id: 0.07, length: 30}\n"
                                  "analyses:\n  transient: {}\n", "rest.yaml");

@@ -123,7 +123,9 @@ TEST(TopDriveElement, TorqueDriveAppliesItsTorqueWithAnExactTangent) {
 
 TEST(BlockElement, VelocityAndHookLoadJacobiansMatchCentralDifferences) {
   cms::ReductionCache cache;
-  for (const BlockDrive block : {BlockDrive{BlockMode::Velocity, {0.5, 1.0}}, BlockDrive{BlockMode::HookLoad, {2e5, 0.0}}}) {
+  // The hook load in tension and, ramped, in compression (a negative hook load).
+  for (const BlockDrive block : {BlockDrive{BlockMode::Velocity, {0.5, 1.0}}, BlockDrive{BlockMode::HookLoad, {2e5, 0.0}},
+                                 BlockDrive{BlockMode::HookLoad, {-2e5, 0.3}}}) {
     const BuiltModel built = DrivenRod(cache, std::nullopt, block);
     ASSERT_GE(built.block_element, 0);
     const ElementProblem problem(built.system, built.block_element);
