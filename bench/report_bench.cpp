@@ -1,6 +1,6 @@
 // The cost of the engineer's files on the bundled example's static run (issue 20: under 0.1 s):
 // results.json and the CSV tables as every job writes them, and on top report.html
-// (io::ReportData, io::ComposeReportHtml) and the VTK files (io::AddStaticVtk), composed and
+// and the VTK files, composed (pipeline::ComposeResultFiles, as the command line does) and
 // written to disk (ResultFiles::Commit: temporary file and rename). The static solve is done once,
 // outside the timed loop. Never a timed test: build in Release and run by hand,
 //   DRILLFLEX_TARGETS=report_bench scripts/build && build/bench/report_bench
@@ -9,34 +9,25 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string>
 
-#include "analyses/static_analysis.hpp"
-#include "cms/reduction_cache.hpp"
-#include "io/analysis_results.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
-#include "io/report_html.hpp"
-#include "io/vtk_files.hpp"
+#include "pipeline/case_files.hpp"
+#include "pipeline/case_run.hpp"
 
 namespace {
 
 using namespace drillflex;
 
 struct Solved {
-  Solved()
-      : c(io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml"))),
-        input(io::MakeModelInput(c)),
-        built(model::BuildSystemModel(input, cache)) {
+  Solved() : c(io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml"))) {
     const auto start = std::chrono::steady_clock::now();
-    result = analyses::RunStaticInWell(input, built, cache, analyses::StaticSettings{});
+    results.emplace(pipeline::RunCase(c, pipeline::AnalysisRequest::Only(pipeline::Analysis::Static)));
     solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   io::Case c;
-  model::ModelInput input;
-  cms::ReductionCache cache;
-  model::BuiltModel built;
-  analyses::StaticResult result;
+  std::optional<pipeline::CaseResults> results;
   double solve_seconds = 0.0;
 };
 
@@ -51,16 +42,8 @@ void WriteFiles(benchmark::State& state, bool with_report) {
   const std::string directory = (std::filesystem::temp_directory_path() / "drillflex-report-bench").string();
   double report_bytes = 0.0, vtk_bytes = 0.0;
   for (auto _ : state) {
-    io::ResultFiles files(directory);
-    io::AddCaseHeader(s.c, s.built, files);
-    io::AddStaticResults(s.c, s.result, files);
-    if (with_report) {
-      io::ReportData data;
-      data.AddStatic(s.c, s.input, s.result);
-      io::AddStaticVtk(s.c, s.built, s.result, files);
-      files.Add("report.html", io::ComposeReportHtml(files.json(), data, {"static", s.solve_seconds}));
-    }
-    files.Commit();
+    pipeline::ComposeResultFiles(s.c, *s.results, {directory, with_report, with_report, "static", s.solve_seconds})
+        .Commit();
   }
   if (with_report) {
     namespace fs = std::filesystem;

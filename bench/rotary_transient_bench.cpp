@@ -20,10 +20,8 @@
 #include <exception>
 #include <string>
 
-#include "analyses/transient_analysis.hpp"
-#include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
+#include "pipeline/case_run.hpp"
 
 namespace {
 
@@ -38,28 +36,22 @@ void RotatingBundledExample(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
   const int previous_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
-  const io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/bench/cases/rotary-bha-rotating.yaml"));
-  cms::ReductionCache cache;
-  const model::ModelInput input = io::MakeModelInput(c);
-  analyses::TransientSettings settings = *c.analyses.transient;
-  settings.duration = BenchDuration();
-  // As the command line does: the start equilibrium on the case's model at rest, the run on the
-  // model with the drives.
-  // The model in motion carries the drilling fluid (model/fluid_inertia.hpp), its annulus terms at
-  // the default frequency (analyses::TransientFluidFrequency: the lowest lateral mode at the start).
-  const model::BuiltModel at_rest = model::BuildSystemModel(input, cache);
+  io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/bench/cases/rotary-bha-rotating.yaml"));
+  c.analyses.transient->duration = BenchDuration();
   analyses::TransientResult result;
   double wall = 0.0, cpu = 0.0;
   try {
-    const VecX start = analyses::TransientStartPositions(input, at_rest, cache, settings, analyses::StaticSettings{});
-    const double fluid_frequency = analyses::TransientFluidFrequency(input, at_rest, start, settings);
-    const model::BuiltModel moving =
-        model::BuildSystemModel(analyses::TransientModelInput(input, settings, fluid_frequency), cache);
-    state.counters["fluid_hz"] = fluid_frequency / (2.0 * kPi);
+    // As the command line does (pipeline::PrepareTransient): the start equilibrium on the case's model
+    // at rest, the run on the model with the drives, carrying the drilling fluid
+    // (model/fluid_inertia.hpp), its annulus terms at the default frequency
+    // (analyses::TransientFluidFrequency: the lowest lateral mode at the start).
+    pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
+    const pipeline::TransientSetup setup = pipeline::PrepareTransient(c, case_model, nullptr, {});
+    state.counters["fluid_hz"] = setup.fluid_frequency / (2.0 * kPi);
     for (auto _ : state) {
       const std::clock_t cpu_start = std::clock();  // the process's CPU time, all threads
       const auto wall_start = std::chrono::steady_clock::now();
-      result = analyses::RunTransient(moving, start, settings);
+      result = analyses::RunTransient(setup.moving, setup.start, setup.settings);
       wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       cpu += static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
       benchmark::DoNotOptimize(result.final_q.data());
@@ -73,10 +65,11 @@ void RotatingBundledExample(benchmark::State& state) {
   const double runs = static_cast<double>(state.iterations());
   const auto& stats = result.statistics;
   state.counters["threads"] = threads;
-  state.counters["simulated_s"] = settings.duration;
+  const double duration = c.analyses.transient->duration;
+  state.counters["simulated_s"] = duration;
   state.counters["wall_s"] = wall / runs;
   state.counters["cpu_s"] = cpu / runs;
-  state.counters["real_time_factor"] = settings.duration * runs / wall;
+  state.counters["real_time_factor"] = duration * runs / wall;
   state.counters["steps"] = static_cast<double>(stats.steps);
   state.counters["rejected"] = static_cast<double>(stats.error_rejections + stats.newton_failures);
   state.counters["newton_iterations"] = static_cast<double>(stats.newton_iterations);

@@ -1,6 +1,6 @@
-// Static analysis of a string in a well, end to end through the library as `drillflex static`
-// runs it (app/analysis_commands.cpp): io::ReadCase, io::MakeModelInput, model::BuildSystemModel
-// with a fresh cms::ReductionCache, analyses::RunStaticInWell. Never a timed test: build in
+// Static analysis of a string in a well, end to end through the pipeline as `drillflex static`
+// runs it (pipeline/case_run.hpp): io::ReadCase, then pipeline::RunCase (the model input, the model
+// with a fresh reduction cache, analyses::RunStaticInWell), without writing files. Never a timed test: build in
 // Release and run by hand, one filter at a time to attribute the peak memory,
 //   build/bench/static_bench --benchmark_filter=Example
 // Goals: the bundled example (examples/rotary-bha-build, 104 bodies) under 0.5 s; 3 km of string
@@ -14,11 +14,10 @@
 
 #include <exception>
 #include <string>
+#include <utility>
 
-#include "analyses/static_analysis.hpp"
-#include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
+#include "pipeline/case_run.hpp"
 
 namespace {
 
@@ -35,12 +34,10 @@ std::string SourcePath(const char* relative) { return (std::filesystem::path(DRI
 // Read, build and solve one case, as the command line does (without writing files).
 analyses::StaticResult SolveCase(const std::string& path, int& bodies, int& coordinates) {
   const io::Case c = io::ReadCase(path);
-  cms::ReductionCache cache;
-  const model::ModelInput input = io::MakeModelInput(c);
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  bodies = static_cast<int>(built.system.bodies().size());
-  coordinates = built.system.num_velocities();
-  return analyses::RunStaticInWell(input, built, cache, c.analyses.static_analysis.value_or(analyses::StaticSettings{}));
+  pipeline::CaseResults results = pipeline::RunCase(c, pipeline::AnalysisRequest::Only(pipeline::Analysis::Static));
+  bodies = static_cast<int>(results.model.built.system.bodies().size());
+  coordinates = results.model.built.system.num_velocities();
+  return std::move(*results.static_result);
 }
 
 void EndToEnd(benchmark::State& state, const std::string& path) {
@@ -70,10 +67,8 @@ void EndToEnd(benchmark::State& state, const std::string& path) {
 void BuildOnly(benchmark::State& state, const std::string& path) {
   int coordinates = 0;
   for (auto _ : state) {
-    const io::Case c = io::ReadCase(path);
-    cms::ReductionCache cache;
-    const model::BuiltModel built = model::BuildSystemModel(io::MakeModelInput(c), cache);
-    coordinates = built.system.num_velocities();
+    const pipeline::CaseModel case_model = pipeline::BuildCaseModel(io::ReadCase(path));
+    coordinates = case_model.built.system.num_velocities();
     benchmark::DoNotOptimize(coordinates);
   }
   state.counters["coordinates"] = coordinates;

@@ -18,10 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "analyses/transient_analysis.hpp"
-#include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
+#include "pipeline/case_run.hpp"
 
 namespace {
 
@@ -49,11 +47,8 @@ double TipPeriod(const analyses::TransientResult& result) {
 }
 
 void CantileverFreeVibration(benchmark::State& state) {
-  const io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/validation/v8-transient/free-vibration.yaml"));
-  cms::ReductionCache cache;
-  const model::ModelInput input = io::MakeModelInput(c);
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  analyses::TransientSettings settings = *c.analyses.transient;
+  io::Case c = io::ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/validation/v8-transient/free-vibration.yaml"));
+  analyses::TransientSettings& settings = *c.analyses.transient;
   settings.duration = 1.0;
   settings.time_step = 1e-4;
   settings.tolerance = 1e-4;
@@ -61,17 +56,21 @@ void CantileverFreeVibration(benchmark::State& state) {
   settings.output_interval = 2e-3;
   settings.probes = {5.08};
   analyses::TransientResult result;
+  int coordinates = 0;
   try {
-    const VecX start = analyses::TransientStartPositions(input, built, cache, settings, analyses::StaticSettings{});
+    // The transient's model and start as the command line sets them up (pipeline::PrepareTransient).
+    pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
+    const pipeline::TransientSetup setup = pipeline::PrepareTransient(c, case_model, nullptr, {});
+    coordinates = setup.moving.system.num_velocities();
     for (auto _ : state) {
-      result = analyses::RunTransient(built, start, settings);
+      result = analyses::RunTransient(setup.moving, setup.start, setup.settings);
       benchmark::DoNotOptimize(result.final_q.data());
     }
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
     return;
   }
-  state.counters["coordinates"] = built.system.num_velocities();
+  state.counters["coordinates"] = coordinates;
   state.counters["steps"] = static_cast<double>(result.statistics.steps);
   state.counters["newton_iterations"] = static_cast<double>(result.statistics.newton_iterations);
   state.counters["factorizations"] = static_cast<double>(result.statistics.factorizations);

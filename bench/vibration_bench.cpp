@@ -1,6 +1,6 @@
 // Forced response against RPM (analyses/vibration_analysis.hpp), the sweep alone about the static
-// equilibrium, which is solved once before the timed loop (RunStaticInWell, as `drillflex
-// vibration` does). Never a timed test: build in Release and run by hand,
+// equilibrium, which is solved once before the timed loop (pipeline::RunCaseStatic and
+// pipeline::RunCaseVibration, the stages `drillflex vibration` chains). Never a timed test: build in Release and run by hand,
 //   build/bench/vibration_bench --benchmark_filter=Example
 // The sweep of the issue: 231 RPM values (20–250 rpm, step 1) with three excitations: an imbalance
 // (0.02 kg·m at 40 ft, 1×), the bit (500 lbf lateral, 1000 lbf axial, 3×) and a mud motor (5 lobes,
@@ -19,11 +19,8 @@
 #include <exception>
 #include <string>
 
-#include "analyses/static_analysis.hpp"
-#include "analyses/vibration_analysis.hpp"
-#include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
+#include "pipeline/case_run.hpp"
 #include "vibration_sweep.hpp"
 
 namespace {
@@ -41,14 +38,12 @@ std::string SourcePath(const char* relative) { return (std::filesystem::path(DRI
 void Sweep(benchmark::State& state, const std::string& path, bool static_equilibrium,
            analyses::VibrationMethod method = analyses::VibrationMethod::Reduced) {
   const io::Case c = io::ReadCase(path);
-  cms::ReductionCache cache;
-  const model::ModelInput input = io::MakeModelInput(c);
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const model::LateralFluid fluid = model::MakeLateralFluid(input, built.system);
+  pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
+  const model::BuiltModel& built = case_model.built;
   VecX q = built.system.ReferencePositions();
   if (static_equilibrium) {
     try {
-      q = analyses::RunStaticInWell(input, built, cache, analyses::StaticSettings{}).q;
+      q = pipeline::RunCaseStatic(c, case_model).q;
     } catch (const std::exception& error) {
       state.SkipWithError(error.what());
       return;
@@ -57,7 +52,7 @@ void Sweep(benchmark::State& state, const std::string& path, bool static_equilib
   const analyses::VibrationSettings settings = bench::ThreeExcitationSweep(method);
   analyses::VibrationResult result;
   for (auto _ : state) {
-    result = analyses::RunVibration(built, input, fluid, q, settings);
+    result = pipeline::RunCaseVibration(c, case_model, q, settings);
     benchmark::DoNotOptimize(result.rpm.data());
   }
   state.counters["coordinates"] = built.system.num_velocities();

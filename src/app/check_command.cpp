@@ -5,10 +5,8 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
-#include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
-#include "model/builder.hpp"
+#include "pipeline/case_run.hpp"
 #include "well/hole.hpp"
 #include "well/trajectory.hpp"
 
@@ -97,8 +95,9 @@ void PrintString(const io::Case& c, const Printer& show) {
 }
 
 void PrintModel(const io::Case& c) {
-  cms::ReductionCache cache;
-  const model::BuiltModel built = model::BuildSystemModel(io::MakeModelInput(c), cache);
+  const pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
+  const model::BuiltModel& built = case_model.built;
+  const cms::ReductionCache& cache = *case_model.cache;
   const auto& settings = c.model;
   std::cout << fmt::format(
       "model: {} flexible bodies ({} distinct reductions), {} coordinates, {} couplings, {} supports, {} wall "

@@ -14,15 +14,14 @@
 #include <sstream>
 #include <string>
 
-#include "analyses/transient_analysis.hpp"
-#include "cms/reduction_cache.hpp"
 #include "io/analysis_results.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
 #include "io/result_files.hpp"
+#include "pipeline/case_run.hpp"
 
 namespace drillflex::io {
 namespace {
+
 
 std::string ReadFile(const std::filesystem::path& path) {
   std::ifstream file(path);
@@ -55,26 +54,22 @@ ThreadRun RunOnThreads(int threads, const Case& c, const model::BuiltModel& movi
 TEST(TransientThreads, RotatingBundledExampleIsIdenticalOnOneAndTwoThreads) {
   // (A path object, not std::string + "...": GCC 12 at -O3 then warns of a memcpy out of bounds,
   // -Warray-bounds, a false positive of libstdc++'s inlined string concatenation.)
-  const Case c = ReadCase((std::filesystem::path(DRILLFLEX_SOURCE_DIR) / "bench/cases/rotary-bha-rotating.yaml").string());
-  cms::ReductionCache cache;
-  const model::ModelInput input = MakeModelInput(c);
-  analyses::TransientSettings settings = *c.analyses.transient;
+  Case c = ReadCase((std::filesystem::path(DRILLFLEX_SOURCE_DIR) / "bench/cases/rotary-bha-rotating.yaml").string());
+  analyses::TransientSettings& settings = *c.analyses.transient;
   settings.duration = 0.01;
   settings.output_interval = 5e-4;
   settings.probes = {3.0 * 0.3048, 60.0 * 0.3048};  // the near-bit stabilizer's blade (on the wall), the MWD
   ASSERT_TRUE(settings.top_drive.has_value());
   settings.top_drive->setting.ramp_time = 0.02;
-  const model::BuiltModel at_rest = model::BuildSystemModel(input, cache);
-  const VecX start = analyses::TransientStartPositions(input, at_rest, cache, settings, analyses::StaticSettings{});
-  // With the drilling fluid moving with the bodies (model/fluid_inertia.hpp), as the command line runs it.
-  const double fluid_frequency = analyses::TransientFluidFrequency(input, at_rest, start, settings);
-  ASSERT_GT(fluid_frequency, 0.0);
-  const model::BuiltModel moving =
-      model::BuildSystemModel(analyses::TransientModelInput(input, settings, fluid_frequency), cache);
-  ASSERT_GE(moving.system.bodies().size(), 32u);  // the model's parallel assembly (system_model.cpp)
+  // The transient's model and start as the command line sets them up, with the drilling fluid moving
+  // with the bodies (model/fluid_inertia.hpp).
+  pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
+  const pipeline::TransientSetup setup = pipeline::PrepareTransient(c, case_model, nullptr, {});
+  ASSERT_GT(setup.fluid_frequency, 0.0);
+  ASSERT_GE(setup.moving.system.bodies().size(), 32u);  // the model's parallel assembly (system_model.cpp)
 
-  const ThreadRun one = RunOnThreads(1, c, moving, start, settings);
-  const ThreadRun two = RunOnThreads(2, c, moving, start, settings);
+  const ThreadRun one = RunOnThreads(1, c, setup.moving, setup.start, setup.settings);
+  const ThreadRun two = RunOnThreads(2, c, setup.moving, setup.start, setup.settings);
 
   // The run is not trivial: the top turns, some wall contact at a probe carries load, the steps adapt.
   const analyses::TransientSample& last = one.result.samples.back();

@@ -16,15 +16,13 @@
 #include <cstdio>
 #include <string>
 
-#include "analyses/static_analysis.hpp"
-#include "analyses/vibration_analysis.hpp"
-#include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
-#include "io/model_input.hpp"
+#include "pipeline/case_run.hpp"
 #include "../../bench/vibration_sweep.hpp"
 
 namespace drillflex::io {
 namespace {
+
 
 constexpr double kRpm = kPi / 30.0;
 
@@ -38,13 +36,13 @@ double LargestRelativeError(const std::vector<double>& value, const std::vector<
 
 TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   const Case c = ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml"));
-  cms::ReductionCache cache;
-  const model::ModelInput input = MakeModelInput(c);
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const model::LateralFluid fluid = model::MakeLateralFluid(input, built.system);
-  const VecX q = analyses::RunStaticInWell(input, built, cache, analyses::StaticSettings{}).q;
-  const auto direct = analyses::RunVibration(built, input, fluid, q, bench::ThreeExcitationSweep(analyses::VibrationMethod::Direct));
-  const auto reduced = analyses::RunVibration(built, input, fluid, q, bench::ThreeExcitationSweep(analyses::VibrationMethod::Reduced));
+  pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
+  const VecX q = pipeline::RunCaseStatic(c, case_model).q;
+  auto sweep = [&](const analyses::VibrationSettings& settings) {
+    return pipeline::RunCaseVibration(c, case_model, q, settings);
+  };
+  const auto direct = sweep(bench::ThreeExcitationSweep(analyses::VibrationMethod::Direct));
+  const auto reduced = sweep(bench::ThreeExcitationSweep(analyses::VibrationMethod::Reduced));
   ASSERT_EQ(reduced.method, analyses::VibrationMethod::Reduced);
   ASSERT_EQ(direct.method, analyses::VibrationMethod::Direct);
   ASSERT_EQ(reduced.rpm.size(), 231u);
@@ -74,7 +72,7 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   // one shift: at most 6 × (1 + 7) + 4 = 52 vectors) is not even built: the sweep runs directly.
   analyses::VibrationSettings poor = bench::ThreeExcitationSweep(analyses::VibrationMethod::Reduced);
   poor.basis_shifts = poor.basis_depth = 1;
-  const auto skipped = analyses::RunVibration(built, input, fluid, q, poor);
+  const auto skipped = sweep(poor);
   EXPECT_EQ(skipped.method, analyses::VibrationMethod::Direct);
   EXPECT_EQ(skipped.basis_size, 0);
   EXPECT_EQ(skipped.band_modes, reduced.band_modes);
@@ -84,7 +82,7 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   // check at the sample frequencies: the sweep runs directly too.
   analyses::VibrationSettings thin = poor;
   thin.basis_shifts = 10;
-  const auto fallback = analyses::RunVibration(built, input, fluid, q, thin);
+  const auto fallback = sweep(thin);
   std::printf("thin basis: %d vectors, check error %.3g %%\n", fallback.basis_size, 100.0 * fallback.reduced_check_error);
   EXPECT_GT(fallback.reduced_check_error, analyses::kReducedCheckTolerance);
   EXPECT_EQ(fallback.method, analyses::VibrationMethod::Direct);

@@ -18,10 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "analyses/static_analysis.hpp"
-#include "analyses/transient_analysis.hpp"
-#include "cms/reduction_cache.hpp"
-#include "io/model_input.hpp"
+#include "pipeline/case_run.hpp"
 #include "model/builder.hpp"
 
 namespace drillflex::io {
@@ -138,11 +135,9 @@ ResultFiles FilesIn(const std::string& name) {
 
 TEST(VtkFiles, BundledExampleStringWellAndContactsReadBackInSi) {
   const Case c = ReadCase((fs::path(DRILLFLEX_SOURCE_DIR) / "examples/rotary-bha-build/case.yaml").string());
-  cms::ReductionCache cache;
-  const model::ModelInput input = MakeModelInput(c);
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const analyses::StaticResult result = analyses::RunStaticInWell(
-      input, built, cache, c.analyses.static_analysis.value_or(analyses::StaticSettings{}));
+  const pipeline::CaseResults run = pipeline::RunCase(c, pipeline::AnalysisRequest::Only(pipeline::Analysis::Static));
+  const model::BuiltModel& built = run.model.built;
+  const analyses::StaticResult& result = *run.static_result;
   ResultFiles files = FilesIn("bundled");
   AddStaticVtk(c, built, result, files);
   const fs::path directory = Commit(files);
@@ -325,15 +320,14 @@ analyses:
 
 TEST(VtkFiles, TransientFramesAreACollectionOfStringFilesAtTheirTimes) {
   const Case c = ParseCase(kReleasedCantilever, "released-cantilever.yaml");
-  analyses::TransientSettings settings = *c.analyses.transient;
-  ASSERT_EQ(settings.vtk_frames, 5);
-  settings.state_frames = *settings.vtk_frames;  // as the command line does
-  cms::ReductionCache cache;
-  const model::ModelInput input = MakeModelInput(c);
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const VecX start = analyses::TransientStartPositions(input, built, cache, settings, analyses::StaticSettings{});
-  const model::BuiltModel moving = model::BuildSystemModel(analyses::TransientModelInput(input, settings, 0.0), cache);
-  const analyses::TransientResult result = analyses::RunTransient(moving, start, settings);
+  ASSERT_EQ(c.analyses.transient->vtk_frames, 5);
+  // As the command line runs it with VTK output: the frames kept.
+  pipeline::RunOptions options;
+  options.keep_transient_shapes = true;
+  const pipeline::CaseResults run =
+      pipeline::RunCase(c, pipeline::AnalysisRequest::Only(pipeline::Analysis::Transient), options);
+  const model::BuiltModel& moving = run.transient_setup->moving;
+  const analyses::TransientResult& result = *run.transient;
   // 21 samples: every 5th (⌈20 / 4⌉) is a frame, t = 0 and the end among them.
   ASSERT_EQ(result.frame_q.size(), 5u);
   EXPECT_EQ(result.frame_times.front(), 0.0);

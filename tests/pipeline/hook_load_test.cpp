@@ -10,8 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "analyses/static_analysis.hpp"
-#include "cms/reduction_cache.hpp"
+#include "pipeline/case_run.hpp"
 #include "core/error.hpp"
 #include "io/case.hpp"
 #include "io/model_input.hpp"
@@ -77,10 +76,8 @@ TEST(HookLoad, SetsTheWobToTheBuoyedWeightAlongTheHoleLessTheHookLoad) {
 TEST(HookLoad, TheTopCarriesTheHookLoadLessThePipeAbove) {
   const double inclination = 30.0, hook_load = 200e3;
   const Case c = ParseCase(CaseText(inclination, "{hook_load: 200 kN}"), "hook.yaml");
-  const model::ModelInput input = MakeModelInput(c);
-  cms::ReductionCache cache;
-  const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const analyses::StaticResult result = analyses::RunStaticInWell(input, built, cache, analyses::StaticSettings{});
+  const pipeline::CaseResults run = pipeline::RunCase(c, pipeline::AnalysisRequest::Only(pipeline::Analysis::Static));
+  const analyses::StaticResult& result = *run.static_result;
   ASSERT_TRUE(result.converged);
   const Expected expected = ByHand(inclination);
   const double top_tension = hook_load - expected.above_weight;

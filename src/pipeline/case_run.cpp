@@ -1,0 +1,191 @@
+#include "pipeline/case_run.hpp"
+
+#include <fmt/format.h>
+
+#include "analyses/bit_bottom_start.hpp"
+#include "core/error.hpp"
+#include "io/model_input.hpp"
+#include "pipeline/summary.hpp"
+
+namespace drillflex::pipeline {
+
+using units::Quantity;
+
+const char* AnalysisName(Analysis analysis) {
+  switch (analysis) {
+    case Analysis::Static: return "static";
+    case Analysis::Modes: return "modes";
+    case Analysis::Buckling: return "buckling";
+    case Analysis::Vibration: return "vibration";
+    case Analysis::Transient: return "transient";
+  }
+  return "unknown";
+}
+
+AnalysisRequest AnalysisRequest::Only(Analysis analysis) {
+  AnalysisRequest request;
+  switch (analysis) {
+    case Analysis::Static: request.static_analysis = true; break;
+    case Analysis::Modes: request.modes = true; break;
+    case Analysis::Buckling: request.buckling = true; break;
+    case Analysis::Vibration: request.vibration = true; break;
+    case Analysis::Transient: request.transient = true; break;
+  }
+  return request;
+}
+
+bool AnalysisRequest::Has(Analysis analysis) const {
+  switch (analysis) {
+    case Analysis::Static: return static_analysis;
+    case Analysis::Modes: return modes;
+    case Analysis::Buckling: return buckling;
+    case Analysis::Vibration: return vibration;
+    case Analysis::Transient: return transient;
+  }
+  return false;
+}
+
+AnalysisRequest CaseAnalyses(const io::Case& c) {
+  const auto& a = c.analyses;
+  const AnalysisRequest request{a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value(),
+                                a.vibration.has_value(), a.transient.has_value()};
+  if (!request.Any()) throw InputError({c.file, 0, 0}, "analyses", "the case lists no analyses to run");
+  return request;
+}
+
+CaseModel BuildCaseModel(const io::Case& c) {
+  model::ModelInput input = io::MakeModelInput(c);
+  auto cache = std::make_unique<cms::ReductionCache>();
+  model::BuiltModel built = model::BuildSystemModel(input, *cache);
+  return CaseModel{std::move(input), std::move(cache), std::move(built)};
+}
+
+analyses::StaticSettings CaseStaticSettings(const io::Case& c, const RunObserver& observer) {
+  analyses::StaticSettings settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
+  if (observer.log) settings.log = observer.log;
+  return settings;
+}
+
+TransientSetup PrepareTransient(const io::Case& c, CaseModel& case_model, const analyses::StaticResult* equilibrium,
+                                const RunOptions& options) {
+  const model::ModelInput& input = case_model.input;
+  analyses::TransientSettings settings = c.analyses.transient.value_or(analyses::TransientSettings{});
+  settings.state_frames = options.keep_transient_shapes ? settings.vtk_frames.value_or(kDefaultVtkFrames) : 0;
+  // The equilibrium already solved, when the start is that equilibrium at rest (not with a rotating
+  // string's prescribed friction, nor with initial loads).
+  const bool reuse_equilibrium = equilibrium && settings.start == analyses::TransientStart::Equilibrium &&
+                                 settings.initial_loads.empty() && !input.static_sliding;
+  VecX start = reuse_equilibrium ? equilibrium->q
+                                 : analyses::TransientStartPositions(input, case_model.built, *case_model.cache, settings,
+                                                                     CaseStaticSettings(c, options.observer));
+  // The model in motion: with the drives, the friction following the motion (same coordinates), a
+  // bottom contact where the bit rests at the start. The fluid moves with the bodies, its annulus
+  // terms at TransientFluidFrequency.
+  const double fluid_frequency = analyses::TransientFluidFrequency(input, case_model.built, start, settings);
+  if (fluid_frequency > 0.0 && options.observer.note) {
+    options.observer.note(
+        fmt::format("transient: the annulus fluid's C_m and C_v at {:.4g} Hz", fluid_frequency / (2.0 * kPi)));
+  }
+  model::BuiltModel moving = model::BuildSystemModel(
+      analyses::PlaceBottomAtStart(analyses::TransientModelInput(input, settings, fluid_frequency), case_model.built,
+                                   start),
+      *case_model.cache);
+  return TransientSetup{std::move(settings), fluid_frequency, std::move(start), std::move(moving)};
+}
+
+analyses::StaticResult RunCaseStatic(const io::Case& c, CaseModel& case_model, const RunObserver& observer) {
+  return analyses::RunStaticInWell(case_model.input, case_model.built, *case_model.cache,
+                                   CaseStaticSettings(c, observer));
+}
+
+analyses::ModesResult RunCaseModes(const io::Case& c, const CaseModel& case_model, const VecX& equilibrium) {
+  const model::LateralFluid fluid = model::MakeLateralFluid(case_model.input, case_model.built.system);
+  const analyses::ModesSettings settings = c.analyses.modes.value_or(analyses::ModesSettings{});
+  return settings.gyroscopic
+             ? analyses::ComputeGyroscopicModes(case_model.built.system, equilibrium, settings, &fluid)
+             : analyses::RunModes(case_model.built, equilibrium, settings, &fluid);
+}
+
+analyses::VibrationResult RunCaseVibration(const io::Case& c, const CaseModel& case_model, const VecX& equilibrium,
+                                           const analyses::VibrationSettings& settings) {
+  const model::LateralFluid fluid = model::MakeLateralFluid(case_model.input, case_model.built.system);
+  try {
+    return analyses::RunVibration(case_model.built, case_model.input, fluid, equilibrium, settings);
+  } catch (const InputError& e) {  // an excitation the string cannot take: name the case file
+    if (!e.location().file.empty()) throw;
+    throw InputError({c.file, e.location().line, e.location().column}, e.key_path(), e.message());
+  }
+}
+
+namespace {
+
+void Finished(const RunObserver& observer, Analysis analysis, const CaseResults& results) {
+  if (observer.finished) observer.finished(analysis, results);
+}
+
+void RunLinearAnalyses(const io::Case& c, const RunOptions& options, const VecX& equilibrium, CaseResults& results) {
+  if (results.requested.modes) {
+    results.modes = RunCaseModes(c, results.model, equilibrium);
+    const analyses::ModesSettings settings = c.analyses.modes.value_or(analyses::ModesSettings{});
+    if (settings.campbell) {
+      const model::LateralFluid fluid = model::MakeLateralFluid(results.model.input, results.model.built.system);
+      results.campbell = analyses::ComputeCampbell(results.model.built.system, equilibrium, settings, &fluid);
+    }
+    Finished(options.observer, Analysis::Modes, results);
+  }
+  if (results.requested.vibration) {
+    results.vibration = RunCaseVibration(c, results.model, equilibrium,
+                                         c.analyses.vibration.value_or(analyses::VibrationSettings{}));
+    Finished(options.observer, Analysis::Vibration, results);
+  }
+}
+
+}  // namespace
+
+CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const RunOptions& options) {
+  const RunObserver& observer = options.observer;
+  if (request.static_analysis && !c.well && c.supports.empty()) {
+    throw InputError({c.file, 0, 0}, "supports",
+                     "the string has no well and no supports: nothing holds it (add 'supports')");
+  }
+  CaseResults results{.requested = request, .model = BuildCaseModel(c)};
+  const model::ModelInput& input = results.model.input;
+  const model::BuiltModel& built = results.model.built;
+  if (observer.note) {
+    observer.note(fmt::format("model: {} bodies, {} coordinates", built.system.bodies().size(),
+                              built.system.num_velocities()));
+    if (c.operation.hook_load && input.trajectory && input.supports.empty()) {
+      observer.note(fmt::format("operation: WOB {} from the hook load {} (the string's buoyed weight along the hole "
+                                "less it; the pipe above the model, to the surface, weighs {})",
+                                Show(c, input.operation.weight_on_bit, Quantity::WeightOnBit),
+                                Show(c, *c.operation.hook_load, Quantity::Force),
+                                Show(c, model::StringAboveWeight(input), Quantity::Force)));
+    }
+  }
+  VecX equilibrium = built.system.ReferencePositions();
+  if (request.static_analysis || request.modes || request.vibration) {
+    results.static_result = RunCaseStatic(c, results.model, observer);
+    equilibrium = results.static_result->q;
+    Finished(observer, Analysis::Static, results);
+  }
+  RunLinearAnalyses(c, options, equilibrium, results);
+  if (request.buckling) {
+    results.buckling = analyses::RunBuckling(input, built, c.analyses.buckling.value_or(analyses::BucklingSettings{}),
+                                             CaseStaticSettings(c, observer));
+    Finished(observer, Analysis::Buckling, results);
+  }
+  if (request.transient) {
+    results.transient_setup =
+        PrepareTransient(c, results.model, results.static_result ? &*results.static_result : nullptr, options);
+    const TransientSetup& setup = *results.transient_setup;
+    analyses::TransientProgress progress;
+    if (observer.progress) {
+      progress = [&observer](double time, double duration) { observer.progress(Analysis::Transient, time, duration); };
+    }
+    results.transient = analyses::RunTransient(setup.moving, setup.start, setup.settings, progress);
+    Finished(observer, Analysis::Transient, results);
+  }
+  return results;
+}
+
+}  // namespace drillflex::pipeline
