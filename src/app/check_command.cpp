@@ -64,19 +64,19 @@ void PrintWell(const io::Case& c, const Printer& show) {
 
 void PrintString(const io::Case& c, const Printer& show) {
   double length = 0.0, weight_air = 0.0, weight_mud = 0.0;
-  const double rho_out = c.fluid ? c.fluid->density : 0.0;
-  const double rho_in = c.fluid ? c.fluid->internal_density.value_or(c.fluid->density) : 0.0;
-  std::cout << fmt::format("string: {} entries, from the bit upward\n", c.string.components.size());
+  const double rho_out = c.input.fluid ? c.input.fluid->density : 0.0;
+  const double rho_in = c.input.fluid ? c.input.fluid->internal_density.value_or(c.input.fluid->density) : 0.0;
+  std::cout << fmt::format("string: {} entries, from the bit upward\n", c.input.string.components.size());
   std::cout << fmt::format("  {:>3} {:<12} {:<18} {:>12} {:>12} {:>12} {:>5} {:>14}\n", "#", "type", "name",
                            "OD", "ID", "length", "count", "top from bit");
-  for (std::size_t i = 0; i < c.string.components.size(); ++i) {
-    const auto& component = c.string.components[i];
+  for (std::size_t i = 0; i < c.input.string.components.size(); ++i) {
+    const auto& component = c.input.string.components[i];
     const double span = component.length * component.count;
     const auto areas = model::AverageAreas(component);
-    const double density = c.materials.at(component.material).density;
+    const double density = c.input.materials.at(component.material).density;
     // Buoyed weight with fluid inside and out: w = g (ρ_s A − ρ_f A_o + ρ_fi A_i) (method.md §7).
-    weight_air += c.gravity * density * areas.material * span;
-    weight_mud += c.gravity * (density * areas.material - rho_out * areas.outer + rho_in * areas.bore) * span;
+    weight_air += c.input.gravity * density * areas.material * span;
+    weight_mud += c.input.gravity * (density * areas.material - rho_out * areas.outer + rho_in * areas.bore) * span;
     length += span;
     std::cout << fmt::format("  {:>3} {:<12} {:<18} {:>12} {:>12} {:>12} {:>5} {:>14}\n", i,
                              model::ComponentTypeName(component.type), component.name,
@@ -87,18 +87,18 @@ void PrintString(const io::Case& c, const Printer& show) {
   }
   std::cout << fmt::format("  length {}; weight in air {}", show(length, Quantity::Length, 6),
                            show(weight_air, Quantity::Force, 6));
-  if (c.fluid) {
-    std::cout << fmt::format(", in {} mud {}", show(c.fluid->density, Quantity::Density),
+  if (c.input.fluid) {
+    std::cout << fmt::format(", in {} mud {}", show(c.input.fluid->density, Quantity::Density),
                              show(weight_mud, Quantity::Force, 6));
   }
-  std::cout << fmt::format(" (g = {:.5g} m/s2)\n", c.gravity);
+  std::cout << fmt::format(" (g = {:.5g} m/s2)\n", c.input.gravity);
 }
 
 void PrintModel(const io::Case& c) {
   const pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
   const model::BuiltModel& built = case_model.built;
   const cms::ReductionCache& cache = *case_model.cache;
-  const auto& settings = c.model;
+  const auto& settings = c.input.settings;
   std::cout << fmt::format(
       "model: {} flexible bodies ({} distinct reductions), {} coordinates, {} couplings, {} supports, {} wall "
       "contacts\n",
@@ -152,9 +152,9 @@ int RunCheck(const CommandOptions& options) {
   std::cout << fmt::format("case: {} ({}), units: {}, results in {} units\n", c.name, c.file,
                            units::SystemName(c.units), units::SystemName(c.output_units));
   PrintWell(c, show);
-  if (c.fluid) {
-    std::cout << fmt::format("fluid: {}, {}\n", show(c.fluid->density, Quantity::Density),
-                             show(c.fluid->viscosity, Quantity::Viscosity));
+  if (c.input.fluid) {
+    std::cout << fmt::format("fluid: {}, {}\n", show(c.input.fluid->density, Quantity::Density),
+                             show(c.input.fluid->viscosity, Quantity::Viscosity));
   }
   PrintString(c, show);
   PrintModel(c);

@@ -31,15 +31,15 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
   json& root = files.json();
   root["case"] = c.name;
   root["units"] = units::SystemName(c.output_units);
-  std::size_t supports = c.supports.size();
+  std::size_t supports = c.input.supports.size();
   root["model"] = {{"bodies", built.system.bodies().size()},
                    {"coordinates", built.system.num_velocities()},
                    {"contacts", built.contact_elements.size()},
                    {"couplings", built.system.bodies().empty() ? 0 : built.system.bodies().size() - 1},
                    {"supports", supports},
-                   {"elements_per_body", c.model.elements_per_body},
-                   {"modes_per_body", c.model.modes_per_body},
-                   {"coupling_factor", c.model.coupling_factor}};
+                   {"elements_per_body", c.input.settings.elements_per_body},
+                   {"modes_per_body", c.input.settings.modes_per_body},
+                   {"coupling_factor", c.input.settings.coupling_factor}};
   root["column_units"] = {{"s", out.Unit(Quantity::Length)},        {"md", out.Unit(Quantity::Length)},
                           {"position", out.Unit(Quantity::Length)}, {"displacement", out.Unit(Quantity::Diameter)},
                           {"rotation", "deg"},                      {"lateral_offset", out.Unit(Quantity::Diameter)},
@@ -56,8 +56,8 @@ void AddOperation(const Case& c, const model::ModelInput& input, ResultFiles& fi
   nlohmann::json operation = {{"weight_on_bit", out(input.operation.weight_on_bit, Quantity::WeightOnBit)},
                               {"rpm", out(input.operation.rpm, Quantity::RotarySpeed)},
                               {"torque_on_bit", out(input.operation.torque_on_bit, Quantity::Moment)}};
-  if (c.operation.hook_load) {
-    operation["hook_load"] = out(*c.operation.hook_load, Quantity::Force);
+  if (c.input.operation.hook_load) {
+    operation["hook_load"] = out(*c.input.operation.hook_load, Quantity::Force);
     operation["string_above_weight"] = out(model::StringAboveWeight(input), Quantity::Force);
   }
   files.json()["operation"] = operation;
@@ -147,10 +147,10 @@ json AddStaticContacts(const Case& c, const std::vector<analyses::ContactReport>
                             CsvTable::Number(out(contact.md, Quantity::Length)),
                             CsvTable::Number(out(contact.normal_force, Quantity::Force)),
                             CsvTable::Number(out(contact.friction_force, Quantity::Force)), CsvTable::Number(angle),
-                            CsvTable::Text(c.string.components.at(contact.component).name)});
+                            CsvTable::Text(c.input.string.components.at(contact.component).name)});
     contacts.push_back({{"s", out(contact.s, Quantity::Length)},
                         {"md", out(contact.md, Quantity::Length)},
-                        {"component", c.string.components.at(contact.component).name},
+                        {"component", c.input.string.components.at(contact.component).name},
                         {"normal_force", out(contact.normal_force, Quantity::Force)},
                         {"friction_force", out(contact.friction_force, Quantity::Force)},
                         {"high_side_angle", angle}});

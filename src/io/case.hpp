@@ -9,6 +9,7 @@
 #include "analyses/analysis_settings.hpp"
 #include "core/error.hpp"
 #include "fe/material.hpp"
+#include "model/builder.hpp"
 #include "model/string_config.hpp"
 #include "units/units.hpp"
 #include "well/survey.hpp"
@@ -36,15 +37,11 @@ struct Case {
   units::System units = units::System::SI;
   units::System output_units = units::System::SI;
 
-  std::optional<WellConfig> well;
-  std::optional<model::FluidConfig> fluid;
-  double gravity = 0.0;  // m/s², along +z (down)
-  std::map<std::string, fe::Material> materials;  // built-ins plus the case's own
-  model::StringConfig string;
-  model::ModelSettings model;
-  std::vector<model::Support> supports;
-  std::vector<model::Load> loads;
-  model::Operation operation;
+  std::optional<WellConfig> well;  // the survey and hole as given (the model's trajectory is in `input`)
+  // What the model builder takes, read straight into it: the string, materials, model settings,
+  // supports, loads, gravity, fluid and operation; with a well its trajectory, hole and bit MD; a
+  // rotating string's sliding friction (rpm > 0); a WOB from the hook load when the case gives one.
+  model::ModelInput input;
   analyses::AnalysesConfig analyses;
   OutputConfig output;
 };

@@ -29,8 +29,8 @@ void CheckStringFitsHole(const Case& c, const YamlView& root) {
         Show(well.survey.front().md, Quantity::Length, system)));
   }
   double s = 0.0;  // distance of the item's bottom from the bit
-  for (std::size_t i = 0; i < c.string.components.size(); ++i) {
-    const model::Component& component = c.string.components[i];
+  for (std::size_t i = 0; i < c.input.string.components.size(); ++i) {
+    const model::Component& component = c.input.string.components[i];
     const double span = component.length * component.count;
     const double md_bottom = well.bit_md - s;
     const double md_top = md_bottom - span;
@@ -59,8 +59,8 @@ void CheckCaseConsistency(const Case& c, const YamlView& root) {
   const double length = StringLength(c);
   const units::System system = c.units;
   if (c.well) CheckStringFitsHole(c, root);
-  for (std::size_t i = 0; i < c.supports.size(); ++i) {
-    CheckOnString(c.supports[i].at, length, root.Child("supports").Item(i), "at", system);
+  for (std::size_t i = 0; i < c.input.supports.size(); ++i) {
+    CheckOnString(c.input.supports[i].at, length, root.Child("supports").Item(i), "at", system);
   }
   // Loads (the case's, or a transient's initial ones) listed at `list`.
   auto check_loads = [&](const std::vector<model::Load>& loads, const YamlView& list) {
@@ -75,7 +75,7 @@ void CheckCaseConsistency(const Case& c, const YamlView& root) {
       }
     }
   };
-  if (!c.loads.empty()) check_loads(c.loads, root.Child("loads"));
+  if (!c.input.loads.empty()) check_loads(c.input.loads, root.Child("loads"));
   if (c.analyses.vibration) {
     const auto& excitations = c.analyses.vibration->excitations;
     for (std::size_t i = 0; i < excitations.size(); ++i) {

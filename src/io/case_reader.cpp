@@ -8,6 +8,7 @@
 
 #include "io/case.hpp"
 #include "io/case_sections.hpp"
+#include "io/model_input.hpp"
 
 namespace drillflex::io {
 namespace {
@@ -43,19 +44,19 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
   const YamlView top(root.node(), "", context);
 
   if (const auto well = top.OptionalChild("well")) c.well = ReadWellSection(*well, directory);
-  if (const auto fluid = top.OptionalChild("fluid")) c.fluid = ReadFluidSection(*fluid);
-  c.gravity = top.QuantityOr("gravity", Quantity::Acceleration, c.well ? kStandardGravity : 0.0);
-  if (c.gravity < 0.0) top.Child("gravity").Fail("gravity acts along +z (down): give its magnitude, >= 0");
+  if (const auto fluid = top.OptionalChild("fluid")) c.input.fluid = ReadFluidSection(*fluid);
+  c.input.gravity = top.QuantityOr("gravity", Quantity::Acceleration, c.well ? kStandardGravity : 0.0);
+  if (c.input.gravity < 0.0) top.Child("gravity").Fail("gravity acts along +z (down): give its magnitude, >= 0");
   for (const std::string& name : fe::BuiltInMaterialNames()) {
-    if (const auto material = fe::FindBuiltInMaterial(name)) c.materials[name] = *material;
+    if (const auto material = fe::FindBuiltInMaterial(name)) c.input.materials[name] = *material;
   }
-  if (const auto materials = top.OptionalChild("materials")) ReadMaterialsSection(*materials, c.materials);
-  c.string = ReadStringSection(top.Child("string"), c.materials);
-  if (const auto model = top.PresentChild("model")) c.model = ReadModelSection(*model);
-  if (const auto supports = top.OptionalChild("supports")) c.supports = ReadSupportsSection(*supports);
-  if (const auto loads = top.OptionalChild("loads")) c.loads = ReadLoadsSection(*loads);
-  if (const auto operation = top.PresentChild("operation")) c.operation = ReadOperationSection(*operation);
-  if (const auto analyses = top.PresentChild("analyses")) c.analyses = ReadAnalysesSection(*analyses, c.operation);
+  if (const auto materials = top.OptionalChild("materials")) ReadMaterialsSection(*materials, c.input.materials);
+  c.input.string = ReadStringSection(top.Child("string"), c.input.materials);
+  if (const auto model = top.PresentChild("model")) c.input.settings = ReadModelSection(*model);
+  if (const auto supports = top.OptionalChild("supports")) c.input.supports = ReadSupportsSection(*supports);
+  if (const auto loads = top.OptionalChild("loads")) c.input.loads = ReadLoadsSection(*loads);
+  if (const auto operation = top.PresentChild("operation")) c.input.operation = ReadOperationSection(*operation);
+  if (const auto analyses = top.PresentChild("analyses")) c.analyses = ReadAnalysesSection(*analyses, c.input.operation);
   if (const auto output = top.PresentChild("output")) {
     output->ExpectMap("the output files (report: true|false, vtk: true|false)");
     output->AllowOnlyKeys({"report", "vtk"});
@@ -63,6 +64,7 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
     if (const auto vtk = output->OptionalChild("vtk")) c.output.vtk = vtk->AsBool();
   }
   CheckCaseConsistency(c, top);
+  CompleteModelInput(c);
   return c;
 }
 
@@ -89,7 +91,7 @@ Case ReadCase(const std::string& path) {
   return ParseCase(text.str(), path, directory.empty() ? "." : directory.string());
 }
 
-double StringLength(const Case& c) { return model::StringLength(c.string); }
+double StringLength(const Case& c) { return model::StringLength(c.input.string); }
 
 std::string DefaultOutputDirectory(const Case& c) {
   std::string name;

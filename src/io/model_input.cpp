@@ -6,19 +6,11 @@
 
 namespace drillflex::io {
 
-model::ModelInput MakeModelInput(const Case& c) {
-  model::ModelInput input;
-  input.string = c.string;
-  input.settings = c.model;
-  input.materials = c.materials;
-  input.supports = c.supports;
-  input.loads = c.loads;
-  input.gravity = c.gravity;
-  input.fluid = c.fluid;
-  input.operation = c.operation;
+void CompleteModelInput(Case& c) {
+  model::ModelInput& input = c.input;
   // A static analysis of a rotating string (rpm > 0): the wall friction acts around the string
   // (rotating off bottom or drilling; torque and drag).
-  if (c.operation.rpm > 0.0) input.static_sliding = model::PrescribedSliding{0.0, c.operation.rpm};
+  if (input.operation.rpm > 0.0) input.static_sliding = model::PrescribedSliding{0.0, input.operation.rpm};
   if (c.well) {
     input.trajectory.emplace(c.well->survey);
     input.bit_md = c.well->bit_md;
@@ -26,21 +18,21 @@ model::ModelInput MakeModelInput(const Case& c) {
   }
   // A surface hook load instead of a WOB (a string in a well on the default supports): the WOB is
   // what the hook leaves of the string's buoyed weight along the hole (model/builder.hpp).
-  if (c.operation.hook_load && input.trajectory && input.supports.empty()) {
-    const double wob = model::WeightOnBitFromHookLoad(input, *c.operation.hook_load);
+  if (input.operation.hook_load && input.trajectory && input.supports.empty()) {
+    const double hook_load = *input.operation.hook_load;
+    const double wob = model::WeightOnBitFromHookLoad(input, hook_load);
     if (wob < 0.0) {
-      const double weight = wob + *c.operation.hook_load;
+      const double weight = wob + hook_load;
       throw InputError({c.file, 0, 0}, "operation.hook_load",
                        fmt::format("the hook load {:.6g} {} is more than the string's buoyed weight along the hole, "
                                    "{:.6g} {} (with the pipe above the model to the surface): the bit would be off bottom",
-                                   units::FromSI(*c.operation.hook_load, units::Quantity::Force, c.units),
+                                   units::FromSI(hook_load, units::Quantity::Force, c.units),
                                    units::DefaultUnit(units::Quantity::Force, c.units),
                                    units::FromSI(weight, units::Quantity::Force, c.units),
                                    units::DefaultUnit(units::Quantity::Force, c.units)));
     }
     input.operation.weight_on_bit = wob;
   }
-  return input;
 }
 
 }  // namespace drillflex::io

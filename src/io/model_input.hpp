@@ -1,4 +1,5 @@
-// From a case to what the model builder needs.
+// What the reader adds to a case's model input once every section is read: the trajectory, hole and
+// bit MD of its well, a rotating string's sliding friction, the WOB a hook load leaves.
 #pragma once
 
 #include "io/case.hpp"
@@ -6,6 +7,8 @@
 
 namespace drillflex::io {
 
-model::ModelInput MakeModelInput(const Case& c);
+// Throws InputError (operation.hook_load) when the hook load is more than the string's buoyed
+// weight along the hole.
+void CompleteModelInput(Case& c);
 
 }  // namespace drillflex::io

@@ -91,8 +91,8 @@ void ReportData::AddStatic(const Case& c, const model::ModelInput& input, const 
   const Out out{c.output_units};
   json components = json::array();
   double s = 0.0;
-  for (std::size_t index = 0; index < c.string.components.size(); ++index) {
-    const model::Component& component = c.string.components[index];
+  for (std::size_t index = 0; index < c.input.string.components.size(); ++index) {
+    const model::Component& component = c.input.string.components[index];
     const double length = component.length * component.count;
     json entry = {{"name", component.name},
                   {"type", model::ComponentTypeName(component.type)},

@@ -14,19 +14,19 @@ using units::Quantity;
 
 RuleOfThumbRpm CalcRuleOfThumbCriticalRpm(const Case& c) {
   RuleOfThumbRpm rule;
-  if (c.string.components.empty()) return rule;
+  if (c.input.string.components.empty()) return rule;
   // The span: between the outermost supports that hold the string laterally; else, for drill pipe
   // or HWDP with tool joints, one joint spacing (the rule's own use: the pipe between two joints
   // that touch the wall); else the whole string.
   double lowest = 1e300, highest = -1e300;
-  for (const model::Support& support : c.supports) {
+  for (const model::Support& support : c.input.supports) {
     if (!support.fixed[model::kY] && !support.fixed[model::kZ]) continue;
     lowest = std::min(lowest, support.at);
     highest = std::max(highest, support.at);
   }
   double length = 0.0, longest = -1.0;
   const model::Component* dominant = nullptr;
-  for (const model::Component& component : c.string.components) {
+  for (const model::Component& component : c.input.string.components) {
     const double span = component.length * component.count;
     length += span;
     if (span > longest) longest = span, dominant = &component;

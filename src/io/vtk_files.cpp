@@ -189,12 +189,12 @@ double ContactRadiusAt(const Case& c, const std::vector<ContactCircleAt>& circle
   const auto at = std::lower_bound(circles.begin(), circles.end(), s - kSameStationTolerance,
                                    [](const ContactCircleAt& circle, double value) { return circle.s < value; });
   if (at != circles.end() && std::abs(at->s - s) <= kSameStationTolerance) return at->radius;
-  return c.string.components.empty() ? 0.0 : 0.5 * model::ContactDiameterAt(c.string, s);
+  return c.input.string.components.empty() ? 0.0 : 0.5 * model::ContactDiameterAt(c.input.string, s);
 }
 
 // Half the body OD at a station; at a connection the component's below (model::ComponentAt).
 double OuterRadiusAt(const Case& c, double s) {
-  return c.string.components.empty() ? 0.0 : 0.5 * model::ComponentAt(c.string, s).outer_diameter;
+  return c.input.string.components.empty() ? 0.0 : 0.5 * model::ComponentAt(c.input.string, s).outer_diameter;
 }
 
 // The well the model was built in (its wall contacts share it); without wall contacts, the case's,

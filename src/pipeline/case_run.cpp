@@ -4,7 +4,6 @@
 
 #include "analyses/bit_bottom_start.hpp"
 #include "core/error.hpp"
-#include "io/model_input.hpp"
 #include "pipeline/summary.hpp"
 
 namespace drillflex::pipeline {
@@ -54,7 +53,7 @@ AnalysisRequest CaseAnalyses(const io::Case& c) {
 }
 
 CaseModel BuildCaseModel(const io::Case& c) {
-  model::ModelInput input = io::MakeModelInput(c);
+  model::ModelInput input = c.input;
   auto cache = std::make_unique<cms::ReductionCache>();
   model::BuiltModel built = model::BuildSystemModel(input, *cache);
   return CaseModel{std::move(input), std::move(cache), std::move(built)};
@@ -144,7 +143,7 @@ void RunLinearAnalyses(const io::Case& c, const RunOptions& options, const VecX&
 
 CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const RunOptions& options) {
   const RunObserver& observer = options.observer;
-  if (request.static_analysis && !c.well && c.supports.empty()) {
+  if (request.static_analysis && !c.well && c.input.supports.empty()) {
     throw InputError({c.file, 0, 0}, "supports",
                      "the string has no well and no supports: nothing holds it (add 'supports')");
   }
@@ -154,11 +153,11 @@ CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const Run
   if (observer.note) {
     observer.note(fmt::format("model: {} bodies, {} coordinates", built.system.bodies().size(),
                               built.system.num_velocities()));
-    if (c.operation.hook_load && input.trajectory && input.supports.empty()) {
+    if (c.input.operation.hook_load && input.trajectory && input.supports.empty()) {
       observer.note(fmt::format("operation: WOB {} from the hook load {} (the string's buoyed weight along the hole "
                                 "less it; the pipe above the model, to the surface, weighs {})",
                                 Show(c, input.operation.weight_on_bit, Quantity::WeightOnBit),
-                                Show(c, *c.operation.hook_load, Quantity::Force),
+                                Show(c, *c.input.operation.hook_load, Quantity::Force),
                                 Show(c, model::StringAboveWeight(input), Quantity::Force)));
     }
   }

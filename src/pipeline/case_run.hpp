@@ -78,7 +78,7 @@ struct CaseModel {
   model::BuiltModel built;
 };
 
-// The case's model input and model (io::MakeModelInput, model::BuildSystemModel).
+// The case's model: its model input (io::Case::input) built by model::BuildSystemModel.
 CaseModel BuildCaseModel(const io::Case& c);
 
 // The static settings of the case, with the observer's log.

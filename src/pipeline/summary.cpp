@@ -94,7 +94,7 @@ void WriteStatic(std::ostream& out, const io::Case& c, const analyses::StaticRes
                            [](const auto& a, const auto& b) { return a.normal_force < b.normal_force; });
       out << fmt::format("  {} wall contacts carry force; the largest {} at {} ({})\n", result.contacts.size(),
                                Show(c, largest->normal_force, Quantity::Force), where(largest->s, largest->md),
-                               c.string.components.at(largest->component).name);
+                               c.input.string.components.at(largest->component).name);
     }
   }
   if (tightest) {
@@ -307,7 +307,7 @@ void WriteSummary(std::ostream& out, const io::Case& c, Analysis analysis, const
         const analyses::TransientSettings& settings = results.transient_setup->settings;
         const bool block = settings.block.has_value();
         const bool driven =
-            block || settings.top_drive.has_value() || settings.bit_rock.has_value() || c.operation.rpm != 0.0;
+            block || settings.top_drive.has_value() || settings.bit_rock.has_value() || c.input.operation.rpm != 0.0;
         WriteTransient(out, c, *results.transient, driven, block);
       }
       return;

@@ -78,34 +78,34 @@ TEST(CaseReader, ReadsEveryKeyOfTheContractInSI) {
   EXPECT_FALSE(c.well->hole[1].to_md);
   EXPECT_NEAR(c.well->bit_md, 6000 * kFt, 1e-9);
   EXPECT_NEAR(c.well->output_step, 30 * kFt, 1e-12);
-  ASSERT_TRUE(c.fluid);
-  EXPECT_NEAR(c.fluid->density, 10.5 * 119.826427, 1e-3);
-  EXPECT_NEAR(c.fluid->viscosity, 0.020, 1e-12);
-  EXPECT_DOUBLE_EQ(c.gravity, 9.81);
-  ASSERT_TRUE(c.materials.count("brass"));
-  EXPECT_DOUBLE_EQ(c.materials.at("brass").youngs_modulus, 1.0e11);
-  ASSERT_TRUE(c.materials.count("steel"));
-  ASSERT_EQ(c.string.components.size(), 4u);
-  const auto& stabilizer = c.string.components[1];
+  ASSERT_TRUE(c.input.fluid);
+  EXPECT_NEAR(c.input.fluid->density, 10.5 * 119.826427, 1e-3);
+  EXPECT_NEAR(c.input.fluid->viscosity, 0.020, 1e-12);
+  EXPECT_DOUBLE_EQ(c.input.gravity, 9.81);
+  ASSERT_TRUE(c.input.materials.count("brass"));
+  EXPECT_DOUBLE_EQ(c.input.materials.at("brass").youngs_modulus, 1.0e11);
+  ASSERT_TRUE(c.input.materials.count("steel"));
+  ASSERT_EQ(c.input.string.components.size(), 4u);
+  const auto& stabilizer = c.input.string.components[1];
   EXPECT_EQ(stabilizer.type, model::ComponentType::Stabilizer);
   EXPECT_NEAR(stabilizer.inner_diameter, 2.8125 * kIn, 1e-12);
   EXPECT_NEAR(*stabilizer.blade_diameter, 8.375 * kIn, 1e-12);
-  EXPECT_EQ(c.string.components[2].count, 3);
-  EXPECT_NEAR(*c.string.components[3].joint_diameter, 6.625 * kIn, 1e-12);
-  EXPECT_NEAR(c.model.body_length, 3.0, 1e-12);
-  EXPECT_EQ(c.model.modes_per_body, 6);
-  EXPECT_DOUBLE_EQ(c.model.contact.stiffness, 1e8);
-  ASSERT_EQ(c.supports.size(), 1u);
-  EXPECT_TRUE(c.supports[0].fixed[model::kX] && c.supports[0].fixed[model::kZ]);
-  EXPECT_FALSE(c.supports[0].fixed[model::kRx]);
-  ASSERT_EQ(c.loads.size(), 3u);
-  EXPECT_NEAR(c.loads[0].force.y(), 1000 * kLbf, 1e-9);
-  EXPECT_TRUE(c.loads[1].distributed);
-  EXPECT_NEAR(c.loads[1].force_per_length.z(), 100 * kLbf / kFt, 1e-9);
-  EXPECT_NEAR(c.loads[2].moment.z(), 500 * kLbf * kFt, 1e-9);
-  EXPECT_NEAR(c.operation.weight_on_bit, 25000 * kLbf, 1e-6);
-  EXPECT_NEAR(c.operation.rpm, 120 * 2 * kPi / 60, 1e-12);
-  EXPECT_NEAR(c.operation.torque_on_bit, 5000 * kLbf * kFt, 1e-9);
+  EXPECT_EQ(c.input.string.components[2].count, 3);
+  EXPECT_NEAR(*c.input.string.components[3].joint_diameter, 6.625 * kIn, 1e-12);
+  EXPECT_NEAR(c.input.settings.body_length, 3.0, 1e-12);
+  EXPECT_EQ(c.input.settings.modes_per_body, 6);
+  EXPECT_DOUBLE_EQ(c.input.settings.contact.stiffness, 1e8);
+  ASSERT_EQ(c.input.supports.size(), 1u);
+  EXPECT_TRUE(c.input.supports[0].fixed[model::kX] && c.input.supports[0].fixed[model::kZ]);
+  EXPECT_FALSE(c.input.supports[0].fixed[model::kRx]);
+  ASSERT_EQ(c.input.loads.size(), 3u);
+  EXPECT_NEAR(c.input.loads[0].force.y(), 1000 * kLbf, 1e-9);
+  EXPECT_TRUE(c.input.loads[1].distributed);
+  EXPECT_NEAR(c.input.loads[1].force_per_length.z(), 100 * kLbf / kFt, 1e-9);
+  EXPECT_NEAR(c.input.loads[2].moment.z(), 500 * kLbf * kFt, 1e-9);
+  EXPECT_NEAR(c.input.operation.weight_on_bit, 25000 * kLbf, 1e-6);
+  EXPECT_NEAR(c.input.operation.rpm, 120 * 2 * kPi / 60, 1e-12);
+  EXPECT_NEAR(c.input.operation.torque_on_bit, 5000 * kLbf * kFt, 1e-9);
   ASSERT_TRUE(c.analyses.static_analysis);
   ASSERT_TRUE(c.analyses.modes);
   EXPECT_EQ(c.analyses.modes->count, 10);
@@ -278,11 +278,11 @@ analyses: {modes: }
   EXPECT_EQ(c.name, "beam");
   EXPECT_EQ(c.units, units::System::SI);
   EXPECT_FALSE(c.well);
-  EXPECT_DOUBLE_EQ(c.gravity, 0.0);
-  EXPECT_EQ(c.model.elements_per_body, 10);
+  EXPECT_DOUBLE_EQ(c.input.gravity, 0.0);
+  EXPECT_EQ(c.input.settings.elements_per_body, 10);
   ASSERT_TRUE(c.analyses.modes);
   EXPECT_EQ(c.analyses.modes->count, 10);
-  EXPECT_TRUE(c.supports[0].fixed[model::kRz]);
+  EXPECT_TRUE(c.input.supports[0].fixed[model::kRz]);
   EXPECT_NEAR(StringLength(c), 5.08, 1e-12);
 }
 
@@ -337,14 +337,14 @@ TEST(CaseReader, FrictionVelocityAndFluidFrequency) {
   const Case given = ParseCase(head + "model:\n  contact: {friction: 0.3, friction_velocity: 2 mm/s}\n"
                                       "analyses:\n  transient: {fluid_frequency: 3 Hz}\n",
                                "given.yaml");
-  ASSERT_TRUE(given.model.contact.friction_velocity.has_value());
-  EXPECT_NEAR(*given.model.contact.friction_velocity, 2e-3, 1e-15);
+  ASSERT_TRUE(given.input.settings.contact.friction_velocity.has_value());
+  EXPECT_NEAR(*given.input.settings.contact.friction_velocity, 2e-3, 1e-15);
   ASSERT_TRUE(given.analyses.transient && given.analyses.transient->fluid_frequency);
   EXPECT_NEAR(*given.analyses.transient->fluid_frequency, 6.0 * kPi, 1e-12);
   const Case bare = ParseCase(head + "model:\n  contact: {friction_velocity: 0.01}\n", "bare.yaml");
-  EXPECT_NEAR(*bare.model.contact.friction_velocity, 0.01 * kFt, 1e-15);  // ft/s
+  EXPECT_NEAR(*bare.input.settings.contact.friction_velocity, 0.01 * kFt, 1e-15);  // ft/s
   const Case unset = ParseCase(head + "analyses:\n  transient: {duration: 1 s}\n", "unset.yaml");
-  EXPECT_FALSE(unset.model.contact.friction_velocity.has_value());
+  EXPECT_FALSE(unset.input.settings.contact.friction_velocity.has_value());
   EXPECT_FALSE(unset.analyses.transient->fluid_frequency.has_value());
 }
 
@@ -530,8 +530,8 @@ TEST(CaseReader, SurveyFileErrorsNameTheCsvLine) {
 TEST(CaseReader, UnitsWithTheirOwnUnitOverrideTheSystem) {
   const Case si = ParseCase("string:\n  - {type: collar, od: 8 in, id: 2.8125 in, length: 30 ft}\n", "a.yaml");
   const Case field = ParseCase("units: field\nstring:\n  - {type: collar, od: 8, id: 2.8125, length: 30}\n", "b.yaml");
-  EXPECT_DOUBLE_EQ(si.string.components[0].outer_diameter, field.string.components[0].outer_diameter);
-  EXPECT_DOUBLE_EQ(si.string.components[0].length, field.string.components[0].length);
+  EXPECT_DOUBLE_EQ(si.input.string.components[0].outer_diameter, field.input.string.components[0].outer_diameter);
+  EXPECT_DOUBLE_EQ(si.input.string.components[0].length, field.input.string.components[0].length);
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ double Rule(double span_ft) { return 33055.0 * std::sqrt(25.0 + 4.276 * 4.276) /
 
 TEST(RuleOfThumb, SpanIsBetweenSupportsElseOneJointElseTheString) {
   Case c;
-  c.string.components = {Pipe(30.0, true)};
+  c.input.string.components = {Pipe(30.0, true)};
   // Pipe with tool joints, no supports: one joint spacing (30 ft, one joint per 30 ft item).
   RuleOfThumbRpm rule = CalcRuleOfThumbCriticalRpm(c);
   EXPECT_NEAR(rule.span, 30.0 * kFoot, 1e-12);
@@ -36,13 +36,13 @@ TEST(RuleOfThumb, SpanIsBetweenSupportsElseOneJointElseTheString) {
   low.at = 0.0;
   high.at = 600.0 * kFoot;
   low.fixed[model::kY] = high.fixed[model::kZ] = true;
-  c.supports = {low, high};
+  c.input.supports = {low, high};
   rule = CalcRuleOfThumbCriticalRpm(c);
   EXPECT_NEAR(rule.span, 600.0 * kFoot, 1e-9);
   EXPECT_NEAR(rule.rpm / kRpm, Rule(600.0), 1e-9 * Rule(600.0));
   // No joints and no supports: the whole string (30 × 30 ft).
-  c.supports.clear();
-  c.string.components = {Pipe(30.0, false)};
+  c.input.supports.clear();
+  c.input.string.components = {Pipe(30.0, false)};
   EXPECT_NEAR(CalcRuleOfThumbCriticalRpm(c).span, 900.0 * kFoot, 1e-9);
 }
 

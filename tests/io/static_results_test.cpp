@@ -27,7 +27,7 @@ Case FieldCaseInAWell() {
   c.well->bit_md = 1000.0 * kFt;
   model::Component collar;
   collar.name = "short collar";
-  c.string.components = {collar};
+  c.input.string.components = {collar};
   return c;
 }
 

@@ -257,7 +257,7 @@ TEST(VtkFiles, ContactFreeCaseWithoutAWellWritesOnlyTheStringAndNoNonFiniteNumbe
   collar.name = "collar";
   collar.outer_diameter = 6.75 * kIn;
   collar.length = 10.0;
-  c.string.components = {collar};
+  c.input.string.components = {collar};
   const model::BuiltModel built{model::SystemModel({}, {}, 10.0), {}, {}, -1, -1, 0.0, -1};
   analyses::StaticResult result;
   for (int i = 0; i <= 4; ++i) {
