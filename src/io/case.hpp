@@ -34,6 +34,7 @@ struct Case {
   std::string name;
   std::string file;        // path of the case file as given
   std::string directory;   // its directory, for relative paths
+  std::string text;        // the case file's text as read (ParseCaseWithValues reads it again changed)
   units::System units = units::System::SI;
   units::System output_units = units::System::SI;
 
@@ -51,6 +52,26 @@ Case ReadCase(const std::string& path);
 
 // The same from text (tests); `file` names it in messages, `directory` resolves survey_file.
 Case ParseCase(const std::string& text, const std::string& file, const std::string& directory = ".");
+
+// One value of a case set by its key path instead of the file's: `key` as the case reader names keys
+// ("operation.wob", "string[4].length", "model.contact.friction", "analyses.transient.duration"),
+// `value` YAML in the case's syntax: a scalar with or without a unit ("30 klbf", "40 ft", "0.3") or a
+// flow list or map ("{type: collar, od: 6.75, id: 2.8125, length: 10}").
+struct CaseValue {
+  std::string key;
+  std::string value;
+};
+
+// The case of `text` with `values` set in its YAML tree before it is read, in order. Every key up to
+// the last must be in the case (an index in its list's range); the last may be a key the case leaves
+// out, which the reader then checks as any other. Throws InputError naming the file and the key: a key
+// path that cannot be read, a key or index the case does not have, a value that is not YAML, and every
+// error of the reader for a value set here (at the place of the value it replaces, or of its map).
+Case ParseCaseWithValues(const std::string& text, const std::string& file, const std::string& directory,
+                         const std::vector<CaseValue>& values);
+
+// The same case read again from its text with `values` set (ParseCaseWithValues).
+Case WithValues(const Case& c, const std::vector<CaseValue>& values);
 
 // Total length of the string (m) from the bit end to its top.
 double StringLength(const Case& c);

@@ -70,7 +70,8 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
 
 }  // namespace
 
-Case ParseCase(const std::string& text, const std::string& file, const std::string& directory) {
+Case ParseCaseWithValues(const std::string& text, const std::string& file, const std::string& directory,
+                         const std::vector<CaseValue>& values) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -79,7 +80,19 @@ Case ParseCase(const std::string& text, const std::string& file, const std::stri
                      fmt::format("not valid YAML: {}", error.msg));
   }
   const auto context = std::make_shared<ReadContext>(ReadContext{file, units::System::SI});
-  return ReadRoot(YamlView(root, "", context, {file, 1, 1}), file, directory);
+  const YamlView view(root, "", context, {file, 1, 1});
+  SetCaseValues(view, values);
+  Case c = ReadRoot(view, file, directory);
+  c.text = text;
+  return c;
+}
+
+Case ParseCase(const std::string& text, const std::string& file, const std::string& directory) {
+  return ParseCaseWithValues(text, file, directory, {});
+}
+
+Case WithValues(const Case& c, const std::vector<CaseValue>& values) {
+  return ParseCaseWithValues(c.text, c.file, c.directory, values);
 }
 
 Case ReadCase(const std::string& path) {

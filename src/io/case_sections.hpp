@@ -26,6 +26,9 @@ model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operat
 // `analyses.transient.bit_rock` (io/bit_rock_section.cpp).
 model::BitRockParameters ReadBitRockSection(const YamlView& node);
 
+// Writes `values` into the case's YAML tree below `root` (io/case_values.cpp; ParseCaseWithValues).
+void SetCaseValues(const YamlView& root, const std::vector<CaseValue>& values);
+
 // Checks that need more than one section: the string fits the hole at every MD, the string does
 // not reach above the surface, supports and loads lie on the string. `root` locates messages.
 void CheckCaseConsistency(const Case& c, const YamlView& root);

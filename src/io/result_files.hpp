@@ -18,6 +18,9 @@ class ResultFiles {
   const std::string& directory() const { return directory_; }
   void Add(std::string name, std::string content);
   nlohmann::json& json() { return json_; }
+  const nlohmann::json& json() const { return json_; }
+  // The files Add()ed so far (name, content), results.json not among them.
+  const std::vector<std::pair<std::string, std::string>>& files() const { return files_; }
 
   // Writes every file and results.json; returns the paths written. Throws std::runtime_error
   // (with the path and the system's reason) when the directory or a file cannot be written.

@@ -1,0 +1,20 @@
+"""drillflex: drill-string mechanics from Python (docs/python.md).
+
+    import drillflex
+    case = drillflex.Case.from_file("examples/rotary-bha-build/case.yaml")
+    st = drillflex.static(case.with_values({"operation.wob": "30 klbf"}))
+    print(st.bit.side_force, st.nodes["axial_force"][:3])   # SI
+    print(st)                                               # the command line's summary
+"""
+from drillflex import units
+from drillflex.case import Case
+from drillflex.errors import ConvergenceError, DrillflexError, InputError, UnitError
+from drillflex.results import (BucklingResult, ModesResult, Record, StaticResult, TransientResult,
+                               VibrationResult)
+from drillflex.runs import buckling, modes, run, static, transient, vibration
+
+__all__ = [
+    "Case", "units", "static", "modes", "vibration", "buckling", "transient", "run",
+    "StaticResult", "ModesResult", "VibrationResult", "BucklingResult", "TransientResult", "Record",
+    "DrillflexError", "InputError", "UnitError", "ConvergenceError",
+]

@@ -1,0 +1,138 @@
+"""Every entry point: the typed results (SI, views of the run's storage), their summaries, run()'s
+dict, units and progress."""
+from __future__ import annotations
+
+import gc
+
+import numpy as np
+import pytest
+
+import drillflex
+from conftest import ROTATING
+
+
+def test_static_typed_result(example: drillflex.Case) -> None:
+    st = drillflex.static(example)
+    assert st.converged and st.stable
+    n = len(st.nodes["s"])
+    assert n == 1015
+    assert st.nodes["md"].shape == (n,) and st.nodes["position"].shape == (n, 3)
+    assert st.nodes["s"][0] == 0.0
+    assert st.nodes["md"][0] == pytest.approx(7400 * 0.3048, abs=0.1)  # SI: the bit at 7400 ft
+    assert st.nodes["axial_force"][0] < 0  # compression at the bit
+    assert st.bit.side_force == pytest.approx(1629.6 * 4.4482216, rel=1e-4)  # N
+    assert st.bit.inclination_tendency == "build"
+    assert len(st.contacts["normal_force"]) == 39
+    assert st.contacts["component_name"][0] == "near-bit stabilizer"
+    assert len(st.reactions) == 2 and st.reactions[0].force.shape == (3,)
+    assert str(st).startswith("static: converged")
+    assert "bit: side force 1629.6 lbf" in str(st)
+
+
+def test_arrays_view_the_runs_storage(small: drillflex.Case) -> None:
+    st = drillflex.static(small)
+    force = st.nodes["axial_force"]
+    assert not force.flags.writeable and not force.flags.owndata
+    assert force.base is not None
+    with pytest.raises(ValueError):
+        force[0] = 1.0
+    # Two columns of the same stations share one block of memory (strided views of the results).
+    assert np.shares_memory(st.nodes["axial_force"], st.nodes["torque"]) is False
+    assert st.nodes["position"].strides[0] == st.nodes["axial_force"].strides[0]
+    expected = force.copy()
+    del st
+    gc.collect()
+    assert (force == expected).all()  # the array keeps the results alive
+
+
+def test_modes_typed_result(small: drillflex.Case) -> None:
+    md = drillflex.modes(small)
+    assert len(md.frequency_hz) == 6
+    assert (np.diff(md.eigenvalue) >= 0).all()
+    assert md.displacement[0].shape == (len(md.s), 3)
+    assert md.first_lateral is not None
+    assert md.critical_speed == pytest.approx(2 * np.pi * md.frequency_hz[md.first_lateral])
+    assert md.first_frequency_hz == md.frequency_hz[md.first_lateral]
+    assert md.campbell is None
+    assert str(md).startswith("modes:")
+
+
+def test_vibration_typed_result(example: drillflex.Case) -> None:
+    vb = drillflex.vibration(example.with_values({"analyses.vibration.rpm": "{from: 60, to: 120, step: 5}"}))
+    assert len(vb.rpm) == 13
+    assert vb.rpm[0] == pytest.approx(60 * np.pi / 30)  # rad/s
+    assert vb.max_lateral_displacement.shape == vb.rpm.shape
+    assert vb.safe_windows.ndim == 2 and vb.safe_windows.shape[1] == 2
+    assert len(vb.excitation_displacement) == 2
+    assert "vibration" in str(vb)
+
+
+def test_buckling_typed_result() -> None:
+    case = drillflex.Case.from_yaml("""\
+name: column
+units: SI
+string:
+  - {type: collar, od: 0.1, id: 0.05, length: 10}
+model: {body_length: 5 m, elements_per_body: 6, modes_per_body: 4}
+supports:
+  - {at: 0, fix: [x, y, z, rx]}
+  - {at: 10 m, fix: [y, z]}
+loads:
+  - {at: 10 m, force: [-1000, 0, 0]}
+analyses:
+  buckling: {}
+""")
+    bk = drillflex.buckling(case)
+    assert bk.load_factor > 1
+    assert bk.critical_load == pytest.approx(1000 * bk.load_factor, rel=1e-6)
+    assert bk.mode_displacement.shape == (len(bk.s), 3)
+    assert "buckling" in str(bk)
+
+
+def test_transient_with_progress() -> None:
+    case = drillflex.Case.from_file(str(ROTATING)).with_values(
+        {"analyses.transient.duration": "0.004 s", "analyses.transient.output_interval": "0.001 s"})
+    calls = []
+    tr = drillflex.transient(case, progress=lambda analysis, done, total: calls.append((analysis, done, total)))
+    assert tr.samples["time"][-1] == pytest.approx(0.004)
+    assert tr.probes["lateral_y"].shape == (len(tr.samples["time"]), 3)
+    assert tr.statistics.steps > 0
+    assert calls and all(name == "transient" for name, _, _ in calls)
+    assert calls[-1][1] == pytest.approx(calls[-1][2])
+    assert str(tr).startswith("transient")
+
+
+def test_progress_callback_errors_propagate() -> None:
+    case = drillflex.Case.from_file(str(ROTATING)).with_values({"analyses.transient.duration": "0.004 s"})
+
+    def stop(analysis: str, done: float, total: float) -> None:
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        drillflex.transient(case, progress=stop)
+
+
+def test_run_returns_results_json(small: drillflex.Case) -> None:
+    results = drillflex.run("static", small)
+    nodes = results["static"]["nodes"]
+    assert isinstance(nodes, np.ndarray) and nodes.dtype.names is not None
+    assert nodes[0]["axial_force"] == nodes["axial_force"][0]
+    assert results["static"]["converged"] is True
+    assert "static.csv" in results["tables"]
+    assert results["tables"]["static.csv"]["axial_force"][0] == pytest.approx(nodes["axial_force"][0])
+    both = drillflex.run("run", small)
+    assert "modes" in both and "static" in both
+
+
+def test_log_receives_the_notes(small: drillflex.Case) -> None:
+    lines = []
+    drillflex.static(small, log=lines.append)
+    assert any(line.startswith("model:") for line in lines)
+
+
+def test_units_convert() -> None:
+    assert drillflex.units.convert(1.0, "ft", "m") == 0.3048
+    feet = drillflex.units.convert(np.array([0.3048, 3.048]), "m", "ft")
+    assert feet == pytest.approx([1.0, 10.0])
+    assert drillflex.units.convert(1.0, "klbf", "N") == pytest.approx(4448.2216152605)
+    assert drillflex.units.convert([60.0], "rpm", "rad/s")[0] == pytest.approx(2 * np.pi)
