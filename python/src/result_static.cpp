@@ -57,7 +57,7 @@ py::dict Contacts(const io::Case& c, const std::vector<ContactReport>& contacts,
   columns["normal"] = FieldView(contacts, &ContactReport::normal, owner);
   py::list names;
   for (const ContactReport& contact : contacts) {
-    const auto& components = c.string.components;
+    const auto& components = c.input.string.components;
     const bool known = contact.component >= 0 && contact.component < static_cast<int>(components.size());
     names.append(known ? components[static_cast<std::size_t>(contact.component)].name : std::string());
   }

@@ -62,9 +62,9 @@ struct CaseValue {
   std::string value;
 };
 
-// The case of `text` with `values` set in its YAML tree before it is read, in order. Every key up to
-// the last must be in the case (an index in its list's range); the last may be a key the case leaves
-// out, which the reader then checks as any other. Throws InputError naming the file and the key: a key
+// The case of `text` with `values` set in its YAML tree before it is read, in order. A key the case
+// leaves out is added, with the maps on its way, and the reader checks it as any other; an index must
+// be in its list's range. Throws InputError naming the file and the key: a key
 // path that cannot be read, a key or index the case does not have, a value that is not YAML, and every
 // error of the reader for a value set here (at the place of the value it replaces, or of its map).
 Case ParseCaseWithValues(const std::string& text, const std::string& file, const std::string& directory,

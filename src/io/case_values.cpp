@@ -107,7 +107,17 @@ void SetCaseValue(const YamlView& root, const CaseValue& value) {
   }
   // Never assigned: assigning a YAML::Node (in a YamlView too) overwrites the node it refers to.
   std::optional<YamlView> here(root);
-  for (std::size_t i = 0; i + 1 < steps.size(); ++i) here.emplace(Descend(*here, steps[i], value));
+  for (std::size_t i = 0; i + 1 < steps.size(); ++i) {
+    // A map the case leaves out (`model.contact` when the case gives no contact settings, `fluid` in a
+    // dry case): created empty; the reader checks its keys as any other, so a misspelled one is still
+    // named ("unknown key 'fluidd' (did you mean 'fluid'?)"). A list's item must be there.
+    const KeyStep& step = steps[i];
+    if (!step.key.empty() && (here->IsNull() || (here->IsMap() && !here->PresentChild(step.key)))) {
+      YAML::Node parent = here->node();
+      parent[step.key] = YAML::Node(YAML::NodeType::Map);
+    }
+    here.emplace(Descend(*here, step, value));
+  }
   // The last key may be one the case leaves out (the reader checks it); a list's item must be there.
   const KeyStep& last = steps.back();
   if (!last.key.empty() && !here->IsMap() && !here->IsNull()) Descend(*here, last, value);  // throws: not a map
