@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace drillflex::app {
 
@@ -17,6 +18,12 @@ struct CommandOptions {
   std::string output_directory;  // "" = results/<case name>
   bool verbose = false;          // the solvers' progress on standard error
   bool no_report = false;        // no report.html and no VTK files (batch runs)
+  // `sweep` only:
+  std::vector<std::string> vary;  // KEY=VALUES, each an axis of the sweep
+  std::string cases_table;        // a CSV of key paths and one run a row, instead of (or with no) --vary
+  int jobs = 1;                   // runs at once on this machine
+  bool keep_runs = false;         // each run's own files under DIR/runs/NNNN/
+  bool resume = false;            // skip the runs an interrupted sweep finished
 };
 
 int RunCheck(const CommandOptions& options);
@@ -27,5 +34,6 @@ int RunBucklingCommand(const CommandOptions& options);
 int RunVibrationCommand(const CommandOptions& options);
 int RunTransientCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);
+int RunSweepCommand(const CommandOptions& options);
 
 }  // namespace drillflex::app

@@ -1,6 +1,7 @@
 // drillflex: drill-string and BHA dynamics. `drillflex <analysis> CASE.yaml [-o OUTDIR]`.
 #include <functional>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -60,6 +61,8 @@ int main(int argc, char** argv) {
       {"transient", "Time integration from the static equilibrium: transient.csv at the output interval",
        drillflex::app::RunTransientCommand, true, true},
       {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true, true},
+      {"sweep", "The case's analyses for every combination of varied values: sweep.csv, one row a run",
+       drillflex::app::RunSweepCommand, true, false},
   };
 
   CommandOptions options;
@@ -74,6 +77,16 @@ int main(int argc, char** argv) {
       if (command.writes_report) {
         sub->add_flag("--no-report", options.no_report, "Write no report.html and no VTK files (batch runs)");
       }
+    }
+    if (std::string(command.name) == "sweep") {
+      sub->add_option("--vary", options.vary,
+                      "KEY=VALUES: a key path of the case and its values, a list (operation.rpm=60,120,180) or a "
+                      "range FROM:TO:STEP with a unit (operation.wob=10:40:5 klbf); repeated: every combination");
+      sub->add_option("--cases", options.cases_table, "A CSV table: a header of key paths, one run a row");
+      sub->add_option("-j,--jobs", options.jobs, "Runs at once on this machine (default 1)")
+          ->check(CLI::Range(1, 1024));
+      sub->add_flag("--keep-runs", options.keep_runs, "Keep each run's own result files under DIR/runs/NNNN/");
+      sub->add_flag("--resume", options.resume, "Skip the runs an interrupted sweep into DIR finished");
     }
     sub->callback([&status, &options, command]() { status = Guarded(command, options); });
   }

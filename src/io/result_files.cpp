@@ -29,7 +29,7 @@ std::vector<std::string> ResultFiles::Commit() const {
     WriteFileAtomically(path, content);
     written.push_back(path);
   }
-  const std::string json_path = (fs::path(directory_) / "results.json").string();
+  const std::string json_path = (fs::path(directory_) / json_name_).string();
   WriteFileAtomically(json_path, json_.dump(2) + "\n");
   written.push_back(json_path);
   return written;

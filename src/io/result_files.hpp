@@ -13,7 +13,9 @@ namespace drillflex::io {
 
 class ResultFiles {
  public:
-  explicit ResultFiles(std::string directory) : directory_(std::move(directory)) {}
+  // `json_name`: the JSON file written last (results.json; a sweep's sweep.json).
+  explicit ResultFiles(std::string directory, std::string json_name = "results.json")
+      : directory_(std::move(directory)), json_name_(std::move(json_name)) {}
 
   const std::string& directory() const { return directory_; }
   void Add(std::string name, std::string content);
@@ -22,12 +24,13 @@ class ResultFiles {
   // The files Add()ed so far (name, content), results.json not among them.
   const std::vector<std::pair<std::string, std::string>>& files() const { return files_; }
 
-  // Writes every file and results.json; returns the paths written. Throws std::runtime_error
+  // Writes every file and the JSON file last; returns the paths written. Throws std::runtime_error
   // (with the path and the system's reason) when the directory or a file cannot be written.
   std::vector<std::string> Commit() const;
 
  private:
   std::string directory_;
+  std::string json_name_;
   std::vector<std::pair<std::string, std::string>> files_;
   nlohmann::json json_ = nlohmann::json::object();
 };

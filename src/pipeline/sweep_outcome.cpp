@@ -1,0 +1,82 @@
+#include "pipeline/sweep_outcome.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analyses/bit_tendency.hpp"
+
+namespace drillflex::pipeline {
+
+double StickSlipSeverity(const analyses::TransientResult& result) {
+  const auto& samples = result.samples;
+  if (samples.empty()) return kNotComputed;
+  // The second half of the samples, as the report takes it.
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest, sum = 0.0;
+  int count = 0;
+  for (std::size_t i = samples.size() / 2; i < samples.size(); ++i) {
+    lowest = std::min(lowest, samples[i].bit_speed);
+    highest = std::max(highest, samples[i].bit_speed);
+    sum += samples[i].bit_speed;
+    ++count;
+  }
+  const double mean = count > 0 ? sum / count : 0.0;
+  if (mean == 0.0) return kNotComputed;
+  return (highest - lowest) / std::abs(mean);
+}
+
+namespace {
+
+void SummarizeStatic(const CaseResults& results, SweepOutcome& outcome) {
+  const analyses::StaticResult& result = *results.static_result;
+  if (result.bit) {
+    outcome.bit_side_force = result.bit->side_force;
+    outcome.bit_tendency = std::string(analyses::TendencyName(analyses::ClassifyBitTendency(*result.bit).inclination));
+  }
+  if (!result.contacts.empty()) {
+    outcome.largest_contact_force = 0.0;
+    for (const auto& contact : result.contacts) {
+      outcome.largest_contact_force = std::max(outcome.largest_contact_force, contact.normal_force);
+    }
+  } else if (results.model.input.trajectory) {
+    outcome.largest_contact_force = 0.0;  // in a well, no contact carries force
+  }
+  if (!result.nodes.empty()) {
+    outcome.peak_von_mises_stress = 0.0;
+    for (const auto& node : result.nodes) {
+      outcome.peak_von_mises_stress = std::max(outcome.peak_von_mises_stress, node.von_mises_stress);
+    }
+    // The surface: the tension at the top of the modelled string, plus, for a string in a well on
+    // its default supports, the buoyed weight of the pipe above it to the surface (model/builder.hpp).
+    const model::ModelInput& input = results.model.input;
+    const bool pipe_above = input.trajectory && input.supports.empty();
+    outcome.hook_load = result.nodes.back().axial_force + (pipe_above ? model::StringAboveWeight(input) : 0.0);
+    outcome.surface_torque = result.nodes.back().torque;
+  }
+}
+
+}  // namespace
+
+SweepOutcome SummarizeRun(const CaseResults& results) {
+  SweepOutcome outcome;
+  outcome.converged = true;
+  if (results.static_result) SummarizeStatic(results, outcome);
+  if (results.vibration && !results.vibration->critical_speeds.empty()) {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const auto& critical : results.vibration->critical_speeds) lowest = std::min(lowest, critical.rpm);
+    outcome.first_critical_rpm = lowest;
+  } else if (results.modes) {
+    if (const analyses::ModeResult* mode = analyses::FirstLateralMode(*results.modes)) {
+      outcome.first_critical_rpm = 2.0 * kPi * mode->frequency_hz;  // one turn a period: ω = 2π f
+    }
+  }
+  if (results.transient && !results.transient->samples.empty()) {
+    outcome.stick_slip_severity = StickSlipSeverity(*results.transient);
+    if (!results.static_result) {
+      outcome.hook_load = results.transient->samples.back().hook_load;
+      outcome.surface_torque = results.transient->samples.back().surface_torque;
+    }
+  }
+  return outcome;
+}
+
+}  // namespace drillflex::pipeline

@@ -1,0 +1,37 @@
+// The headline results of one run of a sweep (a row of sweep.csv): what a drilling engineer compares
+// across a design study, read from the run's results.
+#pragma once
+
+#include <limits>
+#include <string>
+
+#include "pipeline/case_run.hpp"
+
+namespace drillflex::pipeline {
+
+inline constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+
+// SI; kNotComputed (NaN, an empty cell in sweep.csv, null in sweep.json) where the run's analyses
+// give no such figure.
+struct SweepOutcome {
+  bool converged = false;
+  std::string message;                          // why the run failed ("" when it converged)
+  double bit_side_force = kNotComputed;         // N (static, in a well)
+  std::string bit_tendency;                     // "build", "drop", "hold" (static, in a well)
+  double largest_contact_force = kNotComputed;  // N, the largest wall contact force (static)
+  double peak_von_mises_stress = kNotComputed;  // Pa (static)
+  double first_critical_rpm = kNotComputed;     // rad/s: the vibration's lowest critical RPM, else the modes' first lateral
+  double stick_slip_severity = kNotComputed;    // (max − min) / mean bit speed over the transient's second half
+  double hook_load = kNotComputed;              // N: tension at the surface (static: the top's plus the pipe above the model; transient: the end)
+  double surface_torque = kNotComputed;         // N·m, at the top of the modelled string (static, or the transient's end)
+};
+
+// The headline of a finished run.
+SweepOutcome SummarizeRun(const CaseResults& results);
+
+// The stick-slip severity of a transient: (max − min) / mean of the bit's speed over the second half
+// of the run (after the spin-up), as the report shows it (src/io/report/report.js): 0 steady rotation;
+// a bit that stops and swings to twice its mean reads 2. NaN when the bit's mean speed there is zero.
+double StickSlipSeverity(const analyses::TransientResult& result);
+
+}  // namespace drillflex::pipeline
