@@ -50,8 +50,9 @@ std::vector<SweepRow> Master(const io::Case& base, const std::vector<SweepCombin
     const std::size_t k = next++;
     return k < pending.size() ? pending[k] : kStop;
   };
+  const int threads = AvailableThreads();
   std::thread local([&]() {
-    ShareCoresAmongJobs(session.local_size());
+    ShareCoresAmongJobs(session.local_size(), threads);
     for (int index = take(); index != kStop; index = take()) {
       ledger.Record(RunSweepCase(base, index, combinations[static_cast<std::size_t>(index)], options.keep_runs,
                                  runs_directory));
@@ -82,7 +83,7 @@ std::vector<SweepRow> Master(const io::Case& base, const std::vector<SweepCombin
 
 void Worker(const io::Case& base, const std::vector<SweepCombination>& combinations, const SweepOptions& options,
             const SweepMpiSession& session) {
-  ShareCoresAmongJobs(session.local_size());
+  ShareCoresAmongJobs(session.local_size(), AvailableThreads());
   const std::string runs_directory = (std::filesystem::path(options.directory) / "runs").string();
   std::string message;  // the first: a request with no row
   for (;;) {

@@ -104,11 +104,20 @@ SweepRow RunSweepCase(const io::Case& base, int index, const SweepCombination& v
   return row;
 }
 
-void ShareCoresAmongJobs(int jobs) {
+int AvailableThreads() {
 #ifdef _OPENMP
-  omp_set_num_threads(std::max(1, omp_get_num_procs() / std::max(1, jobs)));
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
+void ShareCoresAmongJobs(int jobs, int threads) {
+#ifdef _OPENMP
+  omp_set_num_threads(std::max(1, threads / std::max(1, jobs)));
 #else
   (void)jobs;
+  (void)threads;
 #endif
 }
 
@@ -177,8 +186,9 @@ std::vector<SweepRow> RunSweep(const io::Case& base, const std::vector<SweepComb
   const std::string runs_directory = (std::filesystem::path(options.directory) / "runs").string();
   std::atomic<std::size_t> next{0};
   const int jobs = std::max(1, std::min(options.jobs, static_cast<int>(pending.size())));
+  const int threads = AvailableThreads();
   auto worker = [&]() {
-    ShareCoresAmongJobs(jobs);
+    ShareCoresAmongJobs(jobs, threads);
     for (std::size_t k = next++; k < pending.size(); k = next++) {
       const int index = pending[k];
       ledger.Record(RunSweepCase(base, index, combinations[static_cast<std::size_t>(index)], options.keep_runs,

@@ -75,8 +75,11 @@ class SweepLedger {
 std::vector<SweepRow> RunSweep(const io::Case& base, const std::vector<SweepCombination>& combinations,
                                const SweepOptions& options);
 
-// The OpenMP threads each run may use when `jobs` runs share this machine's cores.
-void ShareCoresAmongJobs(int jobs);
+// The OpenMP threads this process may use (OMP_NUM_THREADS, else the cores), read on the calling
+// thread: a thread started later begins with the environment's value, not the caller's.
+int AvailableThreads();
+// Sets the calling thread's OpenMP threads to its share when `jobs` runs share `threads`.
+void ShareCoresAmongJobs(int jobs, int threads);
 
 // A row as JSON (SI, NaN as null) and back: the journal's lines and the MPI ranks' messages.
 nlohmann::json SweepRowToJson(const SweepRow& row);
