@@ -24,6 +24,20 @@ double StickSlipSeverity(const analyses::TransientResult& result) {
   return (highest - lowest) / std::abs(mean);
 }
 
+SurfaceLoads CalcSurfaceLoads(const CaseResults& results) {
+  SurfaceLoads loads;
+  if (!results.static_result) return loads;
+  const model::ModelInput& input = results.model.input;
+  const double top = model::StringLength(input.string);
+  for (const analyses::SupportReaction& reaction : results.static_result->reactions) {
+    if (std::abs(reaction.s - top) > 1e-6 * std::max(1.0, top)) continue;
+    const bool pipe_above = input.trajectory && input.supports.empty();
+    loads.hook_load = reaction.force.x() + (pipe_above ? model::StringAboveWeight(input) : 0.0);
+    loads.surface_torque = reaction.moment.x();
+  }
+  return loads;
+}
+
 namespace {
 
 void SummarizeStatic(const CaseResults& results, SweepOutcome& outcome) {
@@ -45,13 +59,10 @@ void SummarizeStatic(const CaseResults& results, SweepOutcome& outcome) {
     for (const auto& node : result.nodes) {
       outcome.peak_von_mises_stress = std::max(outcome.peak_von_mises_stress, node.von_mises_stress);
     }
-    // The surface: the tension at the top of the modelled string, plus, for a string in a well on
-    // its default supports, the buoyed weight of the pipe above it to the surface (model/builder.hpp).
-    const model::ModelInput& input = results.model.input;
-    const bool pipe_above = input.trajectory && input.supports.empty();
-    outcome.hook_load = result.nodes.back().axial_force + (pipe_above ? model::StringAboveWeight(input) : 0.0);
-    outcome.surface_torque = result.nodes.back().torque;
   }
+  const SurfaceLoads surface = CalcSurfaceLoads(results);
+  outcome.hook_load = surface.hook_load;
+  outcome.surface_torque = surface.surface_torque;
 }
 
 }  // namespace

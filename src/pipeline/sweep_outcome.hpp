@@ -22,9 +22,20 @@ struct SweepOutcome {
   double peak_von_mises_stress = kNotComputed;  // Pa (static)
   double first_critical_rpm = kNotComputed;     // rad/s: the vibration's lowest critical RPM, else the modes' first lateral
   double stick_slip_severity = kNotComputed;    // (max − min) / mean bit speed over the transient's second half
-  double hook_load = kNotComputed;              // N: tension at the surface (static: the top's plus the pipe above the model; transient: the end)
-  double surface_torque = kNotComputed;         // N·m, at the top of the modelled string (static, or the transient's end)
+  double hook_load = kNotComputed;              // N: tension at the surface (static: CalcSurfaceLoads; else the transient's end)
+  double surface_torque = kNotComputed;         // N·m, at the top (static: CalcSurfaceLoads; else the transient's end)
 };
+
+// What the rig sees of a static equilibrium: the tension at the surface (N; the top support's axial
+// reaction, plus, for a string in a well on its default supports, the buoyed weight of the pipe above
+// the model to the surface) and the torque there (N·m, the top support's). The reactions, not the top
+// node's section forces, which are its element's, half an element down. NaN without a support at the
+// top (a string held elsewhere).
+struct SurfaceLoads {
+  double hook_load = kNotComputed;
+  double surface_torque = kNotComputed;
+};
+SurfaceLoads CalcSurfaceLoads(const CaseResults& results);
 
 // The headline of a finished run.
 SweepOutcome SummarizeRun(const CaseResults& results);
