@@ -25,6 +25,9 @@ SurfaceLoads RunStaticAtSurface(io::Case c, bool off_bottom) {
     hook.at = model::StringLength(c.input.string);
     hook.fixed[model::kX] = hook.fixed[model::kRx] = true;
     c.input.supports = {hook};
+    analyses::StaticSettings settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
+    settings.energy_minimum_on_case_supports = true;
+    c.analyses.static_analysis = settings;
   }
   const CaseResults results = RunCase(c, AnalysisRequest::Only(Analysis::Static));
   SurfaceLoads loads = CalcSurfaceLoads(results);
