@@ -141,6 +141,9 @@ TEST(Sweep, RowsEqualSingleRunsToTheLastDigit) {
   const double weight = tube(0.2159, 0.0) * 0.3 + tube(0.1715, 0.0714) * 27.0 + tube(0.127, 0.1086) * (300.0 - 27.3);
   const double expected_hook = weight * std::cos(kPi / 6.0) - 20e3;
   EXPECT_NEAR(rows[0].outcome.hook_load, expected_hook, 1e-3 * expected_hook);
+  // Turning at 60 rpm, the wall's friction takes a torque the rig supplies clockwise (positive).
+  const io::Case turning = io::WithValues(base, {{"operation.rpm", "60"}});
+  EXPECT_GT(SummarizeRun(RunCase(turning, CaseAnalyses(turning))).surface_torque, 100.0);
   // (The top node's section force, half an element down, read 0.34 % light: the reaction is taken.)
   // Not computed: no modes, vibration or transient in this case.
   EXPECT_TRUE(std::isnan(rows[0].outcome.first_critical_rpm));
