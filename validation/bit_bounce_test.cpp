@@ -7,8 +7,8 @@
 // series with it carries F = a k̃ K_d/(K_d + k̃). The contact force W0 + F_a sin(...) reaches zero,
 // and the bit leaves the bottom, at a_onset = W0/|k̃ K_d/(K_d + k̃)|. The test runs drillflex's
 // transient at 0.95 and 1.05 a_onset: the contact must stay closed below and open above (the onset
-// within 5 %), the contact force's amplitude below it must give a_onset within 5 % too, and the
-// onset bisected between them (whether the contact opens) within 5 %. Each run ~0.2 s.
+// within 5 %), the contact force's amplitude below it must give a_onset within 1 %, and the
+// onset bisected between them (whether the contact opens) within 1 %. Each run ~0.2 s.
 #include <algorithm>
 #include <cmath>
 #include <complex>

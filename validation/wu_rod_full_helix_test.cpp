@@ -10,8 +10,8 @@
 //    44 N at which Wu saw the full helix (Wu's theory 2(2√2 − 1) sqrt(EI w / r) = 43.6 N: the load at
 //    which the helix forms on loading);
 //  * the load after the snap, at the first sample of the full helix, is below that peak (the screw
-//    holds the displacement while the helix shortens the rod) and within 10 % of the load at which a
-//    formed helix holds, Chen's 2√2 sqrt(EI w / r) = 33.7 N (Chen, Lin & Cheatham 1990; the unloading
+//    holds the displacement while the helix shortens the rod) and not more than 10 % below the load at
+//    which a formed helix holds, Chen's 2√2 sqrt(EI w / r) = 33.7 N (Chen, Lin & Cheatham 1990; the unloading
 //    branch of Wu's own theory). Against Wu's 44 N it is −19 %: reported, not within 10 %
 //    (docs/validation.md V3 lists what was tried);
 //  * the helix then holds: at the end the helical run still spans half the rod; it winds through at

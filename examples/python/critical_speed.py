@@ -1,7 +1,6 @@
 """The first lateral critical rotary speed against the weight on bit, on the bundled example
-(examples/rotary-bha-build/case.yaml): the modes about each static equilibrium, the first lateral
-mode's frequency at 1× rotation (the critical RPM the command line's modes summary gives), and the
-drilling RPM's margin to it.
+(examples/rotary-bha-build/case.yaml): the modes about each static equilibrium and the first lateral
+mode's frequency at 1× rotation (the critical RPM the command line's modes summary gives).
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/critical_speed.py [--plot FILE]
 

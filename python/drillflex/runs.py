@@ -16,8 +16,7 @@ Log = Optional[Callable[[str], Any]]
 
 
 def _run(case: CaseLike, analyses: Sequence[str], progress: Progress, log: Log) -> _core.Run:
-    run, _notes = _core.run(as_case(case), list(analyses), progress, log)
-    return run
+    return _core.run(as_case(case), list(analyses), progress, log)
 
 
 def static(case: CaseLike, *, progress: Progress = None, log: Log = None) -> StaticResult:

@@ -53,6 +53,7 @@ void BindCase(py::module_& m) {
           "analyses",
           [](const CaseHandle& self) {
             std::vector<std::string> names;
+            // None listed: [] here, where CaseAnalyses would throw.
             if (!self.c->analyses.static_analysis && !self.c->analyses.modes && !self.c->analyses.vibration &&
                 !self.c->analyses.buckling && !self.c->analyses.transient) {
               return names;

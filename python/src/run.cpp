@@ -36,15 +36,9 @@ pipeline::AnalysisRequest Request(const io::Case& c, const std::vector<std::stri
   return request;
 }
 
-struct RunOutput {
-  RunHandle run;
-  std::vector<std::string> notes;
-};
-
-RunOutput Run(const CaseHandle& c, const std::vector<std::string>& analyses, const py::object& progress,
+RunHandle Run(const CaseHandle& c, const std::vector<std::string>& analyses, const py::object& progress,
               const py::object& log) {
   const pipeline::AnalysisRequest request = Request(*c.c, analyses);
-  RunOutput output;
   pipeline::RunOptions options;
   // The callbacks hold references only: a py::object is not copied without the GIL.
   if (!progress.is_none()) {
@@ -53,15 +47,14 @@ RunOutput Run(const CaseHandle& c, const std::vector<std::string>& analyses, con
       progress(pipeline::AnalysisName(analysis), done, total);
     };
   }
-  options.observer.note = [&output, &log](const std::string& line) {
-    output.notes.push_back(line);
-    if (log.is_none()) return;
-    py::gil_scoped_acquire gil;
-    log(line);
-  };
+  if (!log.is_none()) {
+    options.observer.note = [&log](const std::string& line) {
+      py::gil_scoped_acquire gil;
+      log(line);
+    };
+  }
   py::gil_scoped_release release;
-  output.run = {c.c, std::make_shared<const pipeline::CaseResults>(pipeline::RunCase(*c.c, request, options))};
-  return output;
+  return {c.c, std::make_shared<const pipeline::CaseResults>(pipeline::RunCase(*c.c, request, options))};
 }
 
 }  // namespace
@@ -103,15 +96,9 @@ void BindRun(py::module_& m) {
   BindBucklingResult(run);
   BindTransientResult(run);
 
-  m.def(
-      "run",
-      [](const CaseHandle& c, const std::vector<std::string>& analyses, const py::object& progress, const py::object& log) {
-        RunOutput output = Run(c, analyses, progress, log);
-        return std::pair(std::move(output.run), std::move(output.notes));
-      },
-      py::arg("case"), py::arg("analyses"), py::arg("progress") = py::none(), py::arg("log") = py::none(),
-      "Runs `analyses` (names, or ['run'] for the case's own) of a case: (Run, the run's notes). `progress(analysis, "
-      "done, total)` and `log(line)` are called from the run, which holds the GIL only while they run.");
+  m.def("run", &Run, py::arg("case"), py::arg("analyses"), py::arg("progress") = py::none(), py::arg("log") = py::none(),
+        "Runs `analyses` (names, or ['run'] for the case's own) of a case. `progress(analysis, done, total)` and "
+        "`log(line)` (the run's notes) are called from the run, which holds the GIL only while they run.");
 }
 
 }  // namespace drillflex::python

@@ -36,6 +36,13 @@ BottomMotion Motion(const BitBottomParameters& p, double t) {
   return m;
 }
 
+// N = k δ + c δ̇ while δ > 0 and N > 0, else 0 (header: the damper never pulls).
+double NormalForce(double stiffness, double damping, double penetration, double penetration_rate) {
+  if (!(penetration > 0.0)) return 0.0;
+  const double force = stiffness * penetration + damping * penetration_rate;
+  return force > 0.0 ? force : 0.0;
+}
+
 }  // namespace
 
 void CheckBitBottomParameters(const BitBottomParameters& p) {
@@ -73,10 +80,8 @@ double BitBottomElement::Penetration(const ElementState& state) const {
 double BitBottomElement::ContactForce(const ElementState& state) const {
   const NodeMotion motion = ComputeNodeMotion(*bodies()[0], *state.poses[0], node_, state.velocity);
   const BottomMotion bottom = Motion(parameters_, state.time);
-  const double penetration = bottom.place - axis_.dot(motion.position - position_);
-  if (!(penetration > 0.0)) return 0.0;
-  const double force = stiffness_ * penetration + damping_ * (bottom.rate - axis_.dot(motion.velocity));
-  return force > 0.0 ? force : 0.0;
+  return NormalForce(stiffness_, damping_, bottom.place - axis_.dot(motion.position - position_),
+                     bottom.rate - axis_.dot(motion.velocity));
 }
 
 void BitBottomElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
@@ -84,9 +89,8 @@ void BitBottomElement::DoEvaluate(const ElementState& state, bool with_matrices,
   const BodyPose& pose = *state.poses[0];
   const NodeMotion motion = ComputeNodeMotion(bit, pose, node_, state.velocity);
   const BottomMotion bottom = Motion(parameters_, state.time);
-  const double penetration = bottom.place - axis_.dot(motion.position - position_);
-  const double force =
-      penetration > 0.0 ? stiffness_ * penetration + damping_ * (bottom.rate - axis_.dot(motion.velocity)) : 0.0;
+  const double force = NormalForce(stiffness_, damping_, bottom.place - axis_.dot(motion.position - position_),
+                                   bottom.rate - axis_.dot(motion.velocity));
   if (!(force > 0.0)) return;  // lifted off (or the damper would pull): nothing, no derivatives
   const Mat3 tt = axis_ * axis_.transpose();
   NodeForceJacobian jacobian;

@@ -1,14 +1,12 @@
 #include "model/lateral_fluid.hpp"
 
-#include "model/fluid_inertia.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
 #include "core/error.hpp"
-#include "core/so3.hpp"
 #include "fe/annulus_fluid.hpp"
+#include "model/fluid_inertia.hpp"
 #include "well/hole.hpp"
 
 namespace drillflex::model {

@@ -33,7 +33,7 @@ SurfaceLoads CalcSurfaceLoads(const CaseResults& results) {
     if (std::abs(reaction.s - top) > 1e-6 * std::max(1.0, top)) continue;
     const bool pipe_above = input.trajectory && input.supports.empty();
     loads.hook_load = reaction.force.x() + (pipe_above ? model::StringAboveWeight(input) : 0.0);
-    loads.surface_torque = reaction.moment.x();
+    loads.surface_torque = -reaction.moment.x();  // the support's moment about x resists the drive's clockwise turn
   }
   return loads;
 }

@@ -28,7 +28,8 @@ struct SweepOutcome {
 
 // What the rig sees of a static equilibrium: the tension at the surface (N; the top support's axial
 // reaction, plus, for a string in a well on its default supports, the buoyed weight of the pipe above
-// the model to the surface) and the torque there (N·m, the top support's). The reactions, not the top
+// the model to the surface) and the torque there (N·m, the top support's, positive clockwise looking
+// down-hole: the torque the rig turns the string with, as the transient's surface_torque). The reactions, not the top
 // node's section forces, which are its element's, half an element down. NaN without a support at the
 // top (a string held elsewhere).
 struct SurfaceLoads {

@@ -113,7 +113,7 @@ TEST(SweepOutcome, StickSlipSeverityOfASinusoidalBitSpeed) {
 TEST(Sweep, RowsEqualSingleRunsToTheLastDigit) {
   const io::Case base = BaseCase();
   const std::vector<SweepCombination> combinations =
-      SweepCombinations({ParseSweepAxis("operation.wob=20:60:20 kN"), ParseSweepAxis("model.contact.friction=0.2,0.4")});
+      SweepCombinations({ParseSweepAxis("operation.wob=20:60:20 kN"), ParseSweepAxis("operation.rpm=0,60")});
   const fs::path directory = FreshDirectory("equal");
   const std::vector<SweepRow> rows = RunSweep(base, combinations, {directory.string(), 2, false, false, {}});
   ASSERT_EQ(rows.size(), 6u);
@@ -141,6 +141,10 @@ TEST(Sweep, RowsEqualSingleRunsToTheLastDigit) {
   const double weight = tube(0.2159, 0.0) * 0.3 + tube(0.1715, 0.0714) * 27.0 + tube(0.127, 0.1086) * (300.0 - 27.3);
   const double expected_hook = weight * std::cos(kPi / 6.0) - 20e3;
   EXPECT_NEAR(rows[0].outcome.hook_load, expected_hook, 1e-3 * expected_hook);
+  // Turning at 60 rpm, the wall's friction takes a torque the rig supplies clockwise (positive); at
+  // rest none.
+  EXPECT_GT(rows[1].outcome.surface_torque, 100.0);
+  EXPECT_NEAR(rows[0].outcome.surface_torque, 0.0, 1e-3);
   // (The top node's section force, half an element down, read 0.34 % light: the reaction is taken.)
   // Not computed: no modes, vibration or transient in this case.
   EXPECT_TRUE(std::isnan(rows[0].outcome.first_critical_rpm));
@@ -149,8 +153,8 @@ TEST(Sweep, RowsEqualSingleRunsToTheLastDigit) {
   // The table: one row a run, the values as given, empty cells where nothing was computed.
   ComposeSweepFiles(base, rows, directory.string()).Commit();
   const std::string csv = ReadFile(directory / "sweep.csv");
-  EXPECT_NE(csv.find("run,operation.wob,model.contact.friction,converged,bit_side_force"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("\n6,60 kN,0.4,1,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("run,operation.wob,operation.rpm,converged,bit_side_force"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n6,60 kN,60,1,"), std::string::npos) << csv;
   EXPECT_TRUE(fs::exists(directory / "sweep.json"));
   EXPECT_FALSE(fs::exists(directory / "results.json"));
 }
@@ -174,7 +178,7 @@ TEST(Sweep, ARunThatFailsIsARowWithItsMessage) {
 TEST(Sweep, AResumedSweepEndsWithTheSameTable) {
   const io::Case base = BaseCase();
   const std::vector<SweepCombination> combinations =
-      SweepCombinations({ParseSweepAxis("operation.wob=20:60:20 kN"), ParseSweepAxis("model.contact.friction=0.2,0.4")});
+      SweepCombinations({ParseSweepAxis("operation.wob=20:60:20 kN"), ParseSweepAxis("operation.rpm=0,60")});
   const fs::path whole = FreshDirectory("whole");
   const std::vector<SweepRow> all = RunSweep(base, combinations, {whole.string(), 1, false, false, {}});
   ComposeSweepFiles(base, all, whole.string()).Commit();
@@ -197,7 +201,7 @@ TEST(Sweep, AResumedSweepEndsWithTheSameTable) {
 
   // A journal of another sweep is refused, not mixed in.
   const std::vector<SweepCombination> other = SweepCombinations({ParseSweepAxis("operation.wob=25:65:20 kN"),
-                                                                  ParseSweepAxis("model.contact.friction=0.2,0.4")});
+                                                                  ParseSweepAxis("operation.rpm=0,60")});
   EXPECT_THROW(RunSweep(base, other, {resumed.string(), 1, false, true, {}}), InputError);
 }
 
