@@ -24,6 +24,10 @@ struct CommandOptions {
   int jobs = 1;                   // runs at once on this machine
   bool keep_runs = false;         // each run's own files under DIR/runs/NNNN/
   bool resume = false;            // skip the runs an interrupted sweep finished
+  // `roadmap` only (the case's analyses.roadmap keys, as YAML values: "4000 ft", "0.2, 0.3"); `jobs` too:
+  std::string roadmap_from;
+  std::string roadmap_step;
+  std::string roadmap_friction;
 };
 
 int RunCheck(const CommandOptions& options);
@@ -35,5 +39,6 @@ int RunVibrationCommand(const CommandOptions& options);
 int RunTransientCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);
 int RunSweepCommand(const CommandOptions& options);
+int RunRoadmapCommand(const CommandOptions& options);
 
 }  // namespace drillflex::app

@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
       {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true, true},
       {"sweep", "The case's analyses for every combination of varied values: sweep.csv, one row a run",
        drillflex::app::RunSweepCommand, true, false},
+      {"roadmap", "Torque-and-drag roadmap: pick-up, slack-off and rotating hook loads and torques against bit depth",
+       drillflex::app::RunRoadmapCommand, true, true},
   };
 
   CommandOptions options;
@@ -78,13 +80,20 @@ int main(int argc, char** argv) {
         sub->add_flag("--no-report", options.no_report, "Write no report.html and no VTK files (batch runs)");
       }
     }
+    if (std::string(command.name) == "sweep" || std::string(command.name) == "roadmap") {
+      sub->add_option("-j,--jobs", options.jobs, "Runs at once on this machine (default 1)")
+          ->check(CLI::Range(1, 1024));
+    }
+    if (std::string(command.name) == "roadmap") {
+      sub->add_option("--from", options.roadmap_from, "First bit MD, with or without a unit (default: the case's roadmap.from)");
+      sub->add_option("--step", options.roadmap_step, "Depth step (default: ten depths to the case's bit MD)");
+      sub->add_option("--friction", options.roadmap_friction, "Friction factors, a list: 0.2,0.3,0.4");
+    }
     if (std::string(command.name) == "sweep") {
       sub->add_option("--vary", options.vary,
                       "KEY=VALUES: a key path of the case and its values, a list (operation.rpm=60,120,180) or a "
                       "range FROM:TO:STEP with a unit (operation.wob=10:40:5 klbf); repeated: every combination");
       sub->add_option("--cases", options.cases_table, "A CSV table: a header of key paths, one run a row");
-      sub->add_option("-j,--jobs", options.jobs, "Runs at once on this machine (default 1)")
-          ->check(CLI::Range(1, 1024));
       sub->add_flag("--keep-runs", options.keep_runs, "Keep each run's own result files under DIR/runs/NNNN/");
       sub->add_flag("--resume", options.resume, "Skip the runs an interrupted sweep into DIR finished");
     }

@@ -1,14 +1,13 @@
 // `drillflex sweep CASE --vary KEY=VALUES ... [--cases table.csv] [-o DIR] [--jobs N] [--keep-runs]
 // [--resume]`: the case's analyses for every combination (pipeline/sweep_run.hpp), progress on
 // standard error, sweep.csv and sweep.json written atomically at the end.
-#include <unistd.h>
-
 #include <cstdio>
 #include <functional>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include "app/batch_progress.hpp"
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "pipeline/sweep_mpi.hpp"
@@ -17,23 +16,11 @@
 namespace drillflex::app {
 namespace {
 
-// "12 / 40 done, 1 failed, about 35 s left": a line redrawn on a terminal, a line every tenth of the
-// sweep otherwise (logs of batch jobs).
 void ShowProgress(const pipeline::SweepProgress& progress) {
-  static const bool terminal = isatty(STDERR_FILENO) == 1;
+  // The time left from the runs this call made (the resumed ones took none of it).
   const int remaining = progress.total - progress.done;
-  const std::string left =
-      progress.run_this_call > 0 && remaining > 0
-          ? fmt::format(", about {:.0f} s left", progress.elapsed_seconds / progress.run_this_call * remaining)
-          : "";
-  const std::string line =
-      fmt::format("sweep: {} / {} done, {} failed{}", progress.done, progress.total, progress.failed, left);
-  if (terminal) {
-    std::fprintf(stderr, "\r%s   %s", line.c_str(), remaining == 0 ? "\n" : "");
-    std::fflush(stderr);
-  } else if (progress.total > 0 && (remaining == 0 || progress.done % std::max(1, progress.total / 10) == 0)) {
-    std::fprintf(stderr, "%s\n", line.c_str());
-  }
+  ShowBatchProgress("sweep", progress.done, progress.total, progress.failed,
+                    progress.run_this_call > 0 ? progress.elapsed_seconds / progress.run_this_call * remaining : -1.0);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -325,4 +326,69 @@ TEST(Cli, StaticWritesTheReportAndVtkUnlessTurnedOff) {
   EXPECT_EQ(result.status, 2) << result.output;
   EXPECT_THAT(result.output, HasSubstr("output.report"));
   EXPECT_FALSE(fs::exists(bad));
+}
+
+// `roadmap`: roadmap.csv as the contract gives it (bit MD, friction, the three hook loads, the two
+// torques, a line of units), one row a depth and friction factor, pulling out above rotating above
+// running in. (Its numbers against Johancsik: validation/roadmap_test.cpp.)
+const std::string kRoadmapCase = std::string(DRILLFLEX_SOURCE_DIR "/validation/v7-roadmap/pipe-60-deg.yaml");
+
+TEST(Cli, RoadmapWritesOneRowADepthAndFrictionFactor) {
+  // The V7 roadmap case cut to 2,000 ft (its well and pipe), to run quickly.
+  std::ifstream v7(kRoadmapCase);
+  std::stringstream text;
+  text << v7.rdbuf();
+  std::string short_case = text.str();
+  for (std::size_t at = short_case.find("10000"); at != std::string::npos; at = short_case.find("10000")) {
+    short_case.replace(at, 5, "2000");
+  }
+  const fs::path out = FreshDirectory("roadmap");
+  const RunResult result = RunDrillflex("roadmap " + WriteCase("roadmap", short_case).string() +
+                                        " --from 1000 --step 1000 --friction 0.2,0.3 --no-report -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("roadmap: 2 depths × 2 friction factors"));
+  EXPECT_FALSE(fs::exists(out / "report.html"));
+  std::ifstream csv(out / "roadmap.csv");
+  std::string header, units, line;
+  std::getline(csv, header);
+  std::getline(csv, units);
+  EXPECT_EQ(header, "bit_md,friction,pick_up,slack_off,rotating,off_bottom_torque,on_bottom_torque,message");
+  EXPECT_EQ(units, "ft,-,lbf,lbf,lbf,ft*lbf,ft*lbf,-");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(csv, line)) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',') && row.size() < 7;) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  ASSERT_EQ(rows.size(), 4u);
+  const double expected[4][2] = {{1000, 0.2}, {1000, 0.3}, {2000, 0.2}, {2000, 0.3}};
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    ASSERT_EQ(rows[k].size(), 7u);
+    EXPECT_EQ(rows[k][0], expected[k][0]);
+    EXPECT_EQ(rows[k][1], expected[k][1]);
+    EXPECT_GT(rows[k][2], rows[k][4]);  // pick-up above rotating
+    EXPECT_GT(rows[k][4], rows[k][3]);  // rotating above slack-off
+    EXPECT_GT(rows[k][6], rows[k][5]);  // the torque on bit adds on bottom
+  }
+  EXPECT_TRUE(fs::exists(out / "roadmap.json"));
+}
+
+TEST(Cli, RoadmapBadSettingsExitWithTwoAndWriteNothing) {
+  const fs::path out = FreshDirectory("roadmap-bad");
+  RunResult result = RunDrillflex("roadmap " + kRoadmapCase + " --from 20000 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("analyses.roadmap.from"));
+  result = RunDrillflex("roadmap " + kRoadmapCase + " --friction 0.2,x -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("analyses.roadmap.friction[1]"));
+  result = RunDrillflex("roadmap " + WriteCase("roadmap-no-well", kCollarYaml).string() + " -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("a roadmap needs a well"));
+  EXPECT_FALSE(fs::exists(out));
+  // `run` leaves the roadmap to its own command.
+  result = RunDrillflex("run " + kRoadmapCase + " -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("drillflex roadmap"));
+  EXPECT_FALSE(fs::exists(out));
 }

@@ -137,7 +137,9 @@
   }
 
   // A plot of {x, y} series. spec: {title, x, y (axis titles), series: [{label, x: [], y: [], color,
-  // line (default true), dash, fill, points}], xBands, hLines, vLines, yMin, yMax, logY, xReverse}.
+  // line (default true), dash, fill, points}], xBands, hLines, vLines, yMin, yMax, logY, xReverse,
+  // xNice (the x axis ends on ticks), xFromZero, depthDown (y is a depth: drawn downwards, the tooltip
+  // reads x at that depth)}.
   function plot(parent, spec) {
     const figure = el('figure', {class: 'plot'});
     figure.appendChild(el('figcaption', {text: spec.title}));
@@ -177,16 +179,19 @@
       data: {datasets: datasets},
       options: {
         animation: false, responsive: true, maintainAspectRatio: false, parsing: false, normalized: true,
-        interaction: {mode: 'nearest', intersect: false, axis: 'x'},
+        interaction: {mode: 'nearest', intersect: false, axis: spec.depthDown ? 'y' : 'x'},
         scales: {
           x: {type: 'linear', title: {display: true, text: spec.x}, reverse: !!spec.xReverse, min: spec.xMin, max: spec.xMax,
-              bounds: spec.xNice ? 'ticks' : 'data', ticks: {callback: (v) => num(v, 6)}},
+              bounds: spec.xNice ? 'ticks' : 'data', beginAtZero: !!spec.xFromZero, ticks: {callback: (v) => num(v, 6)}},
           y: {type: spec.logY ? 'logarithmic' : 'linear', title: {display: true, text: spec.y}, min: yMin, max: yMax,
+              reverse: !!spec.depthDown,
               ticks: {callback: (v) => num(v, 4)}},
         },
         plugins: {
           legend: {display: spec.series.length > 1, labels: {filter: (item) => !spec.series[item.datasetIndex].noLegend}},
-          tooltip: {callbacks: {label: (c) => `${c.dataset.label || ''}: ${num(c.parsed.y, 5)} at ${num(c.parsed.x, 5)}`}},
+          tooltip: {callbacks: {label: (c) => spec.depthDown
+            ? `${c.dataset.label || ''}: ${num(c.parsed.x, 5)} at ${num(c.parsed.y, 5)}`
+            : `${c.dataset.label || ''}: ${num(c.parsed.y, 5)} at ${num(c.parsed.x, 5)}`}},
           marks: {xBands: spec.xBands || [], hLines: spec.hLines || [], vLines: spec.vLines || []},
         },
       },
@@ -202,10 +207,10 @@
     const s = el('header', {id: 'header', class: 'report-section'});
     root.appendChild(s);
     s.appendChild(el('h1', {text: R.case || 'drillflex case'}));
-    const model = R.model || {};
+    const model = R.model;
     facts(s, [
       ['job', `drillflex ${RUN.command} (version ${RUN.version}), written ${RUN.written}, run time ${num(RUN.run_seconds, 3)} s`],
-      ['model', `${model.bodies} bodies, ${model.coordinates} coordinates, ${model.contacts} wall contacts, ${model.elements_per_body} elements and ${model.modes_per_body} modes a body`],
+      ...(model ? [['model', `${model.bodies} bodies, ${model.coordinates} coordinates, ${model.contacts} wall contacts, ${model.elements_per_body} elements and ${model.modes_per_body} modes a body`]] : []),
       ['units', `${R.units}: lengths in ${U.length}, diameters in ${U.diameter}, forces in ${U.force}, stresses in ${U.stress}`],
     ]);
     if (R.operation) {
@@ -686,6 +691,44 @@
     });
   }
 
+  // ---- roadmap -----------------------------------------------------------------------------------
+  // Torque and drag against bit depth in the field's usual look: depth down, a colour per friction
+  // factor, pick-up solid, slack-off dashed, rotating off bottom dotted; torque off bottom solid, on
+  // bottom dashed.
+  function roadmapSection(nav) {
+    const r = R.roadmap;
+    const ru = r.units;
+    const s = section('roadmap', 'Torque-and-drag roadmap');
+    nav.appendChild(el('a', {href: '#roadmap', text: 'roadmap'}));
+    facts(s, [
+      ['bit depths', `${num(r.from, 6)} to ${num(r.bit_md, 6)} ${ru.bit_md}, every ${num(r.step, 5)} ${ru.bit_md}`],
+      ['friction factors', r.friction.map((f) => num(f, 3)).join(', ')],
+      ['motion', `tripping at ${num(r.trip_speed, 3)} ${U.length}/s; rotating at ${num(r.rpm, 4)} ${U.rpm}; on bottom WOB ${num(r.weight_on_bit, 4)} ${U.wob}, torque on bit ${num(r.torque_on_bit, 5)} ${ru.on_bottom_torque}`],
+    ]);
+    const failed = r.points.filter((p) => p.message);
+    if (failed.length) {
+      const list = el('ul', {class: 'warnings'});
+      for (const p of failed) list.appendChild(el('li', {text: `${num(p.bit_md, 6)} ${ru.bit_md}, friction ${num(p.friction, 3)}: ${p.message}`}));
+      s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: `${failed.length} of ${r.points.length} points failed`}), list]));
+    }
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    const hook = [], torque = [];
+    r.friction.forEach((mu, i) => {
+      const rows = r.points.filter((p) => p.friction === mu);
+      const depth = column(rows, 'bit_md'), color = COLORS[i % COLORS.length], m = `μ ${num(mu, 3)}`;
+      hook.push({label: `pick-up, ${m}`, x: column(rows, 'pick_up'), y: depth, color: color, points: true, width: 2});
+      hook.push({label: `slack-off, ${m}`, x: column(rows, 'slack_off'), y: depth, color: color, dash: [7, 4], points: true, width: 2});
+      hook.push({label: `rotating, ${m}`, x: column(rows, 'rotating'), y: depth, color: color, dash: [2, 3], width: 1.5});
+      torque.push({label: `off bottom, ${m}`, x: column(rows, 'off_bottom_torque'), y: depth, color: color, points: true, width: 2});
+      torque.push({label: `on bottom, ${m}`, x: column(rows, 'on_bottom_torque'), y: depth, color: color, dash: [7, 4], points: true, width: 2});
+    });
+    plot(grid, {title: 'Hook load: pick-up (solid), slack-off (dashed), rotating off bottom (dotted)', x: `hook load (${ru.pick_up})`,
+      y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true, series: hook});
+    plot(grid, {title: 'Surface torque: off bottom (solid), on bottom (dashed)', x: `torque (${ru.off_bottom_torque})`,
+      y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true, series: torque});
+  }
+
   // ---- compose -----------------------------------------------------------------------------------
   function guarded(name, f) {
     try { f(); } catch (e) { recordError(`${name}: ${e && e.message ? e.message : e}`); }
@@ -698,6 +741,7 @@
   if (R.vibration) guarded('vibration', () => vibrationSection(nav));
   if (R.buckling) guarded('buckling', () => bucklingSection(nav));
   if (D.transient) guarded('transient', () => transientSection(nav));
+  if (R.roadmap) guarded('roadmap', () => roadmapSection(nav));
   // report.html?only=static shows the header and that section alone (to print or capture one part).
   const only = new URLSearchParams(window.location.search).get('only');
   if (only) {
