@@ -725,8 +725,12 @@
     });
     plot(grid, {title: 'Hook load: pick-up (solid), slack-off (dashed), rotating off bottom (dotted)', x: `hook load (${ru.pick_up})`,
       y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true, series: hook});
+    // A vertical stretch turns free of the wall: its torque's round-off (1e-20) is drawn as the zero it is.
+    const torques = torque.flatMap((t) => t.x).filter(isFinite);
+    const largest = Math.max(0, ...torques.map(Math.abs));
     plot(grid, {title: 'Surface torque: off bottom (solid), on bottom (dashed)', x: `torque (${ru.off_bottom_torque})`,
-      y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true, series: torque});
+      y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true,
+      xMin: Math.min(...torques) > -1e-9 * largest ? 0 : undefined, series: torque});
   }
 
   // ---- compose -----------------------------------------------------------------------------------
