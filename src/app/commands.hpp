@@ -28,6 +28,9 @@ struct CommandOptions {
   std::string roadmap_from;
   std::string roadmap_step;
   std::string roadmap_friction;
+  // `stability` only (a sweep's VALUES); `jobs`, `resume` and `keep_runs` too:
+  std::string map_rpm;
+  std::string map_wob;
 };
 
 int RunCheck(const CommandOptions& options);
@@ -40,5 +43,6 @@ int RunTransientCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);
 int RunSweepCommand(const CommandOptions& options);
 int RunRoadmapCommand(const CommandOptions& options);
+int RunStabilityCommand(const CommandOptions& options);
 
 }  // namespace drillflex::app

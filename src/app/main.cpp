@@ -65,6 +65,8 @@ int main(int argc, char** argv) {
        drillflex::app::RunSweepCommand, true, false},
       {"roadmap", "Torque-and-drag roadmap: pick-up, slack-off and rotating hook loads and torques against bit depth",
        drillflex::app::RunRoadmapCommand, true, true},
+      {"stability", "Stability map: the case's transient at every RPM and WOB, each run's regime (stick-slip, whirl)",
+       drillflex::app::RunStabilityCommand, true, true},
   };
 
   CommandOptions options;
@@ -80,22 +82,30 @@ int main(int argc, char** argv) {
         sub->add_flag("--no-report", options.no_report, "Write no report.html and no VTK files (batch runs)");
       }
     }
-    if (std::string(command.name) == "sweep" || std::string(command.name) == "roadmap") {
+    const std::string name = command.name;
+    if (name == "sweep" || name == "roadmap" || name == "stability") {
       sub->add_option("-j,--jobs", options.jobs, "Runs at once on this machine (default 1)")
           ->check(CLI::Range(1, 1024));
     }
-    if (std::string(command.name) == "roadmap") {
+    if (name == "roadmap") {
       sub->add_option("--from", options.roadmap_from, "First bit MD, with or without a unit (default: the case's roadmap.from)");
       sub->add_option("--step", options.roadmap_step, "Depth step (default: ten depths to the case's bit MD)");
       sub->add_option("--friction", options.roadmap_friction, "Friction factors, a list: 0.2,0.3,0.4");
     }
-    if (std::string(command.name) == "sweep") {
+    if (name == "stability") {
+      sub->add_option("--rpm", options.map_rpm, "Top-drive speeds: a list (60,120) or FROM:TO:STEP (40:200:20 rpm)")
+          ->required();
+      sub->add_option("--wob", options.map_wob, "WOBs: a list or FROM:TO:STEP (10:40:10 klbf)")->required();
+    }
+    if (name == "sweep" || name == "stability") {
+      sub->add_flag("--keep-runs", options.keep_runs, "Keep each run's own result files under DIR/runs/NNNN/");
+      sub->add_flag("--resume", options.resume, "Skip the runs an interrupted sweep into DIR finished");
+    }
+    if (name == "sweep") {
       sub->add_option("--vary", options.vary,
                       "KEY=VALUES: a key path of the case and its values, a list (operation.rpm=60,120,180) or a "
                       "range FROM:TO:STEP with a unit (operation.wob=10:40:5 klbf); repeated: every combination");
       sub->add_option("--cases", options.cases_table, "A CSV table: a header of key paths, one run a row");
-      sub->add_flag("--keep-runs", options.keep_runs, "Keep each run's own result files under DIR/runs/NNNN/");
-      sub->add_flag("--resume", options.resume, "Skip the runs an interrupted sweep into DIR finished");
     }
     sub->callback([&status, &options, command]() { status = Guarded(command, options); });
   }

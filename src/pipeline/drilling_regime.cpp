@@ -8,7 +8,7 @@ namespace drillflex::pipeline {
 namespace {
 
 struct ProbeOrbit {
-  double mean_radius = 0.0;    // m
+  double least_radius = 0.0;   // m
   double turned = 0.0;         // rad, the whirl angle's span over the window (unwrapped)
   double whirl_speed = 0.0;    // rad/s, least-squares slope of the unwrapped angle
 };
@@ -25,6 +25,7 @@ ProbeOrbit ReadOrbit(const std::vector<analyses::TransientSample>& samples, std:
     if (i == first) {
       unwrapped = angle;
       lowest = highest = angle;
+      orbit.least_radius = std::hypot(probe.lateral_y, probe.lateral_z);
     } else {
       // The smallest step between two wrapped angles (samples are far closer than half a turn).
       unwrapped += std::remainder(angle - previous, 2.0 * kPi);
@@ -32,7 +33,7 @@ ProbeOrbit ReadOrbit(const std::vector<analyses::TransientSample>& samples, std:
     previous = angle;
     lowest = std::min(lowest, unwrapped);
     highest = std::max(highest, unwrapped);
-    orbit.mean_radius += std::hypot(probe.lateral_y, probe.lateral_z) / count;
+    orbit.least_radius = std::min(orbit.least_radius, std::hypot(probe.lateral_y, probe.lateral_z));
     const double t = samples[i].time;
     sum_t += t;
     sum_a += unwrapped;
@@ -77,7 +78,7 @@ DrillingRegime ClassifyDrillingRegime(const analyses::TransientResult& result, c
   for (std::size_t p = 0; p < probes; ++p) {
     const ProbeOrbit orbit = ReadOrbit(samples, first, p);
     if (!(probe_clearance[p] > 0.0)) continue;  // no wall there (or none known)
-    if (orbit.mean_radius < kWhirlRadiusFraction * probe_clearance[p] || orbit.turned < 2.0 * kPi) continue;
+    if (orbit.least_radius < kWhirlRadiusFraction * probe_clearance[p] || orbit.turned < 2.0 * kPi) continue;
     const Whirl whirl = orbit.whirl_speed * bit_speed >= 0.0 ? Whirl::Forward : Whirl::Backward;
     // Backward whirl outranks forward; between probes whirling alike, the faster.
     const bool outranks = regime.whirl == Whirl::None || (whirl == Whirl::Backward && regime.whirl == Whirl::Forward) ||

@@ -17,8 +17,10 @@ const char* WhirlName(Whirl whirl);  // "none", "forward", "backward"
 // stick-slip one the bit stops (its speed swings to zero and back to twice its mean): the report's words.
 inline constexpr double kTorsionalOscillationSeverity = 0.2;
 inline constexpr double kStickSlipSeverity = 1.0;
-// A probe whirls when its orbit's mean radius is at least this fraction of its radial clearance and
-// its whirl angle turns at least once round over the window.
+// A probe whirls when its orbit stays at least this fraction of its radial clearance from the hole's
+// axis all through the window (out near the wall: a string swinging through the centre in a plane
+// flips its whirl angle by half a turn at each pass, which is no orbit) and its whirl angle turns at
+// least once round over it.
 inline constexpr double kWhirlRadiusFraction = 0.5;
 
 struct DrillingRegime {

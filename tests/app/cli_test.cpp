@@ -392,3 +392,20 @@ TEST(Cli, RoadmapBadSettingsExitWithTwoAndWriteNothing) {
   EXPECT_THAT(result.output, HasSubstr("drillflex roadmap"));
   EXPECT_FALSE(fs::exists(out));
 }
+
+// `stability`: a case without a transient, or no --rpm, is bad input (exit 2), nothing written. (The
+// map's regimes against known ones: validation/stability_map_test.cpp.)
+TEST(Cli, StabilityNeedsATransientAndItsAxes) {
+  const fs::path out = FreshDirectory("stability-bad");
+  RunResult result = RunDrillflex("stability " + kExample + " --rpm 60,120 --wob 20 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("analyses.transient"));
+  result = RunDrillflex("stability " + kExample + " --wob 20 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("--rpm"));
+  const std::string rotating = std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/rotating.yaml");
+  result = RunDrillflex("stability " + rotating + " --rpm 60:10:5 --wob 20 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("operation.rpm"));
+  EXPECT_FALSE(fs::exists(out));
+}

@@ -68,12 +68,21 @@ TEST(DrillingRegime, AnOrbitWithTheBitIsForwardWhirl) {
   EXPECT_EQ(regime.Name(), "stick-slip, forward whirl");
 }
 
-TEST(DrillingRegime, NoWhirlInsideHalfTheClearanceLessThanATurnOrWithoutAWall) {
+TEST(DrillingRegime, NoWhirlInsideHalfTheClearanceLessThanATurnSwingingThroughTheCentreOrWithoutAWall) {
   // Orbiting fast but at a third of the clearance: the string shakes about the centre, it does not whirl.
   EXPECT_EQ(ClassifyDrillingRegime(MadeUpRun(0.0, kClearance / 3.0, -20.0), {kClearance}).whirl, Whirl::None);
   // On the wall but turning 0.8 of a turn over the 2 s window: it creeps, it does not whirl.
   EXPECT_EQ(ClassifyDrillingRegime(MadeUpRun(0.0, kClearance, 0.8 * kPi), {kClearance}).whirl,
             Whirl::None);
+  // Swinging in a plane through the centre, 0.9 of the clearance either side (its whirl angle flips by
+  // half a turn at each pass: no orbit).
+  analyses::TransientResult swing = MadeUpRun(0.0, 0.0, 0.0);
+  for (analyses::TransientSample& sample : swing.samples) {
+    analyses::ProbeSample& probe = sample.probes[0];
+    probe.lateral_z = 0.9 * kClearance * std::cos(9.0 * sample.time);
+    probe.whirl_angle = probe.lateral_z >= 0.0 ? 0.0 : kPi;
+  }
+  EXPECT_EQ(ClassifyDrillingRegime(swing, {kClearance}).whirl, Whirl::None);
   // A probe with no wall known.
   EXPECT_EQ(ClassifyDrillingRegime(MadeUpRun(0.0, kClearance, -20.0), {std::nan("")}).whirl, Whirl::None);
 }

@@ -733,6 +733,52 @@
       xMin: Math.min(...torques) > -1e-9 * largest ? 0 : undefined, series: torque});
   }
 
+  // ---- stability map -----------------------------------------------------------------------------
+  // Each run a square at its RPM and WOB, coloured by its regime (pipeline/drilling_regime.hpp), and
+  // the stick-slip severity against RPM, a line per WOB.
+  function stabilitySection(nav) {
+    const m = R.stability;
+    const s = section('stability', 'Stability map: RPM × WOB');
+    nav.appendChild(el('a', {href: '#stability', text: 'stability map'}));
+    const [oscillation, stickSlip] = m.severity_limits;
+    s.appendChild(el('p', {text: `Each run is the case's transient at its top-drive RPM and WOB, read over its second half: ` +
+      `stick-slip when (max − min) / mean bit RPM ≥ ${num(stickSlip, 2)} (the bit stops), torsional oscillation from ${num(oscillation, 2)}; ` +
+      `whirl when a probe orbits at least once round, never nearer the hole's axis than ${num(100 * m.whirl_radius_fraction, 2)} % of its clearance, ` +
+      `forward with the string's rotation, backward against it. Hover a square for its regime.`}));
+    const classes = [['smooth', '#2ca02c'], ['torsional oscillation', '#bcbd22'], ['forward whirl', '#ff7f0e'],
+                     ['stick-slip', '#d62728'], ['backward whirl', '#9467bd'], ['failed', '#7f7f7f']];
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    const series = classes.map(([name, color]) => {
+      const runs = m.points.filter((p) => p.class === name);
+      return {label: name, x: column(runs, 'rpm'), y: column(runs, 'wob'), color: color, line: false, points: true,
+              pointStyle: 'rect', pointRadius: 11, noLegend: runs.length === 0};
+    }).filter((entry) => entry.x.length > 0);
+    // The squares whole inside the frame: a tenth of the span (or of the value) beyond the outer runs.
+    const padded = (values) => {
+      const lo = Math.min(...values), hi = Math.max(...values), pad = 0.1 * (hi - lo || Math.abs(hi) || 1);
+      return [lo - pad, hi + pad];
+    };
+    const [xMin, xMax] = padded(column(m.points, 'rpm')), [yMin, yMax] = padded(column(m.points, 'wob'));
+    plot(grid, {title: 'Drilling regime', x: `top-drive speed (${U.rpm})`, y: `WOB (${U.wob})`, series: series,
+      xMin: xMin, xMax: xMax, yMin: yMin, yMax: yMax});
+    const wobs = [...new Set(m.points.map((p) => p.wob))].sort((a, b) => a - b);
+    plot(grid, {title: 'Stick-slip severity (max − min) / mean bit RPM', x: `top-drive speed (${U.rpm})`, y: 'severity (–)',
+      hLines: [{y: stickSlip, label: 'the bit stops', color: '#d62728'}, {y: oscillation, label: 'torsional oscillation', color: '#bcbd22'}],
+      series: wobs.map((wob, i) => {
+        const runs = m.points.filter((p) => p.wob === wob).sort((a, b) => a.rpm - b.rpm);
+        return {label: `WOB ${num(wob, 4)} ${U.wob}`, x: column(runs, 'rpm'), y: column(runs, 'stick_slip_severity'),
+                color: COLORS[i % COLORS.length], points: true};
+      })});
+    const table = el('table', {class: 'facts'});
+    table.appendChild(el('tr', {}, ['run', `RPM (${U.rpm})`, `WOB (${U.wob})`, 'regime', 'severity', `whirl (${U.rpm})`].map((h) => el('th', {text: h}))));
+    for (const p of m.points) {
+      table.appendChild(el('tr', {}, [String(p.run), num(p.rpm, 4), num(p.wob, 4), p.message ? `failed: ${p.message}` : p.regime,
+        p.stick_slip_severity === null ? '' : num(p.stick_slip_severity, 3), p.whirl === 'none' || !p.whirl ? '' : num(p.whirl_speed, 4)].map((t) => el('td', {text: t}))));
+    }
+    s.appendChild(table);
+  }
+
   // ---- compose -----------------------------------------------------------------------------------
   function guarded(name, f) {
     try { f(); } catch (e) { recordError(`${name}: ${e && e.message ? e.message : e}`); }
@@ -746,6 +792,7 @@
   if (R.buckling) guarded('buckling', () => bucklingSection(nav));
   if (D.transient) guarded('transient', () => transientSection(nav));
   if (R.roadmap) guarded('roadmap', () => roadmapSection(nav));
+  if (R.stability) guarded('stability map', () => stabilitySection(nav));
   // report.html?only=static shows the header and that section alone (to print or capture one part).
   const only = new URLSearchParams(window.location.search).get('only');
   if (only) {
