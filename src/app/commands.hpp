@@ -24,6 +24,8 @@ struct CommandOptions {
   int jobs = 1;                   // runs at once on this machine
   bool keep_runs = false;         // each run's own files under DIR/runs/NNNN/
   bool resume = false;            // skip the runs an interrupted sweep finished
+  // `import` only: the WITSML documents (the case is written to output_directory's place: -o FILE).
+  std::vector<std::string> documents;
 };
 
 int RunCheck(const CommandOptions& options);
@@ -35,5 +37,7 @@ int RunVibrationCommand(const CommandOptions& options);
 int RunTransientCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);
 int RunSweepCommand(const CommandOptions& options);
+// `drillflex import FILE... [-o CASE.yaml]`: -o names the case file (standard output without it).
+int RunImport(const CommandOptions& options);
 
 }  // namespace drillflex::app

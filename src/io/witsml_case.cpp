@@ -162,8 +162,7 @@ std::string ImportedCaseText(const std::vector<WitsmlDocument>& documents) {
     }
   }
   text += "# Add the fluid, model settings, operation and analyses the job needs (docs/case-format.md).\n";
-  const std::string name = objects.trajectory ? fmt::format("{} in {}", objects.tubular->name, objects.trajectory->name)
-                                              : objects.tubular->name;
+  const std::string& name = objects.tubular->name;
   text += fmt::format("name: {}\nunits: {}\n\n", YamlText(name.empty() ? "imported" : name),
                       system == units::System::Field ? "field" : "SI");
   if (objects.trajectory) {
