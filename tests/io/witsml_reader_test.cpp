@@ -179,27 +179,49 @@ struct Bad {
   const char* message;  // a part of the message
 };
 
-TEST(WitsmlReader, BadDocumentsNameFileLineElementAndExpectation) {
+void ExpectBad(const Bad& bad) {
+  SCOPED_TRACE(bad.what);
+  const InputError error = ErrorOf(bad.text);
+  EXPECT_EQ(error.location().file, "bad.xml");
+  EXPECT_EQ(error.location().line, bad.line) << error.what();
+  EXPECT_THAT(error.key_path(), HasSubstr(bad.element)) << error.what();
+  EXPECT_THAT(error.message(), HasSubstr(bad.message)) << error.what();
+  EXPECT_THAT(std::string(error.what()), HasSubstr("bad.xml:" + std::to_string(bad.line)));
+}
+
+TEST(WitsmlReader, ASurveyWhoseMdGoesBackwards) {
+  ExpectBad({"an MD going backwards",
+             Document1411("trajectory", Station("0", "0", "0") + Station("5000", "1", "0") + Station("4900", "2", "0")), 6,
+             "trajectoryStation[uid=s4900]/md", "must strictly increase"});
+}
+
+TEST(WitsmlReader, AComponentWithoutOd) {
+  ExpectBad({"a component without OD",
+             Document1411("tubular", Component(1, "drill collar", "<id uom=\"in\">2.8125</id><len uom=\"ft\">30</len>")), 4,
+             "tubularComponent[uid=c1]", "expected a <od> element"});
+}
+
+TEST(WitsmlReader, ATubularWhoseSequenceNumbersSkip) {
+  ExpectBad({"sequence numbers that skip",
+             Document1411("tubular", Component(1, "drill collar", kCollar) + Component(2, "drill collar", kCollar) +
+                                         Component(4, "drill collar", kCollar)),
+             6, "tubularComponent[uid=c4]/sequence", "skip from 2 to 4"});
+}
+
+TEST(WitsmlReader, ANamespaceOrVersionItDoesNotRead) {
+  ExpectBad({"a namespace it does not read",
+             "<trajectorys xmlns=\"http://www.witsml.org/schemas/131\" version=\"1.3.1.1\"/>", 1, "trajectorys",
+             "namespace 'http://www.witsml.org/schemas/131' is not read"});
+  ExpectBad({"a version it does not read",
+             "<tubulars xmlns=\"http://www.witsml.org/schemas/1series\" version=\"1.4.1.0\">\n</tubulars>", 1, "tubulars",
+             "version '1.4.1.0' is not read"});
+}
+
+TEST(WitsmlReader, OtherBadDocumentsNameFileLineElementAndExpectation) {
   const std::vector<Bad> cases = {
-      {"an MD going backwards",
-       Document1411("trajectory", Station("0", "0", "0") + Station("5000", "1", "0") + Station("4900", "2", "0")), 6,
-       "trajectoryStation[uid=s4900]/md", "must strictly increase"},
-      {"a component without OD",
-       Document1411("tubular", Component(1, "drill collar", "<id uom=\"in\">2.8125</id><len uom=\"ft\">30</len>")), 4,
-       "tubularComponent[uid=c1]", "expected a <od> element"},
-      {"sequence numbers that skip",
-       Document1411("tubular", Component(1, "drill collar", kCollar) + Component(2, "drill collar", kCollar) +
-                                   Component(4, "drill collar", kCollar)),
-       6, "tubularComponent[uid=c4]/sequence", "skip from 2 to 4"},
       {"a sequence number twice",
        Document1411("tubular", Component(1, "drill collar", kCollar) + Component(1, "jar", kCollar)), 5,
        "sequence", "appears twice"},
-      {"a namespace it does not read",
-       "<trajectorys xmlns=\"http://www.witsml.org/schemas/131\" version=\"1.3.1.1\"/>", 1, "trajectorys",
-       "namespace 'http://www.witsml.org/schemas/131' is not read"},
-      {"a version it does not read",
-       "<tubulars xmlns=\"http://www.witsml.org/schemas/1series\" version=\"1.4.1.0\">\n</tubulars>", 1, "tubulars",
-       "version '1.4.1.0' is not read"},
       {"a 2.0 object of another schema version",
        "<Trajectory xmlns=\"http://www.energistics.org/energyml/data/witsmlv2\" schemaVersion=\"2.1\"/>", 1,
        "Trajectory", "schemaVersion '2.1' is not read"},
@@ -228,15 +250,7 @@ TEST(WitsmlReader, BadDocumentsNameFileLineElementAndExpectation) {
        3, "wbGeometry[uid=o1]", "no section covers the MD from 100 ft to 200 ft"},
       {"malformed XML", "<trajectorys>\n<trajectory>\n</trajectorys>\n", 3, "", "not well-formed XML"},
   };
-  for (const Bad& bad : cases) {
-    SCOPED_TRACE(bad.what);
-    const InputError error = ErrorOf(bad.text);
-    EXPECT_EQ(error.location().file, "bad.xml");
-    EXPECT_EQ(error.location().line, bad.line) << error.what();
-    EXPECT_THAT(error.key_path(), HasSubstr(bad.element)) << error.what();
-    EXPECT_THAT(error.message(), HasSubstr(bad.message)) << error.what();
-    EXPECT_THAT(std::string(error.what()), HasSubstr("bad.xml:" + std::to_string(bad.line)));
-  }
+  for (const Bad& bad : cases) ExpectBad(bad);
 }
 
 }  // namespace
