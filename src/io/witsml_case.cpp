@@ -3,6 +3,9 @@
 // for SI), else with its own unit ("171.45 mm"); the numbers are the documents' own text.
 #include "io/witsml_case.hpp"
 
+#include <cctype>
+#include <string_view>
+
 #include <fmt/format.h>
 
 #include "core/error.hpp"

@@ -2,6 +2,7 @@
 // share (io/witsml_reader.hpp).
 #include "io/witsml_reader.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -140,6 +141,7 @@ WitsmlValue WitsmlReader::Measure(const pugi::xml_node& element, units::Quantity
                               units::DimensionName(unit.dimension), units::QuantityName(quantity)));
   }
   value.si = number * unit.to_si;
+  if (!std::isfinite(value.si)) Fail(element, fmt::format("{} {} is out of range", value.text, value.uom));
   return value;
 }
 

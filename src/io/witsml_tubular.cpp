@@ -30,7 +30,8 @@ void ReadLengthAndCount(const WitsmlReader& reader, const pugi::xml_node& node, 
   if (!joint) return;
   const double joints = component.length.si / joint->si;
   const double whole = std::round(joints);
-  if (joint->si > 0.0 && whole >= 1.0 && std::abs(joints - whole) <= 1e-9 * joints) {
+  constexpr double kMostJoints = 1e6;  // a count an int holds, and more joints than any string has
+  if (joint->si > 0.0 && whole >= 1.0 && whole <= kMostJoints && std::abs(joints - whole) <= 1e-9 * joints) {
     component.count = static_cast<int>(whole);
     component.length = *joint;
   } else {
