@@ -31,6 +31,8 @@ struct CommandOptions {
   // `stability` only (a sweep's VALUES); `jobs`, `resume` and `keep_runs` too:
   std::string map_rpm;
   std::string map_wob;
+  // `import` only: the WITSML documents (the case is written to output_directory's place: -o FILE).
+  std::vector<std::string> documents;
 };
 
 int RunCheck(const CommandOptions& options);
@@ -44,5 +46,7 @@ int RunCaseCommand(const CommandOptions& options);
 int RunSweepCommand(const CommandOptions& options);
 int RunRoadmapCommand(const CommandOptions& options);
 int RunStabilityCommand(const CommandOptions& options);
+// `drillflex import FILE... [-o CASE.yaml]`: -o names the case file (standard output without it).
+int RunImport(const CommandOptions& options);
 
 }  // namespace drillflex::app

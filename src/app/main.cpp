@@ -67,12 +67,21 @@ int main(int argc, char** argv) {
        drillflex::app::RunRoadmapCommand, true, true},
       {"stability", "Stability map: the case's transient at every RPM and WOB, each run's regime (stick-slip, whirl)",
        drillflex::app::RunStabilityCommand, true, true},
+      {"import", "Write a case file from WITSML 1.4.1.1 or 2.0 trajectory, tubular and wbGeometry documents",
+       drillflex::app::RunImport, false, false},
   };
 
   CommandOptions options;
   int status = drillflex::app::kExitOk;
   for (const auto& command : commands) {
     CLI::App* sub = cli.add_subcommand(command.name, command.description);
+    if (std::string(command.name) == "import") {
+      sub->add_option("documents", options.documents, "WITSML documents (XML): trajectory, tubular, wbGeometry")
+          ->required();
+      sub->add_option("-o,--output", options.output_directory, "The case file to write (default: standard output)");
+      sub->callback([&status, &options, command]() { status = Guarded(command, options); });
+      continue;
+    }
     sub->add_option("case", options.case_path, "Case file (YAML)")->required();
     if (command.writes_results) {
       sub->add_option("-o,--output", options.output_directory,

@@ -16,33 +16,20 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-struct RunResult {
-  int status = -1;
-  std::string output;
-};
+using drillflex::test_cli::RunResult;
 
 RunResult RunDrillflex(const std::string& arguments) {
-  // One log per test process: CTest runs the tests of this file in parallel processes, which
-  // shared one log and read each other's output.
-  const fs::path log = fs::temp_directory_path() / ("drillflex-cli-test-" + std::to_string(::getpid()) + ".log");
-  const std::string line = fmt::format("{} {} > {} 2>&1", DRILLFLEX_EXE, arguments, log.string());
-  const int raw = std::system(line.c_str());
-  std::ifstream file(log);
-  std::stringstream text;
-  text << file.rdbuf();
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+  return drillflex::test_cli::RunShell(fmt::format("{} {}", DRILLFLEX_EXE, arguments));
 }
 
-fs::path FreshDirectory(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / "drillflex-cli" / name;
-  fs::remove_all(directory);
-  return directory;
-}
+fs::path FreshDirectory(const std::string& name) { return drillflex::test_cli::FreshDirectory("drillflex-cli", name); }
 
 const std::string kExample = std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml");
 
