@@ -527,6 +527,22 @@ TEST(CaseReader, SurveyFileErrorsNameTheCsvLine) {
   }
 }
 
+TEST(CaseReader, SurveyFileMustBeARegularFile) {
+  // A directory opens as an empty stream, and /dev/zero or a FIFO would be read without end.
+  const auto directory = std::filesystem::temp_directory_path() / "drillflex-io-test3";
+  std::filesystem::create_directories(directory / "survey.csv");
+  for (const std::string given : {"survey.csv", "/dev/zero"}) {
+    try {
+      ParseCase("units: field\nwell:\n  survey_file: " + given + "\n  hole: 12.25\n" + kGoodString, "a.yaml",
+                directory.string());
+      FAIL() << "read the survey file " << given;
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.key_path(), "well.survey_file");
+      EXPECT_THAT(error.what(), HasSubstr("not a regular file"));
+    }
+  }
+}
+
 TEST(CaseReader, UnitsWithTheirOwnUnitOverrideTheSystem) {
   const Case si = ParseCase("string:\n  - {type: collar, od: 8 in, id: 2.8125 in, length: 30 ft}\n", "a.yaml");
   const Case field = ParseCase("units: field\nstring:\n  - {type: collar, od: 8, id: 2.8125, length: 30}\n", "b.yaml");
