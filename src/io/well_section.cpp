@@ -14,6 +14,8 @@ namespace {
 
 using units::Quantity;
 
+constexpr double kMaxTrajectoryRows = 1e6;
+
 std::vector<well::SurveyStation> ReadInlineSurvey(const YamlView& node) {
   node.ExpectSequence("survey stations [MD, inclination, azimuth]");
   std::vector<well::SurveyStation> stations;
@@ -108,6 +110,14 @@ WellConfig ReadWellSection(const YamlView& node, const std::string& directory) {
   const double default_step = node.context().system == units::System::Field ? 30.0 * 0.3048 : 10.0;
   well.output_step = node.Has("output_step") ? node.Positive("output_step", Quantity::Length)
                                              : default_step;
+  // `drillflex well` writes a row every output_step (io/trajectory_table.cpp): bound the table, which
+  // a survey to 1e9 ft at a step of 1e-6 ft would make a petabyte.
+  const double rows = (well.survey.back().md - well.survey.front().md) / well.output_step + well.survey.size();
+  if (!(rows <= kMaxTrajectoryRows)) {
+    (node.Has("output_step") ? node.Child("output_step") : node)
+        .Fail(fmt::format("the trajectory table would have {:.3g} rows, one every output_step along the survey: "
+                          "at most {:.0f}; give a larger output_step", rows, kMaxTrajectoryRows));
+  }
   return well;
 }
 
