@@ -2,12 +2,15 @@
 // The reader's documented answer to bad input is an InputError (the builder may also stop with a
 // SolverError); any other exception, a sanitizer report, a timeout, or a case that reads but would
 // not fit in memory (a string of non-finite length, a model of over 1e5 bodies, a trajectory table of
-// over 1e7 rows) or gives a non-finite trajectory is a finding. survey_file is resolved in an empty directory (no file is read).
+// over 1e7 rows) or gives a non-finite trajectory is a finding. survey_file is resolved in an empty
+// directory (no file is read).
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstdio>
 #include <string>
+
+#include <unistd.h>
 
 #include "cms/reduction_cache.hpp"
 #include "io/case.hpp"
@@ -18,12 +21,14 @@ namespace {
 
 using namespace drillflex;
 
+// A new empty directory, removed when the fuzzer exits (after -max_total_time, not after a crash).
 std::string EmptyDirectory() {
-  char path[] = "/tmp/drillflex-fuzz-XXXXXX";
+  static char path[] = "/tmp/drillflex-fuzz-XXXXXX";
   if (mkdtemp(path) == nullptr) {
     std::perror("mkdtemp");
     std::abort();
   }
+  std::atexit([] { rmdir(path); });
   return path;
 }
 
