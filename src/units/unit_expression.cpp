@@ -93,8 +93,8 @@ int StripExponent(std::string_view& factor, std::string_view expression) {
     while (digits < factor.size() && IsDigit(factor[factor.size() - 1 - digits])) ++digits;
     if (digits > 0) {
       const std::string_view text = factor.substr(factor.size() - digits);
-      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), exponent);
-      if (error != std::errc() || exponent > kMaxExponent) ThrowExponentOutOfRange(expression);
+      const std::from_chars_result read = std::from_chars(text.data(), text.data() + text.size(), exponent);
+      if (read.ec != std::errc() || exponent > kMaxExponent) ThrowExponentOutOfRange(expression);
       factor.remove_suffix(digits);
       found = true;
       if (factor.ends_with('-') || factor.ends_with('+')) {
