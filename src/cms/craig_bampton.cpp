@@ -235,7 +235,8 @@ CraigBamptonBasis BuildCraigBamptonBasis(const SparseMat& stiffness, const Spars
   for (int i = 0; i < ni; ++i) {
     const int row = basis.internal_dofs[i];
     basis.transformation.row(row).head(nb) = psi.row(i);
-    basis.transformation.row(row).tail(mode_count) = fixed.vectors.row(i);
+    // No modes (modes_per_body: 0): row() of the empty mode matrix would offset a null pointer.
+    if (mode_count > 0) basis.transformation.row(row).tail(mode_count) = fixed.vectors.row(i);
   }
   const MatX kt = stiffness * basis.transformation;
   const MatX mt = mass * basis.transformation;

@@ -1,6 +1,7 @@
 // Checks across sections: the string fits the hole, lies inside the well, and every position
 // given along it (supports, loads, excitations, probes) is on it.
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -46,6 +47,26 @@ void CheckStringFitsHole(const Case& c, const YamlView& root) {
   }
 }
 
+// The builder cuts the string into bodies at most model.body_length long (model/builder.cpp), a few
+// kB each: a string of 1e9 m at 3 m would be 3e8 bodies and gigabytes before any message. 20 000 is
+// twenty times the largest case shipped (10 000 ft of pipe in 3 m bodies).
+constexpr double kMaxBodies = 20000;
+
+void CheckModelSize(const Case& c, const YamlView& root) {
+  const double body_length = c.input.settings.body_length;
+  double bodies = 0.0;
+  for (const model::Component& component : c.input.string.components) {
+    bodies += std::ceil(component.length * component.count / body_length);
+  }
+  if (!(bodies <= kMaxBodies)) {
+    root.Child("string").Fail(fmt::format(
+        "the model would cut the string ({}) into {:.3g} bodies of at most model.body_length ({}): at most {:.0f}; "
+        "give a longer body_length",
+        Show(StringLength(c), Quantity::Length, c.units), bodies, Show(body_length, Quantity::Length, c.units),
+        kMaxBodies));
+  }
+}
+
 void CheckOnString(double at, double length, const YamlView& item, const char* key, units::System system) {
   if (at < -1e-9 || at > length * (1.0 + 1e-12)) {
     item.Child(key).Fail(fmt::format("{} lies off the string, which runs from 0 to {} from the bit",
@@ -56,6 +77,7 @@ void CheckOnString(double at, double length, const YamlView& item, const char* k
 }  // namespace
 
 void CheckCaseConsistency(const Case& c, const YamlView& root) {
+  CheckModelSize(c, root);
   const double length = StringLength(c);
   const units::System system = c.units;
   if (c.well) CheckStringFitsHole(c, root);

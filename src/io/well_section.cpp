@@ -2,36 +2,19 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
-#include <sstream>
+#include <iterator>
 
 #include <fmt/format.h>
 
 #include "io/case_sections.hpp"
+#include "io/survey_csv.hpp"
 
 namespace drillflex::io {
 namespace {
 
 using units::Quantity;
 
-void CheckStation(const well::SurveyStation& station, const well::SurveyStation* previous,
-                  const std::function<void(const std::string&)>& fail) {
-  if (station.md < 0.0) fail("the MD must not be negative");
-  if (station.inclination < 0.0 || station.inclination > kPi + 1e-12) {
-    fail(fmt::format("the inclination must lie between 0 and 180 deg, got {:.6g} deg",
-                     station.inclination / kDegree));
-  }
-  if (previous && !(station.md > previous->md)) {
-    fail(fmt::format("the survey's MD must strictly increase: {:.6g} m follows {:.6g} m",
-                     station.md, previous->md));
-  }
-}
-
-well::SurveyStation NormalizedStation(double md, double inclination, double azimuth) {
-  azimuth = std::fmod(azimuth, 2.0 * kPi);
-  if (azimuth < 0.0) azimuth += 2.0 * kPi;
-  return {md, inclination, azimuth};
-}
+constexpr double kMaxTrajectoryRows = 1e6;
 
 std::vector<well::SurveyStation> ReadInlineSurvey(const YamlView& node) {
   node.ExpectSequence("survey stations [MD, inclination, azimuth]");
@@ -51,55 +34,22 @@ std::vector<well::SurveyStation> ReadInlineSurvey(const YamlView& node) {
   return stations;
 }
 
-std::vector<std::string> SplitCsvLine(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream stream(line);
-  while (std::getline(stream, cell, ',')) {
-    const auto first = cell.find_first_not_of(" \t\r");
-    const auto last = cell.find_last_not_of(" \t\r");
-    cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
-  }
-  return cells;
-}
-
-// A survey CSV: three columns MD, inclination, azimuth in the case's units; a header line allowed.
+// A survey CSV file (io/survey_csv.hpp), relative to the case file's directory.
 std::vector<well::SurveyStation> ReadSurveyFile(const YamlView& node, const std::string& directory) {
   const std::string given = node.AsString();
   const std::filesystem::path path = std::filesystem::path(given).is_absolute()
                                          ? std::filesystem::path(given)
                                          : std::filesystem::path(directory) / given;
-  std::ifstream file(path);
-  if (!file) node.Fail(fmt::format("cannot read the survey file '{}'", path.string()));
-  std::vector<well::SurveyStation> stations;
-  std::string line;
-  int line_number = 0;
-  const units::System system = node.context().system;
-  while (std::getline(file, line)) {
-    ++line_number;
-    const auto cells = SplitCsvLine(line);
-    const bool blank = cells.empty() || (cells.size() == 1 && cells[0].empty());
-    if (blank || cells[0].rfind('#', 0) == 0) continue;
-    auto fail = [&](const std::string& message) {
-      throw InputError({path.string(), line_number, 0}, "well.survey_file", message);
-    };
-    if (cells.size() != 3) fail(fmt::format("expected 3 columns (MD, inclination, azimuth), got {}", cells.size()));
-    double values[3];
-    bool numeric = true;
-    const Quantity kinds[3] = {Quantity::Length, Quantity::Angle, Quantity::Angle};
-    for (int c = 0; c < 3; ++c) {
-      try {
-        values[c] = units::ParseQuantity(cells[c], kinds[c], system);
-      } catch (const UnitError& error) {
-        if (stations.empty() && c == 0) { numeric = false; break; }  // a header line
-        fail(error.what());
-      }
-    }
-    if (!numeric) continue;
-    const auto station = NormalizedStation(values[0], values[1], values[2]);
-    CheckStation(station, stations.empty() ? nullptr : &stations.back(), fail);
-    stations.push_back(station);
+  // Only a regular file: a directory opens and reads as empty, and /dev/zero or a FIFO would never end.
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    node.Fail(fmt::format("cannot read the survey file '{}': {}", path.string(),
+                          std::filesystem::exists(path, error) ? "not a regular file" : "no such file"));
   }
+  std::ifstream file(path, std::ios::binary);
+  if (!file) node.Fail(fmt::format("cannot read the survey file '{}'", path.string()));
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const auto stations = ParseSurveyCsv(text, path.string(), node.context().system);
   if (stations.size() < 2) node.Fail(fmt::format("the survey file '{}' has fewer than two stations", path.string()));
   return stations;
 }
@@ -187,6 +137,14 @@ WellConfig ReadWellSection(const YamlView& node, const std::string& directory, s
   const double default_step = node.context().system == units::System::Field ? 30.0 * 0.3048 : 10.0;
   well.output_step = node.Has("output_step") ? node.Positive("output_step", Quantity::Length)
                                              : default_step;
+  // `drillflex well` writes a row every output_step (io/trajectory_table.cpp): bound the table, which
+  // a survey to 1e9 ft at a step of 1e-6 ft would make a petabyte.
+  const double rows = (well.survey.back().md - well.survey.front().md) / well.output_step + well.survey.size();
+  if (!(rows <= kMaxTrajectoryRows)) {
+    (node.Has("output_step") ? node.Child("output_step") : node)
+        .Fail(fmt::format("the trajectory table would have {:.3g} rows, one every output_step along the survey: "
+                          "at most {:.0f}; give a larger output_step", rows, kMaxTrajectoryRows));
+  }
   return well;
 }
 

@@ -130,7 +130,7 @@ void RunBoth(bool parallel, const First& first, const Second& second) {
 #ifdef _OPENMP
   parallel = parallel && omp_get_max_threads() > 1;
 #else
-  parallel = false;
+  static_cast<void>(parallel);  // without OpenMP the pragma below is ignored: one after the other
 #endif
   std::exception_ptr failure;
   auto guarded = [&failure](const auto& task) {

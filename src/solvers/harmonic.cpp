@@ -255,7 +255,9 @@ ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, doub
   AssembleOnStorage(w.on_storage, frequency, rotor_speed, terms, values, w.imaginary);
   if (blocked) {
     w.blocks.Factorize();
-    const auto [matrix_norm, largest] = w.blocks.Norms();
+    // Not a structured binding: the lambda below captures the norm, which clang before 16 refuses.
+    const std::pair<double, double> norms = w.blocks.Norms();
+    const double matrix_norm = norms.first, largest = norms.second;
     if (w.blocks.smallest_pivot() > w.options.singular_pivot_tolerance * largest) {
       ComplexMat x = w.blocks.Solve(loads), residual;
       auto backward_error = [&] {

@@ -5,7 +5,9 @@
 //                      factor     = [number] [symbol [exponent]]
 //                      exponent   = digits | '^' ['-'|'+'] digits | '-' digits | superscripts (⁻¹²³...)
 // Everything after the single '/' is in the denominator, so "deg/100 ft" is deg/(100 ft).
+#include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <string>
 
@@ -56,6 +58,17 @@ std::pair<int, std::size_t> TrailingSuperscriptDigit(std::string_view text) {
   return {-1, 0};
 }
 
+// The largest power of a unit symbol: no unit in use goes past m^4, and with the bound neither the
+// factor to SI of one symbol (km^9 is 1e27) nor the dimension's integer exponents can overflow.
+constexpr int kMaxExponent = 9;
+// The largest power of a base dimension that a whole expression may reach ("m m m ...").
+constexpr int kMaxDimensionPower = 99;
+
+[[noreturn]] void ThrowExponentOutOfRange(std::string_view expression) {
+  throw ExpressionError(expression, "an exponent must lie between -" + std::to_string(kMaxExponent) + " and " +
+                                        std::to_string(kMaxExponent) + " (and not be 0)");
+}
+
 // Removes a trailing exponent from a factor and returns it (1 when there is none).
 int StripExponent(std::string_view& factor, std::string_view expression) {
   int exponent = 0;
@@ -64,6 +77,7 @@ int StripExponent(std::string_view& factor, std::string_view expression) {
   while (true) {
     const auto [digit, bytes] = TrailingSuperscriptDigit(factor);
     if (bytes == 0) break;
+    if (place > kMaxExponent) ThrowExponentOutOfRange(expression);  // a second digit
     exponent += digit * place;
     place *= 10;
     found = true;
@@ -79,7 +93,8 @@ int StripExponent(std::string_view& factor, std::string_view expression) {
     while (digits < factor.size() && IsDigit(factor[factor.size() - 1 - digits])) ++digits;
     if (digits > 0) {
       const std::string_view text = factor.substr(factor.size() - digits);
-      std::from_chars(text.data(), text.data() + text.size(), exponent);
+      const std::from_chars_result read = std::from_chars(text.data(), text.data() + text.size(), exponent);
+      if (read.ec != std::errc() || exponent > kMaxExponent) ThrowExponentOutOfRange(expression);
       factor.remove_suffix(digits);
       found = true;
       if (factor.ends_with('-') || factor.ends_with('+')) {
@@ -149,6 +164,19 @@ void ApplyFactor(std::string_view factor, int sign, Unit& unit, std::string_view
   if (symbol == nullptr) ThrowUnknownSymbol(factor, expression);
   unit.to_si *= std::pow(symbol->to_si, exponent);
   unit.dimension = unit.dimension + exponent * symbol->dimension;
+  const Dimension& d = unit.dimension;
+  if (std::max({std::abs(d.length), std::abs(d.mass), std::abs(d.time), std::abs(d.angle)}) > kMaxDimensionPower) {
+    throw ExpressionError(expression, "a base unit's power goes past " + std::to_string(kMaxDimensionPower));
+  }
+}
+
+// The unit, once its factor to SI is known to be a finite positive number ("t250" is 1e750 kg^250,
+// which no double holds; "mm^9 mm^9 ... / ..." can underflow to 0).
+Unit CheckedFactor(const Unit& unit, std::string_view expression) {
+  if (!(unit.to_si > 0.0) || !std::isfinite(unit.to_si)) {
+    throw ExpressionError(expression, "its size in SI units is out of range");
+  }
+  return unit;
 }
 
 // Applies every factor of a product (numerator or denominator).
@@ -176,7 +204,7 @@ Unit ParseUnit(std::string_view expression) {
   const std::size_t slash = expression.find('/');
   if (slash == std::string_view::npos) {
     ApplyProduct(expression, +1, unit, expression);
-    return unit;
+    return CheckedFactor(unit, expression);
   }
   if (expression.find('/', slash + 1) != std::string_view::npos) {
     throw ExpressionError(expression,
@@ -193,7 +221,7 @@ Unit ParseUnit(std::string_view expression) {
   if (denominator.empty()) throw ExpressionError(expression, "nothing after '/'");
   ApplyProduct(numerator, +1, unit, expression);
   ApplyProduct(denominator, -1, unit, expression);
-  return unit;
+  return CheckedFactor(unit, expression);
 }
 
 double Convert(double value, std::string_view from_unit, std::string_view to_unit) {

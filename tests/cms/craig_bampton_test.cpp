@@ -141,6 +141,24 @@ TEST(CraigBampton, ConstraintModesMakeEndLoadStaticsExact) {
   EXPECT_GT((ru * mid_fit - u_mid).norm(), 1e-6 * u_mid.norm());
 }
 
+// modes_per_body: 0 (found by fuzz/case_file: Eigen's row() of the empty mode matrix offset a null
+// pointer, undefined behaviour): the basis is the constraint modes alone, still exact for end loads.
+TEST(CraigBampton, NoFixedInterfaceModesLeavesTheConstraintModes) {
+  const fe::BodyFeModel model = fe::BuildBodyFeModel(V1Rod(10));
+  std::vector<int> boundary = SelectDofs(0, 0, {0, 1, 2, 3, 4, 5});
+  for (int d = 60; d < 66; ++d) boundary.push_back(d);
+  const CraigBamptonBasis basis = BuildCraigBamptonBasis(model.stiffness, model.mass, boundary, 0);
+  ASSERT_EQ(basis.transformation.cols(), 12);
+  VecX load = VecX::Zero(66);
+  load.tail<6>() << 3.0e4, 1.0e3, -2.0e3, 500.0, 800.0, -300.0;
+  const VecX u_fe = ClampedStatic(model, load);
+  const MatX k_free = basis.reduced_stiffness.bottomRightCorner(6, 6);
+  VecX c = VecX::Zero(12);
+  c.tail(6) = k_free.ldlt().solve((basis.transformation.transpose() * load).tail(6));
+  EXPECT_LT((basis.transformation * c - u_fe).norm(), 1e-10 * u_fe.norm());
+  EXPECT_EQ(Reduce(model, 0, 0.0).flexible_count, 6);
+}
+
 // The reduced basis carries buckling: pinned-pinned Euler load π² EI / L² from
 // K̄ φ = P K̄_G φ, K̄_G = Tᵀ K_G T, approached from above as modes are added (validation.md V2).
 TEST(CraigBampton, ReducedBasisBucklesAtTheEulerLoad) {

@@ -486,7 +486,16 @@ INSTANTIATE_TEST_SUITE_P(
         RejectedCase{"unknown drive key", std::string(kGoodString) + "analyses:\n  transient: {top_drive: {rpms: 60}}\n",
                      4, "analyses.transient.top_drive.rpms", "did you mean 'rpm'"},
         RejectedCase{"string longer than well", kWellHead + "  hole: 12.25\nstring:\n  - {type: pipe, od: 5, id: 4, length: 2000}\n",
-                     8, "string", "longer than the well"}),
+                     8, "string", "longer than the well"},
+        // The case_file fuzz target's bounds (fuzz/README.md): cases that read, and then would not fit in memory.
+        RejectedCase{"string of 3e8 bodies", "string:\n  - {type: collar, od: 0.2, id: 0.07, length: 1e9}\n", 2,
+                     "string", "into 3.33e+08 bodies"},
+        RejectedCase{"string of 1e303 m", "string:\n  - {type: collar, od: 0.2, id: 0.07, length: 1e300, count: 1000}\n", 2,
+                     "string", "at most 20000; give a longer body_length"},
+        RejectedCase{"trajectory table of 1e15 rows",
+                     "well:\n  survey:\n    - [0, 0, 0]\n    - [1e9, 0, 0]\n  hole: 0.3\n  output_step: 1e-6\n" +
+                         std::string(kGoodString),
+                     6, "well.output_step", "the trajectory table would have 1e+15 rows"}),
     [](const ::testing::TestParamInfo<RejectedCase>& info) {
       std::string name = info.param.label;
       for (char& ch : name) if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
@@ -524,6 +533,22 @@ TEST(CaseReader, SurveyFileErrorsNameTheCsvLine) {
   } catch (const InputError& error) {
     EXPECT_THAT(error.what(), HasSubstr("survey.csv:4"));
     EXPECT_THAT(error.what(), HasSubstr("strictly increase"));
+  }
+}
+
+TEST(CaseReader, SurveyFileMustBeARegularFile) {
+  // A directory opens as an empty stream, and /dev/zero or a FIFO would be read without end.
+  const auto directory = std::filesystem::temp_directory_path() / "drillflex-io-test3";
+  std::filesystem::create_directories(directory / "survey.csv");
+  for (const std::string given : {"survey.csv", "/dev/zero"}) {
+    try {
+      ParseCase("units: field\nwell:\n  survey_file: " + given + "\n  hole: 12.25\n" + kGoodString, "a.yaml",
+                directory.string());
+      FAIL() << "read the survey file " << given;
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.key_path(), "well.survey_file");
+      EXPECT_THAT(error.what(), HasSubstr("not a regular file"));
+    }
   }
 }
 

@@ -453,6 +453,29 @@ TEST(ParseUnit, MalformedExpressionsAreRefused) {
   EXPECT_THAT(ErrorOf([] { ParseUnit("deg/0ft"); }), HasSubstr("must be positive and finite"));
 }
 
+// Found by fuzz/unit_expression (fuzz/README.md): each was read as a unit of infinite (or zero)
+// factor, or overflowed an int exponent, instead of a UnitError.
+TEST(ParseUnit, FuzzFindingsAreRefused) {
+  EXPECT_THAT(ErrorOf([] { ParseUnit("ft250"); }), HasSubstr("an exponent must lie between -9 and 9"));
+  EXPECT_THAT(ErrorOf([] { ParseUnit("t250"); }), HasSubstr("an exponent must lie between -9 and 9"));
+  EXPECT_THAT(ErrorOf([] { Convert(1.0, "t250", "t250"); }), HasSubstr("exponent"));
+  EXPECT_THAT(ErrorOf([] { ParseUnit("m^99999999999"); }), HasSubstr("an exponent must lie between"));
+  EXPECT_THAT(ErrorOf([] { ParseUnit("m\u00B2\u00B2"); }), HasSubstr("an exponent must lie between"));
+  // Products within the powers' bound whose factor no double holds: 1e594 and 1e-594.
+  const auto repeated = [](const std::string& factor, int count) {
+    std::string text;
+    for (int i = 0; i < count; ++i) text += factor + " ";
+    return text;
+  };
+  EXPECT_THAT(ErrorOf([&] { ParseUnit(repeated("km9", 11) + repeated("t9", 11)); }),
+              HasSubstr("its size in SI units is out of range"));
+  EXPECT_THAT(ErrorOf([&] { ParseUnit(repeated("mm9", 11) + repeated("g9", 11)); }),
+              HasSubstr("its size in SI units is out of range"));
+  EXPECT_THAT(ErrorOf([&] { ParseUnit(repeated("m9", 12)); }), HasSubstr("power goes past 99"));
+  EXPECT_EQ(ParseUnit("m9").dimension.length, 9);
+  EXPECT_EQ(ParseUnit("m^-9").dimension.length, -9);
+}
+
 TEST(Convert, WrongDimensionNamesBothKinds) {
   const std::string message = ErrorOf([] { Convert(1.0, "ppg", "in"); });
   EXPECT_THAT(message, HasSubstr("cannot convert from \"ppg\" (a density) to \"in\" (a length)"));
