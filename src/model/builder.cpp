@@ -376,7 +376,9 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     }
     std::vector<double> positions;
     for (const ContactNode& node : nodes) positions.push_back(node.s);
-    const std::vector<ContactCircle> circles = ContactCircles(input.string, positions);
+    // A string that is a bit alone has no node to touch the wall (found by fuzz/case_file).
+    const std::vector<ContactCircle> circles =
+        nodes.empty() ? std::vector<ContactCircle>{} : ContactCircles(input.string, positions);
     const ContactSettings& contact = input.settings.contact;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const auto [body, k, s] = nodes[i];

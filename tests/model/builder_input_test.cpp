@@ -31,5 +31,17 @@ TEST(BuildSystemModel, ASectionTooThinToReduceIsAnInputError) {
   }
 }
 
+// A string that is a bit alone, in a well: no node touches the wall (found by fuzz/case_file:
+// ContactCircles' LogicError for no contact nodes ended the program).
+TEST(BuildSystemModel, ABitAloneInAWellHasNoWallContact) {
+  ModelInput input = testing::RodInput(2, 4, 2);
+  input.string.components[0].type = ComponentType::Bit;
+  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}});
+  input.hole = {well::HoleSection{std::nullopt, 0.3, std::nullopt}};
+  input.bit_md = 100.0;
+  cms::ReductionCache cache;
+  EXPECT_TRUE(BuildSystemModel(input, cache).contact_elements.empty());
+}
+
 }  // namespace
 }  // namespace drillflex::model
