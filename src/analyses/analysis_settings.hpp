@@ -17,6 +17,10 @@ enum class StaticMethod { Newton, DynamicRelaxation };
 struct StaticSettings {
   StaticMethod method = StaticMethod::Newton;
   int max_iterations = 200;
+  // A string in a well on the case's own supports found by the energy's minimum too (as one on the
+  // default supports is), not by Newton's load stepping: the roadmap's off-bottom runs, whose bit
+  // hangs free under a prescribed sliding (pipeline/roadmap.hpp).
+  bool energy_minimum_on_case_supports = false;
   // Where the solver's progress goes (one line per stage and Newton iteration); none when empty.
   std::function<void(const std::string&)> log;
 };
@@ -124,13 +128,28 @@ struct TransientSettings {
   std::optional<double> fluid_frequency;
 };
 
+// The torque-and-drag roadmap (`drillflex roadmap`, pipeline/roadmap.hpp): bit depths from `from_md`
+// down to the case's bit MD at `step`, each friction factor at each depth. A zero or empty member
+// takes its default (pipeline::CompleteRoadmapSettings).
+struct RoadmapSettings {
+  double from_md = 0.0;           // m: the first bit depth; 0: a tenth of the way, or where the string fits
+  double step = 0.0;              // m; 0: ten depths in all
+  std::vector<double> friction;   // the friction factors (axial and around the string alike); empty:
+                                  // the case's and 0.1 either side
+  double rotary_speed = 0.0;      // rad/s off and on bottom; 0: the case's rpm, else 60 rpm
+  double trip_speed = 0.3048;     // m/s pulling out and running in (> 0; the friction is Coulomb, so
+                                  // above its regularization velocity only its sign counts)
+};
+
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.
+// `roadmap` holds the settings of `drillflex roadmap` (a sweep of statics, not run by `run`).
 struct AnalysesConfig {
   std::optional<StaticSettings> static_analysis;
   std::optional<ModesSettings> modes;
   std::optional<VibrationSettings> vibration;
   std::optional<BucklingSettings> buckling;
   std::optional<TransientSettings> transient;
+  std::optional<RoadmapSettings> roadmap;
 };
 
 }  // namespace drillflex::analyses

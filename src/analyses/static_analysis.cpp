@@ -455,7 +455,8 @@ StaticResult SolveByReleasingTheTop(const model::ModelInput& input, const model:
 
 StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
                              cms::ReductionCache& cache, const StaticSettings& settings) {
-  if (!input.supports.empty() || !input.trajectory || settings.method == StaticMethod::DynamicRelaxation) {
+  const bool case_supports = !input.supports.empty() && !settings.energy_minimum_on_case_supports;
+  if (case_supports || !input.trajectory || settings.method == StaticMethod::DynamicRelaxation) {
     return RunStatic(built, settings);
   }
   const StaticMinimum minimum = SolveStaticMinimum(input, built, settings);

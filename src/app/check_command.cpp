@@ -159,6 +159,7 @@ int RunCheck(const CommandOptions& options) {
   PrintString(c, show);
   PrintModel(c);
   PrintAnalyses(c, show);
+  for (const std::string& warning : c.warnings) std::cout << "warning: " << warning << "\n";
   std::cout << "the case is valid\n";
   return kExitOk;
 }

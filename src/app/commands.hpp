@@ -24,6 +24,15 @@ struct CommandOptions {
   int jobs = 1;                   // runs at once on this machine
   bool keep_runs = false;         // each run's own files under DIR/runs/NNNN/
   bool resume = false;            // skip the runs an interrupted sweep finished
+  // `roadmap` only (the case's analyses.roadmap keys, as YAML values: "4000 ft", "0.2, 0.3"); `jobs` too:
+  std::string roadmap_from;
+  std::string roadmap_step;
+  std::string roadmap_friction;
+  // `stability` only (a sweep's VALUES); `jobs`, `resume` and `keep_runs` too:
+  std::string map_rpm;
+  std::string map_wob;
+  // `import` only: the WITSML documents (the case is written to output_directory's place: -o FILE).
+  std::vector<std::string> documents;
 };
 
 int RunCheck(const CommandOptions& options);
@@ -35,5 +44,9 @@ int RunVibrationCommand(const CommandOptions& options);
 int RunTransientCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);
 int RunSweepCommand(const CommandOptions& options);
+int RunRoadmapCommand(const CommandOptions& options);
+int RunStabilityCommand(const CommandOptions& options);
+// `drillflex import FILE... [-o CASE.yaml]`: -o names the case file (standard output without it).
+int RunImport(const CommandOptions& options);
 
 }  // namespace drillflex::app

@@ -63,12 +63,25 @@ int main(int argc, char** argv) {
       {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true, true},
       {"sweep", "The case's analyses for every combination of varied values: sweep.csv, one row a run",
        drillflex::app::RunSweepCommand, true, false},
+      {"roadmap", "Torque-and-drag roadmap: pick-up, slack-off and rotating hook loads and torques against bit depth",
+       drillflex::app::RunRoadmapCommand, true, true},
+      {"stability", "Stability map: the case's transient at every RPM and WOB, each run's regime (stick-slip, whirl)",
+       drillflex::app::RunStabilityCommand, true, true},
+      {"import", "Write a case file from WITSML 1.4.1.1 or 2.0 trajectory, tubular and wbGeometry documents",
+       drillflex::app::RunImport, false, false},
   };
 
   CommandOptions options;
   int status = drillflex::app::kExitOk;
   for (const auto& command : commands) {
     CLI::App* sub = cli.add_subcommand(command.name, command.description);
+    if (std::string(command.name) == "import") {
+      sub->add_option("documents", options.documents, "WITSML documents (XML): trajectory, tubular, wbGeometry")
+          ->required();
+      sub->add_option("-o,--output", options.output_directory, "The case file to write (default: standard output)");
+      sub->callback([&status, &options, command]() { status = Guarded(command, options); });
+      continue;
+    }
     sub->add_option("case", options.case_path, "Case file (YAML)")->required();
     if (command.writes_results) {
       sub->add_option("-o,--output", options.output_directory,
@@ -78,15 +91,30 @@ int main(int argc, char** argv) {
         sub->add_flag("--no-report", options.no_report, "Write no report.html and no VTK files (batch runs)");
       }
     }
-    if (std::string(command.name) == "sweep") {
+    const std::string name = command.name;
+    if (name == "sweep" || name == "roadmap" || name == "stability") {
+      sub->add_option("-j,--jobs", options.jobs, "Runs at once on this machine (default 1)")
+          ->check(CLI::Range(1, 1024));
+    }
+    if (name == "roadmap") {
+      sub->add_option("--from", options.roadmap_from, "First bit MD, with or without a unit (default: the case's roadmap.from)");
+      sub->add_option("--step", options.roadmap_step, "Depth step (default: ten depths to the case's bit MD)");
+      sub->add_option("--friction", options.roadmap_friction, "Friction factors, a list: 0.2,0.3,0.4");
+    }
+    if (name == "stability") {
+      sub->add_option("--rpm", options.map_rpm, "Top-drive speeds: a list (60,120) or FROM:TO:STEP (40:200:20 rpm)")
+          ->required();
+      sub->add_option("--wob", options.map_wob, "WOBs: a list or FROM:TO:STEP (10:40:10 klbf)")->required();
+    }
+    if (name == "sweep" || name == "stability") {
+      sub->add_flag("--keep-runs", options.keep_runs, "Keep each run's own result files under DIR/runs/NNNN/");
+      sub->add_flag("--resume", options.resume, "Skip the runs an interrupted sweep into DIR finished");
+    }
+    if (name == "sweep") {
       sub->add_option("--vary", options.vary,
                       "KEY=VALUES: a key path of the case and its values, a list (operation.rpm=60,120,180) or a "
                       "range FROM:TO:STEP with a unit (operation.wob=10:40:5 klbf); repeated: every combination");
       sub->add_option("--cases", options.cases_table, "A CSV table: a header of key paths, one run a row");
-      sub->add_option("-j,--jobs", options.jobs, "Runs at once on this machine (default 1)")
-          ->check(CLI::Range(1, 1024));
-      sub->add_flag("--keep-runs", options.keep_runs, "Keep each run's own result files under DIR/runs/NNNN/");
-      sub->add_flag("--resume", options.resume, "Skip the runs an interrupted sweep into DIR finished");
     }
     sub->callback([&status, &options, command]() { status = Guarded(command, options); });
   }

@@ -1,15 +1,14 @@
 // `drillflex sweep CASE --vary KEY=VALUES ... [--cases table.csv] [-o DIR] [--jobs N] [--keep-runs]
 // [--resume]`: the case's analyses for every combination (pipeline/sweep_run.hpp), progress on
 // standard error, sweep.csv and sweep.json written atomically at the end.
-#include <unistd.h>
-
-#include <cstdio>
 #include <functional>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include "app/batch_progress.hpp"
 #include "app/commands.hpp"
+#include "app/sweep_runs.hpp"
 #include "core/error.hpp"
 #include "pipeline/sweep_mpi.hpp"
 #include "pipeline/sweep_run.hpp"
@@ -17,32 +16,54 @@
 namespace drillflex::app {
 namespace {
 
-// "12 / 40 done, 1 failed, about 35 s left": a line redrawn on a terminal, a line every tenth of the
-// sweep otherwise (logs of batch jobs).
-void ShowProgress(const pipeline::SweepProgress& progress) {
-  static const bool terminal = isatty(STDERR_FILENO) == 1;
+// The time left from the runs this call made (the resumed ones took none of it).
+void ShowProgress(const char* what, const pipeline::SweepProgress& progress) {
   const int remaining = progress.total - progress.done;
-  const std::string left =
-      progress.run_this_call > 0 && remaining > 0
-          ? fmt::format(", about {:.0f} s left", progress.elapsed_seconds / progress.run_this_call * remaining)
-          : "";
-  const std::string line =
-      fmt::format("sweep: {} / {} done, {} failed{}", progress.done, progress.total, progress.failed, left);
-  if (terminal) {
-    std::fprintf(stderr, "\r%s   %s", line.c_str(), remaining == 0 ? "\n" : "");
-    std::fflush(stderr);
-  } else if (progress.total > 0 && (remaining == 0 || progress.done % std::max(1, progress.total / 10) == 0)) {
-    std::fprintf(stderr, "%s\n", line.c_str());
-  }
+  ShowBatchProgress(what, progress.done, progress.total, progress.failed,
+                    progress.run_this_call > 0 ? progress.elapsed_seconds / progress.run_this_call * remaining : -1.0);
 }
 
 }  // namespace
+
+std::optional<std::vector<pipeline::SweepRow>> RunCombinations(const CommandOptions& options,
+                                                               const pipeline::SweepMpiSession& mpi,
+                                                               const io::Case& base,
+                                                               const std::vector<pipeline::SweepCombination>& combinations,
+                                                               const std::string& directory, const char* what) {
+  const bool writer = mpi.rank() == 0;
+  if (writer) {
+    std::cout << (mpi.active() ? fmt::format("{}: {} runs of {} on {} MPI ranks\n", what, combinations.size(),
+                                             base.name, mpi.size())
+                               : fmt::format("{}: {} runs of {} on {} job{}\n", what, combinations.size(), base.name,
+                                             options.jobs, options.jobs == 1 ? "" : "s"));
+  }
+  std::function<void(const pipeline::SweepProgress&)> progress;
+  if (writer) progress = [what](const pipeline::SweepProgress& done) { ShowProgress(what, done); };
+  const pipeline::SweepOptions sweep{directory, options.jobs, options.keep_runs, options.resume, progress};
+  std::vector<pipeline::SweepRow> rows;
+  try {
+    rows = mpi.active() ? pipeline::RunSweepOverRanks(base, combinations, sweep, mpi)
+                        : pipeline::RunSweep(base, combinations, sweep);
+  } catch (const std::exception& error) {
+    if (!mpi.active()) throw;
+    // The other ranks wait on this one: end them all, saying why.
+    std::cerr << fmt::format("drillflex: {}: rank {}: error: {}\n", what, mpi.rank(), error.what());
+    mpi.Abort(kExitFailure);
+  }
+  if (!writer) return std::nullopt;
+  return rows;
+}
+
+int CountFailed(const std::vector<pipeline::SweepRow>& rows) {
+  int failed = 0;
+  for (const pipeline::SweepRow& row : rows) failed += row.outcome.converged ? 0 : 1;
+  return failed;
+}
 
 int RunSweepCommand(const CommandOptions& options) {
   // Under mpirun every rank reads the case and the values alike; rank 0 hands out the runs, prints and
   // writes the table (pipeline/sweep_mpi.hpp).
   const pipeline::SweepMpiSession mpi;
-  const bool writer = mpi.rank() == 0;
   const io::Case base = io::ReadCase(options.case_path);
   pipeline::CaseAnalyses(base);  // the case must list analyses to run
   std::vector<pipeline::SweepCombination> combinations;
@@ -59,29 +80,11 @@ int RunSweepCommand(const CommandOptions& options) {
   }
   const std::string directory =
       options.output_directory.empty() ? io::DefaultOutputDirectory(base) + "-sweep" : options.output_directory;
-  if (writer) {
-    std::cout << (mpi.active() ? fmt::format("sweep: {} runs of {} on {} MPI ranks\n", combinations.size(), base.name,
-                                             mpi.size())
-                               : fmt::format("sweep: {} runs of {} on {} job{}\n", combinations.size(), base.name,
-                                             options.jobs, options.jobs == 1 ? "" : "s"));
-  }
-  pipeline::SweepOptions sweep{directory, options.jobs, options.keep_runs, options.resume,
-                               writer ? ShowProgress : std::function<void(const pipeline::SweepProgress&)>{}};
-  std::vector<pipeline::SweepRow> rows;
-  try {
-    rows = mpi.active() ? pipeline::RunSweepOverRanks(base, combinations, sweep, mpi)
-                        : pipeline::RunSweep(base, combinations, sweep);
-  } catch (const std::exception& error) {
-    if (!mpi.active()) throw;
-    // The other ranks wait on this one: end them all, saying why.
-    std::cerr << fmt::format("drillflex: sweep: rank {}: error: {}\n", mpi.rank(), error.what());
-    mpi.Abort(kExitFailure);
-  }
-  if (!writer) return kExitOk;
-  pipeline::ComposeSweepFiles(base, rows, directory).Commit();
-  int failed = 0;
-  for (const pipeline::SweepRow& row : rows) failed += row.outcome.converged ? 0 : 1;
-  std::cout << fmt::format("sweep: {} runs, {} failed; results in {}/sweep.csv\n", rows.size(), failed, directory);
+  const auto rows = RunCombinations(options, mpi, base, combinations, directory, "sweep");
+  if (!rows) return kExitOk;
+  pipeline::ComposeSweepFiles(base, *rows, directory).Commit();
+  std::cout << fmt::format("sweep: {} runs, {} failed; results in {}/sweep.csv\n", rows->size(), CountFailed(*rows),
+                           directory);
   return kExitOk;
 }
 

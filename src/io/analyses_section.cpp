@@ -203,11 +203,32 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
   return settings;
 }
 
+// `roadmap: {from, step, friction, rpm, trip_speed}`: the settings of `drillflex roadmap`.
+analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
+  node.ExpectMap("the roadmap settings {from, step, friction, rpm, trip_speed}");
+  node.AllowOnlyKeys({"from", "step", "friction", "rpm", "trip_speed"});
+  analyses::RoadmapSettings settings;
+  settings.from_md = node.OptionalPositive("from", Quantity::Length).value_or(0.0);
+  settings.step = node.OptionalPositive("step", Quantity::Length).value_or(0.0);
+  if (const auto friction = node.OptionalChild("friction")) {
+    friction->ExpectSequence("a list of friction factors [0.2, 0.3, ...]");
+    if (friction->size() == 0 || friction->size() > 20) friction->Fail("expected 1 to 20 friction factors");
+    for (std::size_t i = 0; i < friction->size(); ++i) {
+      const double factor = friction->Item(i).AsQuantity(Quantity::Dimensionless);
+      if (!(factor >= 0.0 && factor <= 2.0)) friction->Item(i).Fail("expected a friction factor from 0 to 2");
+      settings.friction.push_back(factor);
+    }
+  }
+  settings.rotary_speed = node.OptionalPositive("rpm", Quantity::RotarySpeed).value_or(0.0);
+  settings.trip_speed = node.OptionalPositive("trip_speed", Quantity::Velocity).value_or(settings.trip_speed);
+  return settings;
+}
+
 }  // namespace
 
 analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation) {
-  node.ExpectMap("the analyses to run (static, modes, vibration, buckling, transient)");
-  node.AllowOnlyKeys({"static", "modes", "vibration", "buckling", "transient"});
+  node.ExpectMap("the analyses to run (static, modes, vibration, buckling, transient, roadmap)");
+  node.AllowOnlyKeys({"static", "modes", "vibration", "buckling", "transient", "roadmap"});
   analyses::AnalysesConfig config;
   // A key that is present runs its analysis, even with empty settings (`static: {}` or `static:`).
   if (const auto item = node.PresentChild("static")) config.static_analysis = ReadStatic(*item);
@@ -235,6 +256,7 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::
     }
   }
   if (const auto item = node.PresentChild("transient")) config.transient = ReadTransient(*item, operation);
+  if (const auto item = node.PresentChild("roadmap")) config.roadmap = ReadRoadmap(*item);
   return config;
 }
 

@@ -45,6 +45,9 @@ struct Case {
   model::ModelInput input;
   analyses::AnalysesConfig analyses;
   OutputConfig output;
+  // What the reader read but could not map: the fields of the WITSML documents a `witsml:` key names
+  // ("file:line:column: element path: <wtPerLen> not mapped: ..."); `drillflex check` prints them.
+  std::vector<std::string> warnings;
 };
 
 // Reads and validates a case file. Throws InputError naming the file, line, column and key path.

@@ -43,7 +43,7 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
   const auto context = std::make_shared<ReadContext>(ReadContext{file, c.units});
   const YamlView top(root.node(), "", context);
 
-  if (const auto well = top.OptionalChild("well")) c.well = ReadWellSection(*well, directory);
+  if (const auto well = top.OptionalChild("well")) c.well = ReadWellSection(*well, directory, c.warnings);
   if (const auto fluid = top.OptionalChild("fluid")) c.input.fluid = ReadFluidSection(*fluid);
   c.input.gravity = top.QuantityOr("gravity", Quantity::Acceleration, c.well ? kStandardGravity : 0.0);
   if (c.input.gravity < 0.0) top.Child("gravity").Fail("gravity acts along +z (down): give its magnitude, >= 0");
@@ -51,7 +51,7 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
     if (const auto material = fe::FindBuiltInMaterial(name)) c.input.materials[name] = *material;
   }
   if (const auto materials = top.OptionalChild("materials")) ReadMaterialsSection(*materials, c.input.materials);
-  c.input.string = ReadStringSection(top.Child("string"), c.input.materials);
+  c.input.string = ReadStringSection(top.Child("string"), c.input.materials, directory, c.warnings);
   if (const auto model = top.PresentChild("model")) c.input.settings = ReadModelSection(*model);
   if (const auto supports = top.OptionalChild("supports")) c.input.supports = ReadSupportsSection(*supports);
   if (const auto loads = top.OptionalChild("loads")) c.input.loads = ReadLoadsSection(*loads);

@@ -6,15 +6,22 @@
 #include <string>
 
 #include "io/case.hpp"
+#include "io/witsml.hpp"
 #include "io/yaml_view.hpp"
 
 namespace drillflex::io {
 
-WellConfig ReadWellSection(const YamlView& node, const std::string& directory);
+// `warnings` gathers what WITSML documents named by a `witsml:` key give that drillflex does not read.
+WellConfig ReadWellSection(const YamlView& node, const std::string& directory, std::vector<std::string>& warnings);
 model::FluidConfig ReadFluidSection(const YamlView& node);
 void ReadMaterialsSection(const YamlView& node, std::map<std::string, fe::Material>& materials);
-model::StringConfig ReadStringSection(const YamlView& node,
-                                      const std::map<std::string, fe::Material>& materials);
+// A list of components, or `{witsml: FILE}`: the tubular of a WITSML document (relative to `directory`).
+model::StringConfig ReadStringSection(const YamlView& node, const std::map<std::string, fe::Material>& materials,
+                                      const std::string& directory, std::vector<std::string>& warnings);
+// The WITSML documents a `witsml:` key names (a file or a list of files, relative to `directory`),
+// their warnings appended to `warnings` (io/witsml_section.cpp).
+std::vector<WitsmlDocument> ReadWitsmlKey(const YamlView& node, const std::string& directory,
+                                          std::vector<std::string>& warnings);
 model::ModelSettings ReadModelSection(const YamlView& node);
 std::vector<model::Support> ReadSupportsSection(const YamlView& node);
 std::vector<model::Load> ReadLoadsSection(const YamlView& node);

@@ -180,11 +180,9 @@ void ReportData::AddTransient(const Case& c, const model::ModelInput& input, con
                       {"y", probe_y[p]},
                       {"z", probe_z[p]},
                       {"contact_force", probe_force[p]}});
-    if (input.trajectory && !input.hole.empty()) {
-      // Radial clearance: the hole's radius less the contact circle's (joint, blade or body) there.
-      const double hole = well::HoleProfile(input.hole).Diameter(StationMd(c, result.probe_s[p]));
-      const double string = model::ContactDiameterAt(input.string, result.probe_s[p]);
-      probes.back()["clearance"] = out(0.5 * (hole - string), Quantity::Diameter);
+    // Radial clearance: the hole's radius less the contact circle's (joint, blade or body) there.
+    if (const auto clearance = model::RadialClearanceAt(input, result.probe_s[p])) {
+      probes.back()["clearance"] = out(*clearance, Quantity::Diameter);
     }
   }
   json_["units"] = UnitNames(out);

@@ -168,11 +168,27 @@ void ReadMaterialsSection(const YamlView& node, std::map<std::string, fe::Materi
   }
 }
 
-model::StringConfig ReadStringSection(const YamlView& node,
-                                      const std::map<std::string, fe::Material>& materials) {
-  node.ExpectSequence("the string's components from the bit upward");
-  if (node.size() == 0) node.Fail("the string needs at least one component");
+model::StringConfig ReadStringSection(const YamlView& node, const std::map<std::string, fe::Material>& materials,
+                                      const std::string& directory, std::vector<std::string>& warnings) {
   model::StringConfig string;
+  if (node.IsMap()) {
+    node.AllowOnlyKeys({"witsml"});
+    const YamlView witsml = node.Child("witsml");
+    std::vector<const WitsmlTubular*> tubulars;
+    const auto documents = ReadWitsmlKey(witsml, directory, warnings);
+    for (const auto& document : documents) {
+      for (const auto& tubular : document.tubulars) tubulars.push_back(&tubular);
+    }
+    if (tubulars.size() != 1) {
+      witsml.Fail(fmt::format("expected one tubular among the WITSML documents, found {}", tubulars.size()));
+    }
+    for (const WitsmlComponent& component : tubulars.front()->components) {
+      string.components.push_back(ComponentOf(component));
+    }
+    return string;
+  }
+  node.ExpectSequence("the string's components from the bit upward (or {witsml: FILE})");
+  if (node.size() == 0) node.Fail("the string needs at least one component");
   for (std::size_t i = 0; i < node.size(); ++i) {
     const YamlView item = node.Item(i);
     string.components.push_back(ReadComponent(item, materials));

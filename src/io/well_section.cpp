@@ -80,16 +80,43 @@ std::vector<well::HoleSection> ReadHole(const YamlView& node) {
   return sections;
 }
 
+// `witsml:`: the survey of the one trajectory among the documents, and the hole of their one
+// wbGeometry unless the case gives `hole`.
+void ReadWitsmlWell(const YamlView& node, const std::string& directory, bool needs_hole, WellConfig& well,
+                    std::vector<std::string>& warnings) {
+  const auto documents = ReadWitsmlKey(node, directory, warnings);
+  std::vector<const WitsmlTrajectory*> trajectories;
+  std::vector<const WitsmlGeometry*> geometries;
+  for (const auto& document : documents) {
+    for (const auto& trajectory : document.trajectories) trajectories.push_back(&trajectory);
+    for (const auto& geometry : document.geometries) geometries.push_back(&geometry);
+  }
+  if (trajectories.size() != 1) {
+    node.Fail(fmt::format("expected one trajectory among the WITSML documents, found {}", trajectories.size()));
+  }
+  well.survey = SurveyOf(*trajectories.front());
+  well.survey_file = trajectories.front()->origin.file;
+  if (!needs_hole) return;
+  if (geometries.size() != 1) {
+    node.Fail(fmt::format("expected one wbGeometry among the WITSML documents (or the well's 'hole'), found {}",
+                          geometries.size()));
+  }
+  well.hole = HoleOf(*geometries.front());
+}
+
 }  // namespace
 
-WellConfig ReadWellSection(const YamlView& node, const std::string& directory) {
+WellConfig ReadWellSection(const YamlView& node, const std::string& directory, std::vector<std::string>& warnings) {
   node.ExpectMap("the well", false);
-  node.AllowOnlyKeys({"survey", "survey_file", "hole", "bit_md", "output_step"});
+  node.AllowOnlyKeys({"survey", "survey_file", "witsml", "hole", "bit_md", "output_step"});
   WellConfig well;
-  if (node.Has("survey") == node.Has("survey_file")) {
-    node.Fail("give exactly one of 'survey' (a list of [MD, inclination, azimuth]) or 'survey_file'");
+  if (int(node.Has("survey")) + int(node.Has("survey_file")) + int(node.Has("witsml")) != 1) {
+    node.Fail("give exactly one of 'survey' (a list of [MD, inclination, azimuth]), 'survey_file' or 'witsml' "
+              "(WITSML trajectory and wbGeometry documents)");
   }
-  if (const auto survey = node.OptionalChild("survey")) {
+  if (const auto witsml = node.OptionalChild("witsml")) {
+    ReadWitsmlWell(*witsml, directory, !node.Has("hole"), well, warnings);
+  } else if (const auto survey = node.OptionalChild("survey")) {
     well.survey = ReadInlineSurvey(*survey);
     if (well.survey.size() < 2) survey->Fail("a survey needs at least two stations");
   } else {
@@ -97,7 +124,7 @@ WellConfig ReadWellSection(const YamlView& node, const std::string& directory) {
     well.survey_file = file.AsString();
     well.survey = ReadSurveyFile(file, directory);
   }
-  well.hole = ReadHole(node.Child("hole"));
+  if (!node.Has("witsml") || node.Has("hole")) well.hole = ReadHole(node.Child("hole"));
   well.bit_md = well.survey.back().md;
   if (const auto bit = node.OptionalChild("bit_md")) {
     well.bit_md = bit->AsPositive(Quantity::Length);

@@ -11,6 +11,7 @@
 #include "model/contact_circles.hpp"
 #include "model/drive_elements.hpp"
 #include "model/imbalance_element.hpp"
+#include "well/hole.hpp"
 #include "model/lateral_fluid.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
@@ -251,6 +252,12 @@ double ContactDiameterAt(const StringConfig& string, double s) {
     if (std::min(to_connection, spacing - to_connection) <= half_joint + 1e-9) return *component.joint_diameter;
   }
   return component.outer_diameter;
+}
+
+std::optional<double> RadialClearanceAt(const ModelInput& input, double s) {
+  if (!input.trajectory || input.hole.empty()) return std::nullopt;
+  const double hole = well::HoleProfile(input.hole).Diameter(input.bit_md - s);
+  return 0.5 * (hole - ContactDiameterAt(input.string, s));
 }
 
 Vec6 SectionCouplingStiffness(const Body& body, double factor) {

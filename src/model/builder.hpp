@@ -91,6 +91,10 @@ const Component& ComponentAt(const StringConfig& string, double s);
 // (the geometry; the contact circles of the model are model/contact_circles.hpp).
 double ContactDiameterAt(const StringConfig& string, double s);
 
+// The radial clearance at a distance s (m) from the bit in the input's well (m): the hole's radius at
+// that MD less the contact circle's (ContactDiameterAt); none without a well and hole.
+std::optional<double> RadialClearanceAt(const ModelInput& input, double s);
+
 // The built-in relative rotation of the coupling at `s` (m from the bit): a motor's bent housing
 // when its bend sits there (bend angle about x × d, d the toolface direction in the string frame,
 // the bit side pointing toward d), else the identity. Bodies are cut at every bend.

@@ -48,7 +48,11 @@ AnalysisRequest CaseAnalyses(const io::Case& c) {
   const auto& a = c.analyses;
   const AnalysisRequest request{a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value(),
                                 a.vibration.has_value(), a.transient.has_value()};
-  if (!request.Any()) throw InputError({c.file, 0, 0}, "analyses", "the case lists no analyses to run");
+  if (!request.Any()) {
+    throw InputError({c.file, 0, 0}, "analyses",
+                     a.roadmap ? "the case lists only a roadmap: run it with `drillflex roadmap`"
+                               : "the case lists no analyses to run");
+  }
   return request;
 }
 

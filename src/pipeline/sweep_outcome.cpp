@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analyses/bit_tendency.hpp"
+#include "pipeline/drilling_regime.hpp"
 
 namespace drillflex::pipeline {
 
@@ -82,6 +83,15 @@ SweepOutcome SummarizeRun(const CaseResults& results) {
   }
   if (results.transient && !results.transient->samples.empty()) {
     outcome.stick_slip_severity = StickSlipSeverity(*results.transient);
+    // Probes with no wall (no well) get no clearance, so no whirl is read there.
+    std::vector<double> clearance;
+    for (const double s : results.transient->probe_s) {
+      clearance.push_back(model::RadialClearanceAt(results.model.input, s).value_or(kNotComputed));
+    }
+    const DrillingRegime regime = ClassifyDrillingRegime(*results.transient, clearance);
+    outcome.whirl_speed = regime.whirl_speed;
+    outcome.whirl = WhirlName(regime.whirl);
+    outcome.regime = regime.Name();
     if (!results.static_result) {
       outcome.hook_load = results.transient->samples.back().hook_load;
       outcome.surface_torque = results.transient->samples.back().surface_torque;

@@ -22,6 +22,9 @@ struct SweepOutcome {
   double peak_von_mises_stress = kNotComputed;  // Pa (static)
   double first_critical_rpm = kNotComputed;     // rad/s: the vibration's lowest critical RPM, else the modes' first lateral
   double stick_slip_severity = kNotComputed;    // (max − min) / mean bit speed over the transient's second half
+  double whirl_speed = kNotComputed;            // rad/s, the whirling probe's precession (0: no whirl; transient)
+  std::string whirl;                            // "none", "forward", "backward" (transient; pipeline/drilling_regime.hpp)
+  std::string regime;                           // "smooth", "stick-slip, backward whirl", ... (transient)
   double hook_load = kNotComputed;              // N: tension at the surface (static: CalcSurfaceLoads; else the transient's end)
   double surface_torque = kNotComputed;         // N·m, at the top (static: CalcSurfaceLoads; else the transient's end)
 };

@@ -37,8 +37,20 @@ constexpr HeadlineColumn kHeadlines[] = {
     {"peak_von_mises_stress", Quantity::Stress, &SweepOutcome::peak_von_mises_stress},
     {"first_critical_rpm", Quantity::RotarySpeed, &SweepOutcome::first_critical_rpm},
     {"stick_slip_severity", Quantity::Dimensionless, &SweepOutcome::stick_slip_severity},
+    {"whirl_speed", Quantity::RotarySpeed, &SweepOutcome::whirl_speed},
     {"hook_load", Quantity::Force, &SweepOutcome::hook_load},
     {"surface_torque", Quantity::Moment, &SweepOutcome::surface_torque},
+};
+
+// The words of a row, after the figures: (column, member).
+struct TextColumn {
+  const char* name;
+  std::string SweepOutcome::*member;
+};
+constexpr TextColumn kTextColumns[] = {
+    {"bit_tendency", &SweepOutcome::bit_tendency},
+    {"whirl", &SweepOutcome::whirl},
+    {"regime", &SweepOutcome::regime},
 };
 
 std::string RunName(int index) { return fmt::format("{:04d}", index + 1); }
@@ -211,8 +223,8 @@ nlohmann::json SweepRowToJson(const SweepRow& row) {
   nlohmann::json json = {{"index", row.index},
                          {"values", values},
                          {"converged", row.outcome.converged},
-                         {"message", row.outcome.message},
-                         {"bit_tendency", row.outcome.bit_tendency}};
+                         {"message", row.outcome.message}};
+  for (const TextColumn& column : kTextColumns) json[column.name] = row.outcome.*column.member;
   for (const HeadlineColumn& column : kHeadlines) json[column.name] = NumberOrNull(row.outcome.*column.member);
   return json;
 }
@@ -225,7 +237,7 @@ SweepRow SweepRowFromJson(const nlohmann::json& json) {
   }
   row.outcome.converged = json.value("converged", false);
   row.outcome.message = json.value("message", "");
-  row.outcome.bit_tendency = json.value("bit_tendency", "");
+  for (const TextColumn& column : kTextColumns) row.outcome.*column.member = json.value(column.name, "");
   for (const HeadlineColumn& column : kHeadlines) {
     row.outcome.*column.member = json.contains(column.name) ? NumberFrom(json[column.name]) : kNotComputed;
   }
@@ -250,8 +262,10 @@ io::ResultFiles ComposeSweepFiles(const io::Case& base, const std::vector<SweepR
     units_row.push_back(column.quantity == Quantity::Dimensionless ? "-"
                                                                    : std::string(units::DefaultUnit(column.quantity, system)));
   }
-  columns.push_back("bit_tendency");
-  units_row.push_back("-");
+  for (const TextColumn& column : kTextColumns) {
+    columns.push_back(column.name);
+    units_row.push_back("-");
+  }
   columns.push_back("message");
   units_row.push_back("-");
   io::CsvTable table(columns, units_row);
@@ -273,9 +287,11 @@ io::ResultFiles ComposeSweepFiles(const io::Case& base, const std::vector<SweepR
       cells.push_back(std::isfinite(shown) ? io::CsvTable::Number(shown) : "");
       run[column.name] = NumberOrNull(shown);
     }
-    cells.push_back(io::CsvTable::Text(row.outcome.bit_tendency));
+    for (const TextColumn& column : kTextColumns) {
+      cells.push_back(io::CsvTable::Text(row.outcome.*column.member));
+      run[column.name] = row.outcome.*column.member;
+    }
     cells.push_back(io::CsvTable::Text(row.outcome.message));
-    run["bit_tendency"] = row.outcome.bit_tendency;
     run["message"] = row.outcome.message;
     table.AddCells(std::move(cells));
     runs.push_back(std::move(run));

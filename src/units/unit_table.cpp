@@ -18,6 +18,7 @@ constexpr double kPoundForce = 4.4482216152605; // N = lb x 9.80665 m/s²
 constexpr double kGallon = 3.785411784e-3;      // m³ = 231 in³
 constexpr double kBarrel = 42.0 * kGallon;      // m³, oil barrel
 constexpr double kRevolution = 2.0 * kPi;       // rad
+constexpr double kSurveyFoot = 1200.0 / 3937.0; // m, the US survey foot (Energistics "ftUS")
 
 constexpr Dimension kNone{};
 constexpr Dimension kLength{1, 0, 0, 0};
@@ -48,6 +49,7 @@ constexpr std::array kSymbols{
     UnitSymbol{"ft", kFoot, kLength, kFold},
     UnitSymbol{"kft", 1e3 * kFoot, kLength, kFold},  // for kft*lbf
     UnitSymbol{"yd", 3.0 * kFoot, kLength, kFold},
+    UnitSymbol{"ftUS", kSurveyFoot, kLength},  // Energistics (WITSML) symbol
     // mass
     UnitSymbol{"kg", 1.0, kMass, kFold},
     UnitSymbol{"g", 1e-3, kMass},
@@ -84,6 +86,7 @@ constexpr std::array kSymbols{
     UnitSymbol{"deg", kDegree, kAngle, kFold},
     UnitSymbol{"\u00B0", kDegree, kAngle},  // degree sign
     UnitSymbol{"\u00BA", kDegree, kAngle},  // masculine ordinal, a common stand-in for °
+    UnitSymbol{"dega", kDegree, kAngle},  // Energistics (WITSML) symbol of the degree of angle
     UnitSymbol{"rad", 1.0, kAngle, kFold},
     UnitSymbol{"rev", kRevolution, kAngle, kFold},
     // rotary speed and frequency

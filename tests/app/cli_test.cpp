@@ -9,39 +9,27 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-struct RunResult {
-  int status = -1;
-  std::string output;
-};
+using drillflex::test_cli::RunResult;
 
 RunResult RunDrillflex(const std::string& arguments) {
-  // One log per test process: CTest runs the tests of this file in parallel processes, which
-  // shared one log and read each other's output.
-  const fs::path log = fs::temp_directory_path() / ("drillflex-cli-test-" + std::to_string(::getpid()) + ".log");
-  const std::string line = fmt::format("{} {} > {} 2>&1", DRILLFLEX_EXE, arguments, log.string());
-  const int raw = std::system(line.c_str());
-  std::ifstream file(log);
-  std::stringstream text;
-  text << file.rdbuf();
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+  return drillflex::test_cli::RunShell(fmt::format("{} {}", DRILLFLEX_EXE, arguments));
 }
 
-fs::path FreshDirectory(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / "drillflex-cli" / name;
-  fs::remove_all(directory);
-  return directory;
-}
+fs::path FreshDirectory(const std::string& name) { return drillflex::test_cli::FreshDirectory("drillflex-cli", name); }
 
 const std::string kExample = std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml");
 
@@ -325,4 +313,86 @@ TEST(Cli, StaticWritesTheReportAndVtkUnlessTurnedOff) {
   EXPECT_EQ(result.status, 2) << result.output;
   EXPECT_THAT(result.output, HasSubstr("output.report"));
   EXPECT_FALSE(fs::exists(bad));
+}
+
+// `roadmap`: roadmap.csv as the contract gives it (bit MD, friction, the three hook loads, the two
+// torques, a line of units), one row a depth and friction factor, pulling out above rotating above
+// running in. (Its numbers against Johancsik: validation/roadmap_test.cpp.)
+const std::string kRoadmapCase = std::string(DRILLFLEX_SOURCE_DIR "/validation/v7-roadmap/pipe-60-deg.yaml");
+
+TEST(Cli, RoadmapWritesOneRowADepthAndFrictionFactor) {
+  // The V7 roadmap case cut to 2,000 ft (its well and pipe), to run quickly.
+  std::ifstream v7(kRoadmapCase);
+  std::stringstream text;
+  text << v7.rdbuf();
+  std::string short_case = text.str();
+  for (std::size_t at = short_case.find("10000"); at != std::string::npos; at = short_case.find("10000")) {
+    short_case.replace(at, 5, "2000");
+  }
+  const fs::path out = FreshDirectory("roadmap");
+  const RunResult result = RunDrillflex("roadmap " + WriteCase("roadmap", short_case).string() +
+                                        " --from 1000 --step 1000 --friction 0.2,0.3 --no-report -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("roadmap: 2 depths × 2 friction factors"));
+  EXPECT_FALSE(fs::exists(out / "report.html"));
+  std::ifstream csv(out / "roadmap.csv");
+  std::string header, units, line;
+  std::getline(csv, header);
+  std::getline(csv, units);
+  EXPECT_EQ(header, "bit_md,friction,pick_up,slack_off,rotating,off_bottom_torque,on_bottom_torque,message");
+  EXPECT_EQ(units, "ft,-,lbf,lbf,lbf,ft*lbf,ft*lbf,-");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(csv, line)) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',') && row.size() < 7;) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  ASSERT_EQ(rows.size(), 4u);
+  const double expected[4][2] = {{1000, 0.2}, {1000, 0.3}, {2000, 0.2}, {2000, 0.3}};
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    ASSERT_EQ(rows[k].size(), 7u);
+    EXPECT_EQ(rows[k][0], expected[k][0]);
+    EXPECT_EQ(rows[k][1], expected[k][1]);
+    EXPECT_GT(rows[k][2], rows[k][4]);  // pick-up above rotating
+    EXPECT_GT(rows[k][4], rows[k][3]);  // rotating above slack-off
+    EXPECT_GT(rows[k][6], rows[k][5]);  // the torque on bit adds on bottom
+  }
+  EXPECT_TRUE(fs::exists(out / "roadmap.json"));
+}
+
+TEST(Cli, RoadmapBadSettingsExitWithTwoAndWriteNothing) {
+  const fs::path out = FreshDirectory("roadmap-bad");
+  RunResult result = RunDrillflex("roadmap " + kRoadmapCase + " --from 20000 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("analyses.roadmap.from"));
+  result = RunDrillflex("roadmap " + kRoadmapCase + " --friction 0.2,x -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("analyses.roadmap.friction[1]"));
+  result = RunDrillflex("roadmap " + WriteCase("roadmap-no-well", kCollarYaml).string() + " -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("a roadmap needs a well"));
+  EXPECT_FALSE(fs::exists(out));
+  // `run` leaves the roadmap to its own command.
+  result = RunDrillflex("run " + kRoadmapCase + " -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("drillflex roadmap"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// `stability`: a case without a transient, or no --rpm, is bad input (exit 2), nothing written. (The
+// map's regimes against known ones: validation/stability_map_test.cpp.)
+TEST(Cli, StabilityNeedsATransientAndItsAxes) {
+  const fs::path out = FreshDirectory("stability-bad");
+  RunResult result = RunDrillflex("stability " + kExample + " --rpm 60,120 --wob 20 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("analyses.transient"));
+  result = RunDrillflex("stability " + kExample + " --wob 20 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("--rpm"));
+  const std::string rotating = std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/rotating.yaml");
+  result = RunDrillflex("stability " + rotating + " --rpm 60:10:5 --wob 20 -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("operation.rpm"));
+  EXPECT_FALSE(fs::exists(out));
 }

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "../sweep_case.hpp"
+#include "cli_run.hpp"
 
 namespace {
 
@@ -22,29 +23,11 @@ namespace fs = std::filesystem;
 
 constexpr const char* kVary = "--vary 'operation.wob=20:60:20 kN' --vary operation.rpm=0,60";
 
-struct RunResult {
-  int status = -1;
-  std::string output;
-};
+using drillflex::test_cli::ReadFile;
+using drillflex::test_cli::RunResult;
+using drillflex::test_cli::RunShell;
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-RunResult RunShell(const std::string& command) {
-  const fs::path log = fs::temp_directory_path() / ("drillflex-sweep-test-" + std::to_string(::getpid()) + ".log");
-  const int raw = std::system(fmt::format("{} > {} 2>&1", command, log.string()).c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, ReadFile(log)};
-}
-
-fs::path Directory(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / "drillflex-sweep-cli" / name;
-  fs::remove_all(directory);
-  return directory;
-}
+fs::path Directory(const std::string& name) { return drillflex::test_cli::FreshDirectory("drillflex-sweep-cli", name); }
 
 fs::path CaseFile() {
   const fs::path directory = fs::temp_directory_path() / "drillflex-sweep-cli";

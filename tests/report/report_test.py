@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """report.html and string.vtp of a drillflex run, checked in headless Chromium (CTest label `report`).
 
-    report_test.py DRILLFLEX CASE OUTDIR [--sections static,view3d,...] [--analysis run]
+    report_test.py DRILLFLEX CASE OUTDIR [--sections static,view3d,...] [--analysis run] [--json results.json]
+                   [--options "MORE OPTIONS"]
 
 Runs `drillflex ANALYSIS CASE -o OUTDIR/results`, then:
   * renders report.html in headless Chromium (Debian's `chromium`): the page must finish with
@@ -154,7 +155,8 @@ def main():
     os.makedirs(args.outdir, exist_ok=True)
     results_dir = os.path.join(args.outdir, "results")
     shutil.rmtree(results_dir, ignore_errors=True)
-    run = subprocess.run([args.drillflex, args.analysis, args.case, "-o", results_dir], capture_output=True, text=True)
+    run = subprocess.run([args.drillflex, args.analysis, args.case, "-o", results_dir] + args.options.split(),
+                         capture_output=True, text=True)
     check(run.returncode == 0, f"drillflex {args.analysis} exited {run.returncode}: {run.stderr}")
     report = os.path.join(results_dir, "report.html")
     check(os.path.exists(report), "no report.html")
@@ -166,7 +168,7 @@ def main():
     # Chart.js and three.js mention addresses in comments and strings; no element may load one.
     check("<link " not in page and "<script src" not in page and "<img src" not in page,
           "report.html refers to a file or address beside it")
-    with open(os.path.join(results_dir, "results.json")) as f:
+    with open(os.path.join(results_dir, args.json)) as f:
         results = json.load(f)
 
     url = "file://" + os.path.abspath(report)
@@ -220,6 +222,8 @@ parser.add_argument("outdir")
 parser.add_argument("--analysis", default="run")
 parser.add_argument("--sections", default="header,static,view3d")
 parser.add_argument("--keys", default="")
+parser.add_argument("--json", default="results.json", help="the JSON file the report draws (roadmap.json)")
+parser.add_argument("--options", default="", help="more options of the command, one string")
 args = parser.parse_args()
 args.sections = [s for s in args.sections.split(",") if s]
 args.keys = [k for k in args.keys.split(",") if k]

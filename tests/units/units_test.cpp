@@ -135,6 +135,31 @@ TEST(ParseUnit, EveryListedUnitHasItsExactFactorAndDimension) {
   }
 }
 
+// The Energistics unit symbols WITSML's trajectory, tubular and wbGeometry objects write in `uom`
+// (Energistics Unit of Measure Dictionary: dega, ftUS, lbm, the dot for a product), each with its
+// exact factor: the US survey foot is 1200/3937 m, the degree of angle π/180 rad.
+TEST(ParseUnit, EnergisticsSymbolsOfTheWitsmlObjects) {
+  constexpr double kSurveyFoot = 1200.0 / 3937.0;
+  const std::vector<Conversion> symbols = {
+      {"m", 1.0, kLength, "m"}, {"ft", 0.3048, kLength, "m"}, {"ftUS", kSurveyFoot, kLength, "m"},
+      {"in", 0.0254, kLength, "m"}, {"cm", 0.01, kLength, "m"}, {"mm", 1e-3, kLength, "m"},
+      {"km", 1e3, kLength, "m"}, {"dega", kDegree, kAngle, "rad"}, {"rad", 1.0, kAngle, "rad"},
+      {"lbm/ft", 0.45359237 / 0.3048, Dimension{-1, 1, 0, 0}, "kg/m"}, {"kg/m", 1.0, Dimension{-1, 1, 0, 0}, "kg/m"},
+      {"dega/100ft", kDegree / 30.48, Dimension{-1, 0, 0, 1}, "rad/m"},
+      {"dega/30m", kDegree / 30.0, Dimension{-1, 0, 0, 1}, "rad/m"},
+      {"ft.lbf", 0.3048 * 4.4482216152605, Dimension{2, 1, -2, 0}, "N*m"},
+      {"kN.m", 1e3, Dimension{2, 1, -2, 0}, "N*m"}, {"psi", 6894.757293168361, Dimension{-1, 1, -2, 0}, "Pa"},
+      {"klbf", 4448.2216152605, kForce, "N"}, {"lbf/ft", 4.4482216152605 / 0.3048, Dimension{0, 1, -2, 0}, "N/m"},
+      {"in2", 0.00064516, Dimension{2, 0, 0, 0}, "m2"},
+  };
+  for (const Conversion& conversion : symbols) {
+    SCOPED_TRACE(conversion.unit);
+    const Unit unit = ParseUnit(conversion.unit);
+    ExpectRelativelyNear(unit.to_si, conversion.to_si);
+    EXPECT_EQ(unit.dimension, conversion.dimension);
+  }
+}
+
 TEST(Convert, EveryListedUnitConvertsToSIAndBack) {
   for (const Conversion& conversion : AllConversions()) {
     SCOPED_TRACE(conversion.unit);

@@ -137,7 +137,9 @@
   }
 
   // A plot of {x, y} series. spec: {title, x, y (axis titles), series: [{label, x: [], y: [], color,
-  // line (default true), dash, fill, points}], xBands, hLines, vLines, yMin, yMax, logY, xReverse}.
+  // line (default true), dash, fill, points}], xBands, hLines, vLines, yMin, yMax, logY, xReverse,
+  // xNice (the x axis ends on ticks), xFromZero, depthDown (y is a depth: drawn downwards, the tooltip
+  // reads x at that depth)}.
   function plot(parent, spec) {
     const figure = el('figure', {class: 'plot'});
     figure.appendChild(el('figcaption', {text: spec.title}));
@@ -177,16 +179,19 @@
       data: {datasets: datasets},
       options: {
         animation: false, responsive: true, maintainAspectRatio: false, parsing: false, normalized: true,
-        interaction: {mode: 'nearest', intersect: false, axis: 'x'},
+        interaction: {mode: 'nearest', intersect: false, axis: spec.depthDown ? 'y' : 'x'},
         scales: {
           x: {type: 'linear', title: {display: true, text: spec.x}, reverse: !!spec.xReverse, min: spec.xMin, max: spec.xMax,
-              bounds: spec.xNice ? 'ticks' : 'data', ticks: {callback: (v) => num(v, 6)}},
+              bounds: spec.xNice ? 'ticks' : 'data', beginAtZero: !!spec.xFromZero, ticks: {callback: (v) => num(v, 6)}},
           y: {type: spec.logY ? 'logarithmic' : 'linear', title: {display: true, text: spec.y}, min: yMin, max: yMax,
+              reverse: !!spec.depthDown,
               ticks: {callback: (v) => num(v, 4)}},
         },
         plugins: {
           legend: {display: spec.series.length > 1, labels: {filter: (item) => !spec.series[item.datasetIndex].noLegend}},
-          tooltip: {callbacks: {label: (c) => `${c.dataset.label || ''}: ${num(c.parsed.y, 5)} at ${num(c.parsed.x, 5)}`}},
+          tooltip: {callbacks: {label: (c) => spec.depthDown
+            ? `${c.dataset.label || ''}: ${num(c.parsed.x, 5)} at ${num(c.parsed.y, 5)}`
+            : `${c.dataset.label || ''}: ${num(c.parsed.y, 5)} at ${num(c.parsed.x, 5)}`}},
           marks: {xBands: spec.xBands || [], hLines: spec.hLines || [], vLines: spec.vLines || []},
         },
       },
@@ -202,10 +207,10 @@
     const s = el('header', {id: 'header', class: 'report-section'});
     root.appendChild(s);
     s.appendChild(el('h1', {text: R.case || 'drillflex case'}));
-    const model = R.model || {};
+    const model = R.model;
     facts(s, [
       ['job', `drillflex ${RUN.command} (version ${RUN.version}), written ${RUN.written}, run time ${num(RUN.run_seconds, 3)} s`],
-      ['model', `${model.bodies} bodies, ${model.coordinates} coordinates, ${model.contacts} wall contacts, ${model.elements_per_body} elements and ${model.modes_per_body} modes a body`],
+      ...(model ? [['model', `${model.bodies} bodies, ${model.coordinates} coordinates, ${model.contacts} wall contacts, ${model.elements_per_body} elements and ${model.modes_per_body} modes a body`]] : []),
       ['units', `${R.units}: lengths in ${U.length}, diameters in ${U.diameter}, forces in ${U.force}, stresses in ${U.stress}`],
     ]);
     if (R.operation) {
@@ -686,6 +691,94 @@
     });
   }
 
+  // ---- roadmap -----------------------------------------------------------------------------------
+  // Torque and drag against bit depth in the field's usual look: depth down, a colour per friction
+  // factor, pick-up solid, slack-off dashed, rotating off bottom dotted; torque off bottom solid, on
+  // bottom dashed.
+  function roadmapSection(nav) {
+    const r = R.roadmap;
+    const ru = r.units;
+    const s = section('roadmap', 'Torque-and-drag roadmap');
+    nav.appendChild(el('a', {href: '#roadmap', text: 'roadmap'}));
+    facts(s, [
+      ['bit depths', `${num(r.from, 6)} to ${num(r.bit_md, 6)} ${ru.bit_md}, every ${num(r.step, 5)} ${ru.bit_md}`],
+      ['friction factors', r.friction.map((f) => num(f, 3)).join(', ')],
+      ['motion', `tripping at ${num(r.trip_speed, 3)} ${U.length}/s; rotating at ${num(r.rpm, 4)} ${U.rpm}; on bottom WOB ${num(r.weight_on_bit, 4)} ${U.wob}, torque on bit ${num(r.torque_on_bit, 5)} ${ru.on_bottom_torque}`],
+    ]);
+    const failed = r.points.filter((p) => p.message);
+    if (failed.length) {
+      const list = el('ul', {class: 'warnings'});
+      for (const p of failed) list.appendChild(el('li', {text: `${num(p.bit_md, 6)} ${ru.bit_md}, friction ${num(p.friction, 3)}: ${p.message}`}));
+      s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: `${failed.length} of ${r.points.length} points failed`}), list]));
+    }
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    const hook = [], torque = [];
+    r.friction.forEach((mu, i) => {
+      const rows = r.points.filter((p) => p.friction === mu);
+      const depth = column(rows, 'bit_md'), color = COLORS[i % COLORS.length], m = `μ ${num(mu, 3)}`;
+      hook.push({label: `pick-up, ${m}`, x: column(rows, 'pick_up'), y: depth, color: color, points: true, width: 2});
+      hook.push({label: `slack-off, ${m}`, x: column(rows, 'slack_off'), y: depth, color: color, dash: [7, 4], points: true, width: 2});
+      hook.push({label: `rotating, ${m}`, x: column(rows, 'rotating'), y: depth, color: color, dash: [2, 3], width: 1.5});
+      torque.push({label: `off bottom, ${m}`, x: column(rows, 'off_bottom_torque'), y: depth, color: color, points: true, width: 2});
+      torque.push({label: `on bottom, ${m}`, x: column(rows, 'on_bottom_torque'), y: depth, color: color, dash: [7, 4], points: true, width: 2});
+    });
+    plot(grid, {title: 'Hook load: pick-up (solid), slack-off (dashed), rotating off bottom (dotted)', x: `hook load (${ru.pick_up})`,
+      y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true, series: hook});
+    // A vertical stretch turns free of the wall: its torque's round-off (1e-20) is drawn as the zero it is.
+    const torques = torque.flatMap((t) => t.x).filter(isFinite);
+    const largest = Math.max(0, ...torques.map(Math.abs));
+    plot(grid, {title: 'Surface torque: off bottom (solid), on bottom (dashed)', x: `torque (${ru.off_bottom_torque})`,
+      y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true,
+      xMin: Math.min(...torques) > -1e-9 * largest ? 0 : undefined, series: torque});
+  }
+
+  // ---- stability map -----------------------------------------------------------------------------
+  // Each run a square at its RPM and WOB, coloured by its regime (pipeline/drilling_regime.hpp), and
+  // the stick-slip severity against RPM, a line per WOB.
+  function stabilitySection(nav) {
+    const m = R.stability;
+    const s = section('stability', 'Stability map: RPM × WOB');
+    nav.appendChild(el('a', {href: '#stability', text: 'stability map'}));
+    const [oscillation, stickSlip] = m.severity_limits;
+    s.appendChild(el('p', {text: `Each run is the case's transient at its top-drive RPM and WOB, read over its second half: ` +
+      `stick-slip when (max − min) / mean bit RPM ≥ ${num(stickSlip, 2)} (the bit stops), torsional oscillation from ${num(oscillation, 2)}; ` +
+      `whirl when a probe orbits at least once round, never nearer the hole's axis than ${num(100 * m.whirl_radius_fraction, 2)} % of its clearance, ` +
+      `forward with the string's rotation, backward against it. Hover a square for its regime.`}));
+    const classes = [['smooth', '#2ca02c'], ['torsional oscillation', '#bcbd22'], ['forward whirl', '#ff7f0e'],
+                     ['stick-slip', '#d62728'], ['backward whirl', '#9467bd'], ['failed', '#7f7f7f']];
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    const series = classes.map(([name, color]) => {
+      const runs = m.points.filter((p) => p.class === name);
+      return {label: name, x: column(runs, 'rpm'), y: column(runs, 'wob'), color: color, line: false, points: true,
+              pointStyle: 'rect', pointRadius: 11, noLegend: runs.length === 0};
+    }).filter((entry) => entry.x.length > 0);
+    // The squares whole inside the frame: a tenth of the span (or of the value) beyond the outer runs.
+    const padded = (values) => {
+      const lo = Math.min(...values), hi = Math.max(...values), pad = 0.1 * (hi - lo || Math.abs(hi) || 1);
+      return [lo - pad, hi + pad];
+    };
+    const [xMin, xMax] = padded(column(m.points, 'rpm')), [yMin, yMax] = padded(column(m.points, 'wob'));
+    plot(grid, {title: 'Drilling regime', x: `top-drive speed (${U.rpm})`, y: `WOB (${U.wob})`, series: series,
+      xMin: xMin, xMax: xMax, yMin: yMin, yMax: yMax});
+    const wobs = [...new Set(m.points.map((p) => p.wob))].sort((a, b) => a - b);
+    plot(grid, {title: 'Stick-slip severity (max − min) / mean bit RPM', x: `top-drive speed (${U.rpm})`, y: 'severity (–)',
+      hLines: [{y: stickSlip, label: 'the bit stops', color: '#d62728'}, {y: oscillation, label: 'torsional oscillation', color: '#bcbd22'}],
+      series: wobs.map((wob, i) => {
+        const runs = m.points.filter((p) => p.wob === wob).sort((a, b) => a.rpm - b.rpm);
+        return {label: `WOB ${num(wob, 4)} ${U.wob}`, x: column(runs, 'rpm'), y: column(runs, 'stick_slip_severity'),
+                color: COLORS[i % COLORS.length], points: true};
+      })});
+    const table = el('table', {class: 'facts'});
+    table.appendChild(el('tr', {}, ['run', `RPM (${U.rpm})`, `WOB (${U.wob})`, 'regime', 'severity', `whirl (${U.rpm})`].map((h) => el('th', {text: h}))));
+    for (const p of m.points) {
+      table.appendChild(el('tr', {}, [String(p.run), num(p.rpm, 4), num(p.wob, 4), p.message ? `failed: ${p.message}` : p.regime,
+        p.stick_slip_severity === null ? '' : num(p.stick_slip_severity, 3), p.whirl === 'none' || !p.whirl ? '' : num(p.whirl_speed, 4)].map((t) => el('td', {text: t}))));
+    }
+    s.appendChild(table);
+  }
+
   // ---- compose -----------------------------------------------------------------------------------
   function guarded(name, f) {
     try { f(); } catch (e) { recordError(`${name}: ${e && e.message ? e.message : e}`); }
@@ -698,6 +791,8 @@
   if (R.vibration) guarded('vibration', () => vibrationSection(nav));
   if (R.buckling) guarded('buckling', () => bucklingSection(nav));
   if (D.transient) guarded('transient', () => transientSection(nav));
+  if (R.roadmap) guarded('roadmap', () => roadmapSection(nav));
+  if (R.stability) guarded('stability map', () => stabilitySection(nav));
   // report.html?only=static shows the header and that section alone (to print or capture one part).
   const only = new URLSearchParams(window.location.search).get('only');
   if (only) {

@@ -1,0 +1,51 @@
+// `drillflex roadmap CASE [-o DIR] [--from MD] [--step MD] [--friction LIST] [--jobs N] [--no-report]`:
+// the torque-and-drag roadmap (pipeline/roadmap.hpp) with the case's `analyses.roadmap` settings, the
+// command line's over them; progress on standard error; roadmap.csv, roadmap.json and report.html
+// written atomically at the end.
+#include <chrono>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "app/batch_progress.hpp"
+#include "app/commands.hpp"
+#include "pipeline/roadmap.hpp"
+
+namespace drillflex::app {
+
+int RunRoadmapCommand(const CommandOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  io::Case c = io::ReadCase(options.case_path);
+  // The command line's settings go through the case reader as the case's own would (units, checks).
+  std::vector<io::CaseValue> values;
+  if (!options.roadmap_from.empty()) values.push_back({"analyses.roadmap.from", options.roadmap_from});
+  if (!options.roadmap_step.empty()) values.push_back({"analyses.roadmap.step", options.roadmap_step});
+  if (!options.roadmap_friction.empty()) {
+    values.push_back({"analyses.roadmap.friction", "[" + options.roadmap_friction + "]"});
+  }
+  if (!values.empty()) c = io::WithValues(c, values);
+  const analyses::RoadmapSettings settings =
+      pipeline::CompleteRoadmapSettings(c, c.analyses.roadmap.value_or(analyses::RoadmapSettings{}));
+  const std::size_t depths = pipeline::RoadmapDepths(c, settings).size();
+  std::cout << fmt::format("roadmap: {} depths × {} friction factors of {}, 4 statics each, on {} job{}\n", depths,
+                           settings.friction.size(), c.name, options.jobs, options.jobs == 1 ? "" : "s");
+  pipeline::RoadmapOptions run;
+  run.jobs = options.jobs;
+  run.progress = [](int done, int total, int failed, double seconds_left) {
+    ShowBatchProgress("roadmap", done, total, failed, seconds_left);
+  };
+  const std::vector<pipeline::RoadmapPoint> points = pipeline::RunRoadmap(c, settings, run);
+  const std::string directory =
+      options.output_directory.empty() ? io::DefaultOutputDirectory(c) + "-roadmap" : options.output_directory;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const bool report = c.output.report && !options.no_report;
+  pipeline::ComposeRoadmapFiles(c, settings, points, directory, report, seconds).Commit();
+  int failed = 0;
+  for (const pipeline::RoadmapPoint& point : points) failed += point.message.empty() ? 0 : 1;
+  std::cout << fmt::format("roadmap: {} points, {} failed; results in {}/roadmap.csv{} ({:.3g} s)\n", points.size(),
+                           failed, directory, report ? fmt::format(", the plots in {}/report.html", directory) : "",
+                           seconds);
+  return kExitOk;
+}
+
+}  // namespace drillflex::app

@@ -1,0 +1,61 @@
+// The torque-and-drag roadmap: at each bit depth from a start to the case's bit MD, for each friction
+// factor, the hook loads pulling out (pick-up), running in (slack-off) and rotating off bottom, and
+// the surface torque off and on bottom, each a static run of the stiff-string model (contacts, tool
+// joints, buckling where it occurs) with the string's top component continued to the surface.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analyses/analysis_settings.hpp"
+#include "io/case.hpp"
+#include "io/result_files.hpp"
+
+namespace drillflex::pipeline {
+
+// One depth and friction factor. Hook loads in N (tension at the surface), torques in N·m (positive
+// clockwise looking down-hole: the rig's); NaN with a `message` when one of its runs failed.
+struct RoadmapPoint {
+  double bit_md = 0.0;
+  double friction = 0.0;
+  double pick_up = 0.0;
+  double slack_off = 0.0;
+  double rotating = 0.0;
+  double off_bottom_torque = 0.0;
+  double on_bottom_torque = 0.0;  // at the case's WOB and TOB
+  std::string message;
+};
+
+// The case at `bit_md`: its well's bit MD moved there and the string's top component continued to the
+// surface: a single joint (count 1) lengthened to reach it, else as many joints as fit below it (what
+// is left, less than a joint, counts as the pipe above the model, model::StringAboveWeight). Throws
+// InputError (file, "string") when the components below the top one leave no room for it.
+io::Case CaseAtDepth(const io::Case& c, double bit_md);
+
+// `settings` with each default filled in from the case (analyses::RoadmapSettings), checked: InputError
+// naming `analyses.roadmap.KEY` for a start beyond the bit MD or above where the string fits, or more
+// than 2000 points.
+analyses::RoadmapSettings CompleteRoadmapSettings(const io::Case& c, const analyses::RoadmapSettings& settings);
+// The depths of a complete roadmap, top down, the case's bit MD the last.
+std::vector<double> RoadmapDepths(const io::Case& c, const analyses::RoadmapSettings& settings);
+
+struct RoadmapOptions {
+  int jobs = 1;  // points at once (threads, each with its share of the cores)
+  // After each point: the points done, failed, and the seconds left, estimated with a point's time
+  // in proportion to its bit depth (the string's length).
+  std::function<void(int done, int total, int failed, double seconds_left)> progress;
+};
+
+// The roadmap (settings complete: CompleteRoadmapSettings), depth by depth, each friction factor at
+// each depth, in that order.
+std::vector<RoadmapPoint> RunRoadmap(const io::Case& c, const analyses::RoadmapSettings& settings,
+                                     const RoadmapOptions& options = {});
+
+// roadmap.csv (one row a depth and friction factor, the case's output units) and roadmap.json (the
+// same with the settings), and report.html with the roadmap's plots when `report`.
+io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSettings& settings,
+                                    const std::vector<RoadmapPoint>& points, const std::string& directory,
+                                    bool report, double run_seconds);
+
+}  // namespace drillflex::pipeline

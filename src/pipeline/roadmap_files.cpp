@@ -1,0 +1,86 @@
+// roadmap.csv, roadmap.json and the report of a roadmap (pipeline/roadmap.hpp).
+#include <cmath>
+
+#include "io/report_html.hpp"
+#include "pipeline/roadmap.hpp"
+
+namespace drillflex::pipeline {
+namespace {
+
+using units::Quantity;
+
+struct RoadmapColumn {
+  const char* name;
+  Quantity quantity;
+  double RoadmapPoint::*member;
+};
+
+constexpr RoadmapColumn kColumns[] = {
+    {"bit_md", Quantity::Length, &RoadmapPoint::bit_md},
+    {"friction", Quantity::Dimensionless, &RoadmapPoint::friction},
+    {"pick_up", Quantity::Force, &RoadmapPoint::pick_up},
+    {"slack_off", Quantity::Force, &RoadmapPoint::slack_off},
+    {"rotating", Quantity::Force, &RoadmapPoint::rotating},
+    {"off_bottom_torque", Quantity::Moment, &RoadmapPoint::off_bottom_torque},
+    {"on_bottom_torque", Quantity::Moment, &RoadmapPoint::on_bottom_torque},
+};
+
+std::string UnitOf(Quantity quantity, units::System system) {
+  return quantity == Quantity::Dimensionless ? "-" : std::string(units::DefaultUnit(quantity, system));
+}
+
+}  // namespace
+
+io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSettings& settings,
+                                    const std::vector<RoadmapPoint>& points, const std::string& directory,
+                                    bool report, double run_seconds) {
+  io::ResultFiles files(directory, "roadmap.json");
+  const units::System system = c.output_units;
+  auto out = [system](double si, Quantity quantity) { return units::FromSI(si, quantity, system); };
+  std::vector<std::string> columns, units_row;
+  for (const RoadmapColumn& column : kColumns) {
+    columns.push_back(column.name);
+    units_row.push_back(UnitOf(column.quantity, system));
+  }
+  columns.push_back("message");
+  units_row.push_back("-");
+  io::CsvTable table(columns, units_row);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const RoadmapPoint& point : points) {
+    std::vector<std::string> cells;
+    nlohmann::json row = nlohmann::json::object();
+    for (const RoadmapColumn& column : kColumns) {
+      const double shown = out(point.*column.member, column.quantity);
+      cells.push_back(std::isfinite(shown) ? io::CsvTable::Number(shown) : "");
+      row[column.name] = std::isfinite(shown) ? nlohmann::json(shown) : nlohmann::json(nullptr);
+    }
+    cells.push_back(io::CsvTable::Text(point.message));
+    row["message"] = point.message;
+    table.AddCells(std::move(cells));
+    rows.push_back(std::move(row));
+  }
+  files.Add("roadmap.csv", table.ToString());
+  nlohmann::json units_json = nlohmann::json::object();
+  for (const RoadmapColumn& column : kColumns) units_json[column.name] = UnitOf(column.quantity, system);
+  nlohmann::json& json = files.json();
+  json["case"] = c.name;
+  json["units"] = std::string(units::SystemName(system));
+  json["roadmap"] = {
+      {"from", out(settings.from_md, Quantity::Length)},
+      {"step", out(settings.step, Quantity::Length)},
+      {"bit_md", out(c.input.bit_md, Quantity::Length)},
+      {"friction", settings.friction},
+      {"rpm", out(settings.rotary_speed, Quantity::RotarySpeed)},
+      {"trip_speed", out(settings.trip_speed, Quantity::Velocity)},
+      {"weight_on_bit", out(c.input.operation.weight_on_bit, Quantity::WeightOnBit)},
+      {"torque_on_bit", out(c.input.operation.torque_on_bit, Quantity::Moment)},
+      {"units", units_json},
+      {"points", rows},
+  };
+  if (report) {
+    files.Add("report.html", io::ComposeReportHtml(json, io::ReportData{}, {"roadmap", run_seconds}));
+  }
+  return files;
+}
+
+}  // namespace drillflex::pipeline

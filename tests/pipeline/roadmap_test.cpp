@@ -1,0 +1,104 @@
+// The torque-and-drag roadmap (pipeline/roadmap.hpp) against the soft-string references a straight
+// hole gives exactly (Johancsik et al. 1984): in a vertical hole the three hook loads are the buoyed
+// weight W; in a straight hole at inclination I the string lies on the low side with N = w sin I a
+// metre, so pulling out reads W cos I + μ W sin I, running in W cos I − μ W sin I, and rotating
+// W cos I (the friction then acts around the string).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "pipeline/roadmap.hpp"
+
+namespace drillflex::pipeline {
+namespace {
+
+constexpr double kSteelDensity = 7850.0;  // kg/m³ (fe/material.hpp built-in steel)
+constexpr double kMudDensity = 1200.0;    // kg/m³
+constexpr double kGravity = 9.81;         // m/s² (the case's default with a well)
+
+// Buoyed weight a metre of a plain tube (no tool joints), N/m: steel less the mud it displaces,
+// inside and out.
+double TubeWeight(double od, double id) { return kGravity * (kSteelDensity - kMudDensity) * kPi / 4.0 * (od * od - id * id); }
+
+// Three 9 m collars and 9 m joints of plain pipe to the surface in a straight hole at `inclination`,
+// the bit at 297 m (27 m of collars and 30 joints: nothing above the model).
+io::Case StraightHole(double inclination_deg) {
+  return io::ParseCase(fmt::format(R"(name: roadmap
+units: SI
+well:
+  survey: [[0, {0}, 0], [400, {0}, 0]]
+  hole: [{{diameter: 0.2159}}]
+  bit_md: 297
+fluid: {{density: 1200}}
+string:
+  - {{type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}}
+  - {{type: pipe, od: 0.127, id: 0.1086, length: 9, count: 5}}
+model: {{body_length: 9, elements_per_body: 4, modes_per_body: 4}}
+operation: {{wob: 40 kN, torque_on_bit: 2 kN*m, rpm: 60}}
+analyses:
+  static: {{}}
+)",
+                                   inclination_deg),
+                       "roadmap.yaml");
+}
+
+std::vector<RoadmapPoint> Roadmap(const io::Case& c, const analyses::RoadmapSettings& settings) {
+  return RunRoadmap(c, CompleteRoadmapSettings(c, settings));
+}
+
+double BuoyedWeight(double bit_md) {
+  return TubeWeight(0.1715, 0.0714) * 27.0 + TubeWeight(0.127, 0.1086) * (bit_md - 27.0);
+}
+
+TEST(Roadmap, TheTopComponentReachesTheSurface) {
+  const io::Case c = CaseAtDepth(StraightHole(0.0), 200.0);
+  EXPECT_EQ(c.input.string.components.back().count, 19);  // 27 + 19 × 9 = 198 m: 2 m above the model
+  EXPECT_EQ(c.input.bit_md, 200.0);
+  EXPECT_THROW(CaseAtDepth(StraightHole(0.0), 30.0), InputError);
+}
+
+TEST(Roadmap, AVerticalHoleHangsItsBuoyedWeightWhateverTheMotion) {
+  const std::vector<RoadmapPoint> points = Roadmap(StraightHole(0.0), {207.0, 45.0, {0.2, 0.4}});
+  ASSERT_EQ(points.size(), 6u);  // 207, 252 and 297 m, two friction factors each
+  for (const RoadmapPoint& point : points) {
+    ASSERT_TRUE(point.message.empty()) << point.message;
+    const double weight = BuoyedWeight(point.bit_md);
+    for (const double hook : {point.pick_up, point.slack_off, point.rotating}) {
+      EXPECT_NEAR(hook, weight, 1e-3 * weight) << point.bit_md << " m, mu " << point.friction;
+    }
+  }
+}
+
+TEST(Roadmap, AStraightInclinedHoleDragsMuWSinI) {
+  const double inclination = 30.0 * kPi / 180.0;
+  for (const double friction : {0.2, 0.4}) {
+    const std::vector<RoadmapPoint> points = Roadmap(StraightHole(30.0), {297.0, 45.0, {friction}});
+    ASSERT_EQ(points.size(), 1u);
+    const RoadmapPoint& point = points.front();
+    ASSERT_TRUE(point.message.empty()) << point.message;
+    const double weight = BuoyedWeight(297.0);
+    const double along = weight * std::cos(inclination), drag = friction * weight * std::sin(inclination);
+    EXPECT_NEAR(point.pick_up, along + drag, 5e-3 * (along + drag)) << friction;
+    EXPECT_NEAR(point.slack_off, along - drag, 5e-3 * (along - drag)) << friction;
+    EXPECT_NEAR(point.rotating, along, 5e-3 * along) << friction;
+    // Rotating, the string climbs the wall until μN and N together carry w sin I a metre (V7):
+    // N = w sin I / sqrt(1 + μ²), and the torque is Σ μ N r over the collars (r = 0.08575 m) and the
+    // pipe (0.0635 m), clockwise looking down-hole (positive): 656.3 N·m at μ = 0.2. On bottom the TOB
+    // (2 kN·m) adds to it.
+    const double torque = friction * std::sin(inclination) / std::sqrt(1.0 + friction * friction) *
+                          (TubeWeight(0.1715, 0.0714) * 27.0 * 0.08575 + TubeWeight(0.127, 0.1086) * 270.0 * 0.0635);
+    EXPECT_NEAR(point.off_bottom_torque, torque, 0.02 * torque) << friction;
+    EXPECT_GT(point.on_bottom_torque, point.off_bottom_torque + 1.9e3);
+    std::printf("I = 30 deg, mu %.1f: pick-up %.1f N (%+.3f %%), slack-off %.1f N (%+.3f %%), rotating %.1f N "
+                "(%+.3f %%), off-bottom torque %.1f N*m (%+.3f %%)\n",
+                friction, point.pick_up, 100.0 * (point.pick_up / (along + drag) - 1.0), point.slack_off,
+                100.0 * (point.slack_off / (along - drag) - 1.0), point.rotating, 100.0 * (point.rotating / along - 1.0),
+                point.off_bottom_torque, 100.0 * (point.off_bottom_torque / torque - 1.0));
+  }
+}
+
+}  // namespace
+}  // namespace drillflex::pipeline
