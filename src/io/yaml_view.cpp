@@ -113,6 +113,11 @@ double YamlView::AsQuantity(units::Quantity quantity) const {
   try {
     const double value = units::ParseQuantity(node_.Scalar(), quantity, context_->system);
     if (!std::isfinite(value)) Fail("expected a finite number");
+    // No hole or tubular is wider: a diameter of 5.6e8 m (fuzz/case_file: "5 4444444444in", five
+    // times 4444444444 in) read, and the body's stiffness then could not be factored.
+    if (quantity == units::Quantity::Diameter && std::abs(value) > kMaxDiameter) {
+      Fail(fmt::format("expected a diameter of at most {} m, got '{}'", kMaxDiameter, node_.Scalar()));
+    }
     return value;
   } catch (const UnitError& error) {
     Fail(error.what());

@@ -24,6 +24,10 @@ struct ReadContext {
   units::System system = units::System::SI;
 };
 
+// The widest diameter a case may give (m): far wider than any hole or tubular (tests use bare numbers
+// such as `od: 8` in SI), far narrower than what the reduction could not factor.
+inline constexpr double kMaxDiameter = 100.0;
+
 class YamlView {
  public:
   YamlView(YAML::Node node, std::string path, std::shared_ptr<const ReadContext> context,

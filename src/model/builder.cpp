@@ -85,6 +85,23 @@ std::vector<double> BodyCuts(const ModelInput& input) {
   return cuts;
 }
 
+// The reduction of a component's section. A section whose stiffness or mass the reduction cannot
+// tell from rounding (an od of 1e-9 m, a modulus of 1e-300 Pa: found by fuzz/case_file, where the
+// reduction's LogicError ended the program) is the case's to fix: an InputError at the component.
+std::shared_ptr<const cms::ReducedBody> ReduceSection(cms::ReductionCache& cache, const fe::BodySpec& spec,
+                                                      const cms::ReductionOptions& reduction,
+                                                      const Component& component, std::size_t index) {
+  try {
+    return cache.Get(spec, reduction);
+  } catch (const LogicError& error) {
+    throw InputError({"", component.source_line, 0}, fmt::format("string[{}]", index),
+                     fmt::format("the {} (od {:.6g} m, id {:.6g} m, E {:.6g} Pa, density {:.6g} kg/m3) cannot be "
+                                 "modelled: {}; check its diameters, length and material",
+                                 component.name, spec.section.outer_diameter, spec.section.inner_diameter,
+                                 spec.material.youngs_modulus, spec.material.density, error.what()));
+  }
+}
+
 std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache) {
   std::vector<Body> bodies;
   const ModelSettings& settings = input.settings;
@@ -122,7 +139,7 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
           settings.elements_per_body);
       reduction.modes_per_body = std::min(settings.modes_per_body, 6 * (spec.element_count - 1));
       spec.options = FeOptions(settings);
-      const auto reduced = cache.Get(spec, reduction);
+      const auto reduced = ReduceSection(cache, spec, reduction, component, c);
       // Once per section (it was 2/3 of the build time of a 1000-body string when made per body).
       const MatX mass_correction = cms::ReferenceMassMatrix(*reduced) - cms::NodalReferenceMassMatrix(*reduced);
       double body_start = stretch_start;
@@ -366,7 +383,9 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     }
     std::vector<double> positions;
     for (const ContactNode& node : nodes) positions.push_back(node.s);
-    const std::vector<ContactCircle> circles = ContactCircles(input.string, positions);
+    // A string that is a bit alone has no node to touch the wall (found by fuzz/case_file).
+    const std::vector<ContactCircle> circles =
+        nodes.empty() ? std::vector<ContactCircle>{} : ContactCircles(input.string, positions);
     const ContactSettings& contact = input.settings.contact;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const auto [body, k, s] = nodes[i];

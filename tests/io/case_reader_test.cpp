@@ -495,7 +495,10 @@ INSTANTIATE_TEST_SUITE_P(
         RejectedCase{"trajectory table of 1e15 rows",
                      "well:\n  survey:\n    - [0, 0, 0]\n    - [1e9, 0, 0]\n  hole: 0.3\n  output_step: 1e-6\n" +
                          std::string(kGoodString),
-                     6, "well.output_step", "the trajectory table would have 1e+15 rows"}),
+                     6, "well.output_step", "the trajectory table would have 1e+15 rows"},
+        // Found by fuzz/case_file: five times 4444444444 in, 5.6e8 m, read; the body could not be reduced.
+        RejectedCase{"diameter of 5.6e8 m", "string:\n  - {type: pipe, od: 5 4444444444in, id: 4.276 in, length: 8}\n", 2,
+                     "string[0].od", "expected a diameter of at most 100 m"}),
     [](const ::testing::TestParamInfo<RejectedCase>& info) {
       std::string name = info.param.label;
       for (char& ch : name) if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
