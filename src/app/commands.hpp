@@ -29,8 +29,8 @@ struct CommandOptions {
   std::string roadmap_step;
   std::string roadmap_friction;
   // `stability` only (a sweep's VALUES); `jobs`, `resume` and `keep_runs` too:
-  std::string map_rpm;
-  std::string map_wob;
+  std::string stability_rpm_values;
+  std::string stability_wob_values;
   // `import` only: the WITSML documents (the case is written to output_directory's place: -o FILE).
   std::vector<std::string> documents;
 };

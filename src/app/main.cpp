@@ -102,9 +102,9 @@ int main(int argc, char** argv) {
       sub->add_option("--friction", options.roadmap_friction, "Friction factors, a list: 0.2,0.3,0.4");
     }
     if (name == "stability") {
-      sub->add_option("--rpm", options.map_rpm, "Top-drive speeds: a list (60,120) or FROM:TO:STEP (40:200:20 rpm)")
+      sub->add_option("--rpm", options.stability_rpm_values, "Top-drive speeds: a list (60,120) or FROM:TO:STEP (40:200:20 rpm)")
           ->required();
-      sub->add_option("--wob", options.map_wob, "WOBs: a list or FROM:TO:STEP (10:40:10 klbf)")->required();
+      sub->add_option("--wob", options.stability_wob_values, "WOBs: a list or FROM:TO:STEP (10:40:10 klbf)")->required();
     }
     if (name == "sweep" || name == "stability") {
       sub->add_flag("--keep-runs", options.keep_runs, "Keep each run's own result files under DIR/runs/NNNN/");

@@ -17,7 +17,7 @@ int RunStabilityCommand(const CommandOptions& options) {
   const pipeline::SweepMpiSession mpi;
   const io::Case base = io::ReadCase(options.case_path);
   const std::vector<pipeline::SweepCombination> combinations =
-      pipeline::StabilityCombinations(base, options.map_rpm, options.map_wob);
+      pipeline::StabilityCombinations(base, options.stability_rpm_values, options.stability_wob_values);
   const std::string directory =
       options.output_directory.empty() ? io::DefaultOutputDirectory(base) + "-stability" : options.output_directory;
   const auto rows = RunCombinations(options, mpi, base, combinations, directory, "stability");

@@ -11,12 +11,12 @@
 #include "model/contact_circles.hpp"
 #include "model/drive_elements.hpp"
 #include "model/imbalance_element.hpp"
-#include "well/hole.hpp"
 #include "model/lateral_fluid.hpp"
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
 #include "model/wall_contact.hpp"
+#include "well/hole.hpp"
 
 namespace drillflex::model {
 namespace {

@@ -1,12 +1,10 @@
 #include "pipeline/roadmap.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <mutex>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -79,6 +77,11 @@ io::Case WithOperation(io::Case c, double friction, double wob, double tob, mode
   return c;
 }
 
+RoadmapPoint FailedPoint(double md, double friction, const std::string& message) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {md, friction, nan, nan, nan, nan, nan, message};
+}
+
 RoadmapPoint RunRoadmapPoint(const io::Case& c, const analyses::RoadmapSettings& settings, double md, double friction) {
   const io::Case at = CaseAtDepth(c, md);
   RoadmapPoint point{md, friction, 0.0, 0.0, 0.0, 0.0, 0.0, ""};
@@ -95,8 +98,9 @@ RoadmapPoint RunRoadmapPoint(const io::Case& c, const analyses::RoadmapSettings&
         WithOperation(at, friction, c.input.operation.weight_on_bit, c.input.operation.torque_on_bit, {0.0, rpm});
     point.on_bottom_torque = RunStaticAtSurface(drilling, false).surface_torque;
   } catch (const SolverError& error) {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    point = {md, friction, nan, nan, nan, nan, nan, error.what()};
+    return FailedPoint(md, friction, error.what());
+  } catch (const InputError& error) {  // the model at this depth (as a sweep's run: pipeline/sweep_run.hpp)
+    return FailedPoint(md, friction, error.what());
   }
   return point;
 }
@@ -186,32 +190,19 @@ std::vector<RoadmapPoint> RunRoadmap(const io::Case& c, const analyses::RoadmapS
   }
   std::vector<RoadmapPoint> points(tasks.size());
   const auto start = std::chrono::steady_clock::now();
-  std::atomic<std::size_t> next{0};
   std::mutex progress_mutex;
   int done = 0, failed = 0;
   double depth_total = 0.0, depth_done = 0.0;
   for (const Task& task : tasks) depth_total += task.md;
-  const int jobs = std::max(1, std::min(options.jobs, static_cast<int>(tasks.size())));
-  const int threads = AvailableThreads();
-  auto worker = [&]() {
-    ShareCoresAmongJobs(jobs, threads);
-    for (std::size_t k = next++; k < tasks.size(); k = next++) {
-      points[k] = RunRoadmapPoint(c, settings, tasks[k].md, tasks[k].friction);
-      if (!options.progress) continue;
-      const std::lock_guard<std::mutex> lock(progress_mutex);
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      failed += points[k].message.empty() ? 0 : 1;
-      depth_done += tasks[k].md;
-      options.progress(++done, static_cast<int>(tasks.size()), failed, elapsed * (depth_total - depth_done) / depth_done);
-    }
-  };
-  if (jobs == 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
-    for (std::thread& thread : pool) thread.join();
-  }
+  RunTasksOnThreads(options.jobs, tasks.size(), [&](std::size_t k) {
+    points[k] = RunRoadmapPoint(c, settings, tasks[k].md, tasks[k].friction);
+    if (!options.progress) return;
+    const std::lock_guard<std::mutex> lock(progress_mutex);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    failed += points[k].message.empty() ? 0 : 1;
+    depth_done += tasks[k].md;
+    options.progress(++done, static_cast<int>(tasks.size()), failed, elapsed * (depth_total - depth_done) / depth_done);
+  });
   return points;
 }
 

@@ -191,29 +191,42 @@ std::vector<SweepRow> SweepLedger::TakeRows() {
   return std::move(state_->rows);
 }
 
+void RunTasksOnThreads(int jobs, std::size_t count, const std::function<void(std::size_t k)>& task) {
+  const int used = std::max(1, std::min(jobs, static_cast<int>(count)));
+  const int threads = AvailableThreads();
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto worker = [&]() {
+    ShareCoresAmongJobs(used, threads);
+    try {
+      for (std::size_t k = next++; k < count; k = next++) task(k);
+    } catch (...) {
+      next = count;  // no more tasks handed out
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+  };
+  if (used == 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (int j = 0; j < used; ++j) pool.emplace_back(worker);
+    for (std::thread& thread : pool) thread.join();
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
 std::vector<SweepRow> RunSweep(const io::Case& base, const std::vector<SweepCombination>& combinations,
                                const SweepOptions& options) {
   SweepLedger ledger(combinations, options);
   const std::vector<int>& pending = ledger.pending();
   const std::string runs_directory = (std::filesystem::path(options.directory) / "runs").string();
-  std::atomic<std::size_t> next{0};
-  const int jobs = std::max(1, std::min(options.jobs, static_cast<int>(pending.size())));
-  const int threads = AvailableThreads();
-  auto worker = [&]() {
-    ShareCoresAmongJobs(jobs, threads);
-    for (std::size_t k = next++; k < pending.size(); k = next++) {
-      const int index = pending[k];
-      ledger.Record(RunSweepCase(base, index, combinations[static_cast<std::size_t>(index)], options.keep_runs,
-                                 runs_directory));
-    }
-  };
-  if (jobs == 1) {
-    worker();
-  } else {
-    std::vector<std::thread> threads;
-    for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
-    for (std::thread& thread : threads) thread.join();
-  }
+  RunTasksOnThreads(options.jobs, pending.size(), [&](std::size_t k) {
+    const int index = pending[k];
+    ledger.Record(RunSweepCase(base, index, combinations[static_cast<std::size_t>(index)], options.keep_runs,
+                               runs_directory));
+  });
   return ledger.TakeRows();
 }
 

@@ -81,6 +81,12 @@ int AvailableThreads();
 // Sets the calling thread's OpenMP threads to its share when `jobs` runs share `threads`.
 void ShareCoresAmongJobs(int jobs, int threads);
 
+// Calls task(k) for every k in [0, count), handed out one at a time in order to min(jobs, count)
+// threads (the calling one alone when that is 1), each with its share of the cores. An exception a
+// task throws stops the handing out; the first is rethrown here once every thread has stopped (an
+// exception must not leave a thread: it would end the process).
+void RunTasksOnThreads(int jobs, std::size_t count, const std::function<void(std::size_t k)>& task);
+
 // A row as JSON (SI, NaN as null) and back: the journal's lines and the MPI ranks' messages.
 nlohmann::json SweepRowToJson(const SweepRow& row);
 SweepRow SweepRowFromJson(const nlohmann::json& json);

@@ -3,6 +3,7 @@
 // message, and a resumed sweep ending with the table an uninterrupted one writes.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -203,6 +204,25 @@ TEST(Sweep, AResumedSweepEndsWithTheSameTable) {
   const std::vector<SweepCombination> other = SweepCombinations({ParseSweepAxis("operation.wob=25:65:20 kN"),
                                                                   ParseSweepAxis("operation.rpm=0,60")});
   EXPECT_THROW(RunSweep(base, other, {resumed.string(), 1, false, true, {}}), InputError);
+}
+
+}  // namespace
+}  // namespace drillflex::pipeline
+
+namespace drillflex::pipeline {
+namespace {
+
+// RunTasksOnThreads hands every task out once, and an exception a task throws on a worker thread comes
+// back to the caller instead of ending the process.
+TEST(RunTasksOnThreads, RunsEachTaskOnceAndRethrowsATasksException) {
+  std::vector<std::atomic<int>> runs(50);
+  RunTasksOnThreads(2, runs.size(), [&](std::size_t k) { ++runs[k]; });
+  for (const auto& count : runs) EXPECT_EQ(count.load(), 1);
+  EXPECT_THROW(RunTasksOnThreads(2, 50,
+                                 [](std::size_t k) {
+                                   if (k == 7) throw SolverError("task 7");
+                                 }),
+               SolverError);
 }
 
 }  // namespace
