@@ -49,8 +49,8 @@ model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& opera
 }
 
 model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operation) {
-  node.ExpectMap("the block {velocity, ramp} or {hook_load, ramp}");
-  node.AllowOnlyKeys({"velocity", "hook_load", "ramp"});
+  node.ExpectMap("the block {velocity, ramp, stiffness} or {hook_load, ramp}");
+  node.AllowOnlyKeys({"velocity", "hook_load", "ramp", "stiffness"});
   if (node.Has("velocity") && node.Has("hook_load")) {
     node.Fail("give the block either 'velocity' (+ pulling out, - running in) or 'hook_load', not both");
   }
@@ -59,7 +59,11 @@ model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operat
     block.mode = model::BlockMode::Velocity;
     block.setting.target = node.Quantity("velocity", Quantity::Velocity);
     block.setting.ramp_time = RampTime(node, model::kDefaultTopDriveRamp);
+    block.line_stiffness = node.OptionalPositive("stiffness", Quantity::Stiffness);
     return block;
+  }
+  if (node.Has("stiffness")) {
+    node.Child("stiffness").Fail("a hook load is a set force: 'stiffness' (the line's) goes with a block 'velocity'");
   }
   block.mode = model::BlockMode::HookLoad;
   if (node.Has("hook_load")) {

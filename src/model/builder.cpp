@@ -359,8 +359,12 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     }
     if (input.block) {
       block_element = static_cast<int>(elements.size());
-      elements.push_back(std::make_unique<BlockElement>(&body, top.second, position, frame, *input.block,
-                                                        stiffness[kX], damping[kX]));
+      // A line softer than the hold starts stretched to the hold's start force k_hold u0 (drives.hpp).
+      const double hold = stiffness[kX], line = input.block->line_stiffness.value_or(hold);
+      const double line_damping = 2.0 * kCouplingDampingRatio * std::sqrt(line * ElementInertia(body)[kX]);
+      const double preload = (hold - line) * input.block->start_top_displacement;
+      elements.push_back(std::make_unique<BlockElement>(&body, top.second, position, frame, *input.block, line,
+                                                        line_damping, preload));
     }
   }
 

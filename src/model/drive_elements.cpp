@@ -124,9 +124,9 @@ double TopDriveElement::DoPotentialEnergy(const ElementState& state) const {
 }
 
 BlockElement::BlockElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
-                           const BlockDrive& drive, double stiffness, double damping)
+                           const BlockDrive& drive, double stiffness, double damping, double preload)
     : ForceElement({body}), node_(node), position_(position), axis_(frame.col(0)), drive_(drive),
-      stiffness_(stiffness), damping_(damping) {
+      stiffness_(stiffness), damping_(damping), preload_(preload) {
   CheckNode(body, node, "BlockElement");
   if (drive.mode == BlockMode::Velocity && !(stiffness > 0.0 && damping >= 0.0)) {
     throw LogicError("BlockElement: a block velocity needs a positive stiffness and a damping ≥ 0");
@@ -164,7 +164,7 @@ double BlockElement::HookLoad(const ElementState& state) const {
 double BlockElement::SpringForce(const NodeMotion& motion, double t) const {
   const double strain = axis_.dot(motion.position - position_) - drive_.setting.Integral(t);
   const double rate = axis_.dot(motion.velocity) - drive_.setting.Value(t);
-  return stiffness_ * strain + damping_ * rate;
+  return stiffness_ * strain + damping_ * rate + preload_;
 }
 
 double BlockElement::DoPotentialEnergy(const ElementState& state) const {
@@ -174,7 +174,7 @@ double BlockElement::DoPotentialEnergy(const ElementState& state) const {
     return -state.load_factor * drive_.setting.Value(state.time) * axis_.dot(position - position_);
   }
   const double strain = axis_.dot(position - position_) - drive_.setting.Integral(state.time);
-  return 0.5 * stiffness_ * strain * strain;
+  return 0.5 * stiffness_ * strain * strain + preload_ * strain;
 }
 
 }  // namespace drillflex::model

@@ -68,9 +68,11 @@ class TopDriveElement : public ForceElement {
 
 class BlockElement : public ForceElement {
  public:
-  // `position`, `frame`: the node's reference place and frame (global).
+  // `position`, `frame`: the node's reference place and frame (global). Velocity: the line's
+  // `stiffness` and `damping`, and its `preload` (N, tension), the force it carries where the top
+  // is where the block has taken it: k e + c ė + preload, e the top's axial lag behind the block.
   BlockElement(const Body* body, int node, const Vec3& position, const Mat3& frame, const BlockDrive& drive,
-               double stiffness, double damping);
+               double stiffness, double damping, double preload = 0.0);
   std::string Describe() const override;
   const BlockDrive& drive() const { return drive_; }
   // The axial force the block puts on the string, N (tension: pulling up-hole is positive).
@@ -81,12 +83,12 @@ class BlockElement : public ForceElement {
   double DoPotentialEnergy(const ElementState& state) const override;
 
  private:
-  // k e + c ė of the velocity drive's spring (tension), N.
+  // k e + c ė + preload of the velocity drive's line (tension), N.
   double SpringForce(const NodeMotion& motion, double t) const;
   int node_;
   Vec3 position_, axis_;
   BlockDrive drive_;
-  double stiffness_, damping_;
+  double stiffness_, damping_, preload_;
 };
 
 }  // namespace drillflex::model

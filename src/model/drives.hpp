@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 
 namespace drillflex::model {
 
@@ -51,6 +52,14 @@ struct BlockDrive {
   // The target is operation.hook_load, the hook's tension at the surface: the block then holds the
   // model's top with it less the string above's weight (analyses::TransientModelInput).
   bool at_surface = false;
+  // Velocity only. The axial stiffness of what lies between the moving block and the top, N/m: the
+  // drill line and derrick of a rig, the screw, frame and load cell of a test rig. Unset: as stiff as
+  // the hook support the block replaces (the top follows the block to within its force over ~1e10 N/m).
+  std::optional<double> line_stiffness = std::nullopt;
+  // The top's axial displacement from its reference at the start equilibrium, m (up-hole +;
+  // analyses::PlaceBlockAtStart): a line softer than the hold starts stretched by as much as the
+  // hold was, so the top carries the same force at t = 0 and nothing jumps.
+  double start_top_displacement = 0.0;
 };
 
 // The default ramp of a top-drive speed when the case gives none, s.

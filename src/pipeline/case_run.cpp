@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analyses/bit_bottom_start.hpp"
+#include "analyses/block_start.hpp"
 #include "core/error.hpp"
 #include "pipeline/summary.hpp"
 
@@ -89,10 +90,10 @@ TransientSetup PrepareTransient(const io::Case& c, CaseModel& case_model, const 
     options.observer.note(
         fmt::format("transient: the annulus fluid's C_m and C_v at {:.4g} Hz", fluid_frequency / (2.0 * kPi)));
   }
-  model::BuiltModel moving = model::BuildSystemModel(
-      analyses::PlaceBottomAtStart(analyses::TransientModelInput(input, settings, fluid_frequency), case_model.built,
-                                   start),
-      *case_model.cache);
+  model::ModelInput moving_input = analyses::TransientModelInput(input, settings, fluid_frequency);
+  moving_input = analyses::PlaceBottomAtStart(std::move(moving_input), case_model.built, start);
+  moving_input = analyses::PlaceBlockAtStart(std::move(moving_input), case_model.built, start);
+  model::BuiltModel moving = model::BuildSystemModel(moving_input, *case_model.cache);
   return TransientSetup{std::move(settings), fluid_frequency, std::move(start), std::move(moving)};
 }
 

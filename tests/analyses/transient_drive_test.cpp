@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analyses/block_start.hpp"
 #include "analyses/transient_analysis.hpp"
 #include "analyses_test_support.hpp"
 #include "cms/reduction_cache.hpp"
@@ -123,6 +124,43 @@ TEST(TransientDrive, CompressiveHookLoadShortensTheRodByFLOverEA) {
   std::printf("[ measure  ] compressive hook load: top travel %.6e m against -F L/EA = %.6e m (%+.2e)\n",
               run.top_travel, expected, run.top_travel / expected - 1.0);
   EXPECT_NEAR(run.top_travel, expected, 1e-3 * std::abs(expected));
+}
+
+// The block pulling the rod (held axially at the bit) out through a line ten times softer than the
+// rod, EA/L = 1.88e8 N/m: line and rod in series, the hook load is the travel ∫ v dt over
+// 1/k_line + L/EA, and the top has moved by that force's F L/EA. 1 mm/s reached in 0.5 s and held
+// to 1 s: 0.75 mm of travel, 12.8 kN; quasi-static as in the compression test above (the rod's
+// first axial mode with the line at its top, ~260 Hz, against a 0.5 s ramp). Tolerance 1e-3.
+TEST(TransientDrive, BlockThroughASoftLinePullsWithTheSeriesStiffness) {
+  const double velocity = 1e-3, ramp = 0.5;
+  const double rod_stiffness = 2.1e11 * testing::RodArea() / kRodLength, line_stiffness = 0.1 * rod_stiffness;
+  model::BlockDrive block{model::BlockMode::Velocity, {velocity, ramp}};
+  block.line_stiffness = line_stiffness;
+  const DrivenRun run = RunDriven(std::nullopt, block, 1.0, true);
+  const double travel = velocity * (1.0 - 0.5 * ramp);
+  const double force = travel / (1.0 / line_stiffness + 1.0 / rod_stiffness);
+  std::printf("[ measure  ] block through a soft line: hook load %.6e N against %.6e N (%+.2e), top travel %.6e m "
+              "against F L/EA = %.6e m (%+.2e)\n",
+              run.At(1.0).hook_load, force, run.At(1.0).hook_load / force - 1.0, run.top_travel, force / rod_stiffness,
+              run.top_travel * rod_stiffness / force - 1.0);
+  EXPECT_NEAR(run.At(1.0).hook_load, force, 1e-3 * force);
+  EXPECT_NEAR(run.top_travel, force / rod_stiffness, 1e-3 * force / rod_stiffness);
+}
+
+// PlaceBlockAtStart reads the top's axial displacement in the start positions: the rod moved up-hole
+// by 0.3 mm as a whole. Without a line stiffness of its own the block is left as it was.
+TEST(TransientDrive, ABlockLineStartsAtTheTopsDisplacement) {
+  cms::ReductionCache cache;
+  model::ModelInput input = testing::RodInput(2, 2.1e11, kDensity, 4, 4);
+  const model::BuiltModel start = model::BuildSystemModel(input, cache);
+  VecX dv = VecX::Zero(start.system.num_velocities());
+  for (const model::Body& body : start.system.bodies()) dv[body.v_offset] = 3e-4;
+  const VecX q0 = start.system.Increment(start.system.ReferencePositions(), dv);
+  model::BlockDrive block{model::BlockMode::Velocity, {0.1, 1.0}};
+  input.block = block;
+  EXPECT_EQ(PlaceBlockAtStart(input, start, q0).block->start_top_displacement, 0.0);
+  input.block->line_stiffness = 1e6;
+  EXPECT_NEAR(PlaceBlockAtStart(input, start, q0).block->start_top_displacement, 3e-4, 1e-12);
 }
 
 }  // namespace

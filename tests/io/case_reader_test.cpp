@@ -248,6 +248,11 @@ TEST(CaseReader, TransientDrives) {
   ASSERT_TRUE(speed.block);
   EXPECT_EQ(speed.block->mode, model::BlockMode::Velocity);
   EXPECT_NEAR(speed.block->setting.target, -1.5 * kFt, 1e-12);  // running in at 1.5 ft/s
+  EXPECT_FALSE(speed.block->line_stiffness);                    // as stiff as the hold it replaces
+  // The line between block and top: lbf/in in field units.
+  const auto soft = transient("{block: {velocity: -1.5, stiffness: 2000}}");
+  ASSERT_TRUE(soft.block && soft.block->line_stiffness);
+  EXPECT_NEAR(*soft.block->line_stiffness, 2000 * kLbf / 0.0254, 1e-6);
   const auto torque = transient("{top_drive: {torque: 15000}, block: {}}");
   EXPECT_EQ(torque.top_drive->mode, model::TopDriveMode::Torque);
   EXPECT_NEAR(torque.top_drive->setting.target, 15000 * kFt * kLbf, 1e-9);
@@ -483,6 +488,12 @@ INSTANTIATE_TEST_SUITE_P(
                      4, "analyses.transient.top_drive.ramp", "must not be negative"},
         RejectedCase{"block without a setting", std::string(kGoodString) + "analyses:\n  transient: {block: {}}\n",
                      4, "analyses.transient.block", "neither 'velocity' nor 'hook_load'"},
+        RejectedCase{"block line of no stiffness",
+                     std::string(kGoodString) + "analyses:\n  transient: {block: {velocity: 1, stiffness: 0}}\n", 4,
+                     "analyses.transient.block.stiffness", "greater than zero"},
+        RejectedCase{"block line with a hook load",
+                     std::string(kGoodString) + "analyses:\n  transient: {block: {hook_load: 10, stiffness: 1e5}}\n", 4,
+                     "analyses.transient.block.stiffness", "goes with a block 'velocity'"},
         RejectedCase{"unknown drive key", std::string(kGoodString) + "analyses:\n  transient: {top_drive: {rpms: 60}}\n",
                      4, "analyses.transient.top_drive.rpms", "did you mean 'rpm'"},
         RejectedCase{"string longer than well", kWellHead + "  hole: 12.25\nstring:\n  - {type: pipe, od: 5, id: 4, length: 2000}\n",

@@ -124,8 +124,12 @@ TEST(TopDriveElement, TorqueDriveAppliesItsTorqueWithAnExactTangent) {
 TEST(BlockElement, VelocityAndHookLoadJacobiansMatchCentralDifferences) {
   cms::ReductionCache cache;
   // The hook load in tension and, ramped, in compression (a negative hook load).
+  // And a velocity through a line of its own stiffness, started stretched (a preload).
+  BlockDrive line{BlockMode::Velocity, {0.5, 1.0}};
+  line.line_stiffness = 3e7;
+  line.start_top_displacement = 1e-8;  // m: the hold carried ~15 kN
   for (const BlockDrive block : {BlockDrive{BlockMode::Velocity, {0.5, 1.0}}, BlockDrive{BlockMode::HookLoad, {2e5, 0.0}},
-                                 BlockDrive{BlockMode::HookLoad, {-2e5, 0.3}}}) {
+                                 BlockDrive{BlockMode::HookLoad, {-2e5, 0.3}}, line}) {
     const BuiltModel built = DrivenRod(cache, std::nullopt, block);
     ASSERT_GE(built.block_element, 0);
     const ElementProblem problem(built.system, built.block_element);
@@ -165,6 +169,31 @@ TEST(BlockElement, HookLoadOfATopBehindTheBlock) {
     const double expected = kSupportStiffnessFactor * 100.0 * axial * behind;
     EXPECT_NEAR(element.HookLoad(problem.State(t, q, v)), expected, 1e-6 * std::max(expected, 1.0));
   }
+}
+
+// A line softer than the hold starts where the hold left the top: displaced u0 up-hole at t = 0
+// it carries the hold's k_hold u0 (so nothing jumps when the block takes over), and a further
+// travel δ changes that by the line's own k_line δ, not the hold's.
+TEST(BlockElement, ASofterLineStartsWithTheHoldsForce) {
+  cms::ReductionCache cache;
+  const double start = 1e-8, line_stiffness = 3e7;  // m (the hold carried ~15 kN), N/m
+  BlockDrive block{BlockMode::Velocity, {0.5, 1.0}};
+  block.line_stiffness = line_stiffness;
+  block.start_top_displacement = start;
+  const BuiltModel built = DrivenRod(cache, std::nullopt, block);
+  const auto& element = static_cast<const BlockElement&>(*built.system.elements()[built.block_element]);
+  const ElementProblem problem(built.system, built.block_element);
+  const double axial = 2.1e11 * kPi * 0.0762 * 0.0762 / 4.0 / (5.08 / 8.0);
+  const double hold = kSupportStiffnessFactor * 100.0 * axial;  // N/m, the hold the line replaces
+  const auto hook_load = [&](double travel) {  // the rod moved up-hole by `travel`, at rest, t = 0
+    VecX dv = VecX::Zero(built.system.num_velocities());
+    for (const Body& body : built.system.bodies()) dv[body.v_offset] = travel;
+    const VecX q = built.system.Increment(built.system.ReferencePositions(), dv);
+    return element.HookLoad(problem.State(0.0, q, VecX::Zero(built.system.num_velocities())));
+  };
+  EXPECT_NEAR(hook_load(start), -hold * start, 1e-9 * hold * start);
+  const double further = 1e-4;
+  EXPECT_NEAR(hook_load(start + further) - hook_load(start), -line_stiffness * further, 1e-6 * line_stiffness * further);
 }
 
 }  // namespace
