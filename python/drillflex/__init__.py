@@ -11,10 +11,11 @@ from drillflex.case import Case
 from drillflex.errors import ConvergenceError, DrillflexError, InputError, UnitError
 from drillflex.results import (BucklingResult, ModesResult, Record, StaticResult, TransientResult,
                                VibrationResult)
+from drillflex.roadmap import RoadmapResult, roadmap
 from drillflex.runs import buckling, modes, run, static, transient, vibration
 
 __all__ = [
-    "Case", "units", "static", "modes", "vibration", "buckling", "transient", "run",
-    "StaticResult", "ModesResult", "VibrationResult", "BucklingResult", "TransientResult", "Record",
+    "Case", "units", "static", "modes", "vibration", "buckling", "transient", "run", "roadmap",
+    "StaticResult", "ModesResult", "VibrationResult", "BucklingResult", "TransientResult", "RoadmapResult", "Record",
     "DrillflexError", "InputError", "UnitError", "ConvergenceError",
 ]

@@ -37,6 +37,8 @@ void BindUnits(py::module_& m);
 void BindCase(py::module_& m);
 // run(case, analyses, progress) and the RunHandle's summaries and results.json.
 void BindRun(py::module_& m);
+// roadmap(case, jobs, progress): the torque-and-drag roadmap (roadmap.cpp).
+void BindRoadmap(py::module_& m);
 // The RunHandle's typed results, one function per analysis (result_*.cpp).
 void BindStaticResult(py::class_<RunHandle>& run);
 void BindModesResult(py::class_<RunHandle>& run);

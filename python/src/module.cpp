@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
   drillflex::python::BindUnits(m);
   drillflex::python::BindCase(m);
   drillflex::python::BindRun(m);
+  drillflex::python::BindRoadmap(m);
 }
