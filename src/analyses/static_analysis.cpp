@@ -225,34 +225,14 @@ StaticResult SolveEquilibrium(const model::BuiltModel& built, const StaticSettin
   return result;
 }
 
-// The largest residual (a fraction of the model's force scale, its loads) a converged equilibrium may
-// keep. A solver also stops where the state no longer changes (steps below the increment tolerance,
-// 1e-10 m, or the residual's round-off floor): with couplings so stiff that such a step still moves
-// more force than the loads (bodies of millimetres: c·EA/ℓ ~ 1e16 N/m), that state is not an
-// equilibrium of the loads, and its reactions and stresses would be noise.
-constexpr double kUnresolvedForceFraction = 1e-3;
-
-// Throws SolverError when a converged `result` leaves more than kUnresolvedForceFraction of the force
-// scale unbalanced, naming the shortest body (the stiffest coupling).
-void CheckForcesResolved(const model::BuiltModel& built, const StaticResult& result) {
-  const double scale = built.system.force_scale();
-  if (!result.converged || !(scale > 0.0) || result.residual_norm <= kUnresolvedForceFraction * scale) return;
-  const model::Body* shortest = nullptr;
-  double shortest_length = 0.0;
-  for (const model::Body& body : built.system.bodies()) {
-    const double length = body.reduced->node_positions.back().x() - body.reduced->node_positions.front().x();
-    if (!shortest || length < shortest_length) {
-      shortest = &body;
-      shortest_length = length;
-    }
-  }
-  throw SolverError(fmt::format(
-      "the equilibrium's forces are not resolved: the solver stopped where the state no longer changes with "
-      "|R| = {:.4g} N unbalanced, {:.3g} times the model's loads ({:.4g} N); its stiffest couplings are beyond "
-      "double precision (the shortest body, {:.4g} m long at {:.6g} m from the bit): lengthen the short "
-      "components",
-      result.residual_norm, result.residual_norm / scale, scale, shortest_length, shortest ? shortest->s_start : 0.0));
-}
+// The residual (a fraction of the model's force scale, its loads) above which a converged equilibrium
+// is reported with a warning, and above which it is no equilibrium at all. A solver also stops where
+// the state no longer changes (steps below the increment tolerance, 1e-10 m, or the residual's
+// round-off floor): with couplings so stiff that such a step still moves more force than the loads
+// (bodies of millimetres, or a modulus typed 1e9 times too large: c·EA/ℓ ~ 1e16 N/m), that state is
+// not an equilibrium of the loads, and its reactions and stresses would be noise.
+constexpr double kLooselyResolvedFraction = 1e-3;
+constexpr double kUnresolvedFraction = 1e-2;
 
 // Fills in the results along the string, the reactions, the contacts and the bit.
 StaticResult WithResults(const model::BuiltModel& built, StaticResult result) {
@@ -266,6 +246,35 @@ StaticResult WithResults(const model::BuiltModel& built, StaticResult result) {
 }
 
 }  // namespace
+
+void CheckForcesResolved(const model::BuiltModel& built, StaticResult& result) {
+  const double scale = built.system.force_scale();
+  if (!result.converged || !(scale > 0.0)) return;
+  const double fraction = result.residual_norm / scale;
+  if (fraction <= kLooselyResolvedFraction) return;
+  if (fraction <= kUnresolvedFraction) {
+    result.warnings.push_back(fmt::format("the equilibrium balances the loads to {:.2g} % (|R| = {:.4g} N of {:.4g} N): "
+                                          "its reactions and forces are good to about that",
+                                          100.0 * fraction, result.residual_norm, scale));
+    return;
+  }
+  const model::Body* stiffest = nullptr;
+  double length = 0.0;
+  for (const model::Body& body : built.system.bodies()) {
+    const double l = body.reduced->node_positions.back().x() - body.reduced->node_positions.front().x();
+    if (!stiffest || body.axial_rigidity / l > stiffest->axial_rigidity / length) {
+      stiffest = &body;
+      length = l;
+    }
+  }
+  throw SolverError(fmt::format(
+      "the equilibrium's forces are not resolved: the solver stopped where the state no longer changes with "
+      "|R| = {:.4g} N unbalanced, {:.3g} times the model's loads ({:.4g} N); its stiffest couplings are beyond "
+      "double precision (the stiffest body, EA/l = {:.3g} N/m: {:.4g} m long at {:.6g} m from the bit, E = {:.4g} Pa): "
+      "a component too short, or a modulus too large",
+      result.residual_norm, fraction, scale, stiffest->axial_rigidity / length, length, stiffest->s_start,
+      stiffest->reduced->spec.material.youngs_modulus));
+}
 
 StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start) {
   StaticResult result = WithResults(built, SolveEquilibrium(built, settings, start));

@@ -125,6 +125,13 @@ std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model,
                                                 std::span<const int> station_indices);
 std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q);
 
+// A converged `result` that leaves more than 1 % of the model's force scale (its loads) unbalanced is
+// no equilibrium of them (a solver stops where the state no longer changes: with couplings so stiff
+// that the residual's round-off floor exceeds the loads): throws SolverError naming the stiffest body
+// (largest EA/ℓ: a component too short, or a modulus too large). Above 0.1 % it adds a warning saying
+// how well the result balances. Every static solve passes its result through it.
+void CheckForcesResolved(const model::BuiltModel& built, StaticResult& result);
+
 // Newton options recommended for this model (model-orientation notes): increment tolerance 1e-10,
 // no line search (stiff couplings), load stepping as the safeguard.
 solvers::NewtonOptions DefaultNewtonOptions();
