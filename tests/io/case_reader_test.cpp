@@ -383,6 +383,13 @@ INSTANTIATE_TEST_SUITE_P(
     CaseReader, RejectedInput,
     ::testing::Values(
         RejectedCase{"unknown key", std::string(kGoodString) + "modle: {}\n", 3, "modle", "did you mean 'model'"},
+        // A modulus or density in the other system's unit: 30e6 read as Pa, 207e9 read as psi, 65.5 (ppg) as kg/m3.
+        RejectedCase{"modulus in psi read as Pa", "materials:\n  steel: {E: 30e6, nu: 0.3, density: 7850}\n", 2,
+                     "materials.steel.E", "between 0.1 and 1500 GPa (steel's is 207 GPa, 30e6 psi), got 3e+07 Pa"},
+        RejectedCase{"modulus in Pa read as psi", "units: field\nmaterials:\n  steel: {E: 207e9, nu: 0.3, density: 65.5}\n", 3,
+                     "materials.steel.E", "got 1.427e+15 Pa (2.07e+11 psi)"},
+        RejectedCase{"density in ppg read as kg/m3", "materials:\n  steel: {E: 207e9, nu: 0.3, density: 65.5}\n", 2,
+                     "materials.steel.density", "between 500 and 25000 kg/m3"},
         RejectedCase{"zero friction velocity", std::string(kGoodString) + "model:\n  contact:\n    friction_velocity: 0 m/s\n",
                      5, "model.contact.friction_velocity", "greater than zero"},
         RejectedCase{"friction velocity not a velocity", std::string(kGoodString) + "model:\n  contact: {friction_velocity: 1 rpm}\n",

@@ -2,8 +2,7 @@
 // collars of 0.1 mm (a length typed in the wrong unit) under 45 m of pipe in a straight 30° hole:
 // couplings of c·EA/ℓ ~ 1e16 N/m, so that the solver's last steps (below 1e-10 m) still move
 // 1e7 N, 2 000 times the string's weight. That stop must fail with a message naming the stiffest
-// body, not pass as "converged" with its reactions of meganewtons; so must a modulus typed 1e9 times
-// too large. The same string with collars of 5 cm balances: the top carries W cos I (no fluid; the
+// body, not pass as "converged" with its reactions of meganewtons. The same string with collars of 5 cm balances: the top carries W cos I (no fluid; the
 // bit holds the string sideways only).
 #include <gtest/gtest.h>
 
@@ -23,20 +22,18 @@ namespace {
 constexpr double kSteelDensity = 7850.0;  // kg/m³ (fe/material.hpp built-in steel)
 constexpr double kGravity = 9.81;         // m/s² (the case's default with a well)
 
-io::Case ShortCollars(double collar_length, double modulus = 2.1e11) {
+io::Case ShortCollars(double collar_length) {
   return io::ParseCase(fmt::format(R"(name: short collars
 units: SI
-materials:
-  collar steel: {{E: {}, nu: 0.3, density: 7850}}
 well:
   survey: [[0, 30, 0], [100, 30, 0]]
   hole: 0.2159
   bit_md: 90
 string:
-  - {{type: collar, od: 0.1715, id: 0.0714, length: {}, count: 3, material: collar steel}}
+  - {{type: collar, od: 0.1715, id: 0.0714, length: {}, count: 3}}
   - {{type: pipe, od: 0.127, id: 0.1086, length: 9, count: 5}}
 )",
-                                   modulus, collar_length),
+                                   collar_length),
                        "short.yaml");
 }
 
@@ -50,17 +47,6 @@ TEST(UnresolvedForces, CollarsOfATenthOfAMillimetreAreASolverErrorNamingTheStiff
     const std::string message = error.what();
     EXPECT_NE(message.find("forces are not resolved"), std::string::npos) << message;
     EXPECT_NE(message.find("0.0003 m long at 0 m from the bit"), std::string::npos) << message;
-  }
-}
-
-TEST(UnresolvedForces, AModulusTypedABillionTimesTooLargeIsASolverErrorNamingIt) {
-  try {
-    RunCase(ShortCollars(9.0, 2.1e20), AnalysisRequest::Only(Analysis::Static));
-    FAIL() << "a static of collars with E = 2.1e20 Pa passed as converged";
-  } catch (const SolverError& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find("forces are not resolved"), std::string::npos) << message;
-    EXPECT_NE(message.find("E = 2.1e+20 Pa"), std::string::npos) << message;
   }
 }
 
