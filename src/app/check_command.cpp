@@ -122,9 +122,12 @@ std::string DrivesText(const analyses::TransientSettings& t, const Printer& show
   }
   if (t.block) {
     const bool velocity = t.block->mode == model::BlockMode::Velocity;
-    text += fmt::format("; block {}{}{}", velocity ? "" : "hook load ",
+    text += fmt::format("; block {}{}{}{}", velocity ? "" : "hook load ",
                         show(t.block->setting.target, velocity ? Quantity::Velocity : Quantity::Force),
-                        ramp(t.block->setting));
+                        ramp(t.block->setting),
+                        t.block->line_stiffness
+                            ? fmt::format(" through a line of {}", show(*t.block->line_stiffness, Quantity::Stiffness))
+                            : std::string());
   }
   return text;
 }

@@ -211,6 +211,13 @@ TEST(Cli, CheckListsTheTransientsDrives) {
   const RunResult result = RunDrillflex("check " + path.string());
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_THAT(result.output, HasSubstr("transient (2 s; top drive 60 rpm in 0.5 s; block hook load 2.5e+04 lbf)"));
+  // A velocity block through a line of its own stiffness (lbf/in in field units).
+  const fs::path line = WriteCase("check-block-line", std::string(kCollarYaml) + R"(analyses:
+  transient: {duration: 2 s, block: {velocity: 0.5, ramp: 1 s, stiffness: 20000}}
+)");
+  const RunResult with_line = RunDrillflex("check " + line.string());
+  ASSERT_EQ(with_line.status, 0) << with_line.output;
+  EXPECT_THAT(with_line.output, HasSubstr("block 0.5 ft/s in 1 s through a line of 2e+04 lbf/in"));
 }
 
 TEST(Cli, RunWithATransientRunsItAfterTheStatics) {
