@@ -36,7 +36,7 @@ struct ScaledBessel {
   Complex i0, i1, k0, k1;
 };
 
-inline ScaledBessel CalcScaledBessel(Complex z) {
+inline ScaledBessel ComputeScaledBessel(Complex z) {
   const double pi = 3.14159265358979323846;
   auto series = [&](int n, double sign) {
     const double mu = 4.0 * n * n;
@@ -82,7 +82,7 @@ inline Complex ForceRatio(double alpha, double stokes) {
   };
   auto columns = [&](double x) {
     const Complex z = beta * x;
-    const ScaledBessel s = CalcScaledBessel(z);
+    const ScaledBessel s = ComputeScaledBessel(z);
     const Complex ie = std::exp(beta * (x - alpha)), ke = std::exp(-beta * (x - 1.0));
     const Complex i1 = ie * s.i1, i0 = ie * s.i0, k1 = ke * s.k1, k0 = ke * s.k0;
     const Complex di = i0 - i1 / z, dk = -k0 - k1 / z;

@@ -83,7 +83,7 @@ TEST(V5FluidFrequency, TestBesselAndChenEvaluationHold) {
        {0.27243987585041779, -0.033150107584077799}, {0.27859154981043572, -0.035489105155633059}},
   };
   for (const Row& row : rows) {
-    const chen::ScaledBessel b = chen::CalcScaledBessel(row.z);
+    const chen::ScaledBessel b = chen::ComputeScaledBessel(row.z);
     EXPECT_LT(std::abs(b.i0 / row.i0 - 1.0), 1e-13);
     EXPECT_LT(std::abs(b.i1 / row.i1 - 1.0), 1e-13);
     EXPECT_LT(std::abs(b.k0 / row.k0 - 1.0), 1e-13);

@@ -40,7 +40,7 @@ constexpr double kNodeLength = 2.5 * 12.0 * kInch;                             /
 double WhirlingMassPerLength() {
   const double a = kCollarRadius * kInch, b = kHoleRadius * kInch, bore = 0.5 * kBore * kInch;
   const fe::AnnulusFluidCoefficients c =
-      fe::CalcAnnulusFluidCoefficients(a, b, 2.0 * kPi * kFluidFrequency, kViscosity / kMud);
+      fe::ComputeAnnulusFluidCoefficients(a, b, 2.0 * kPi * kFluidFrequency, kViscosity / kMud);
   return kSteel * kPi * (a * a - bore * bore) + kMud * kPi * bore * bore + c.added_mass * kMud * kPi * a * a;
 }
 

@@ -149,7 +149,7 @@ GyroscopicModeSolver::GyroscopicModeSolver(const model::SystemModel& model, cons
   d.mass = Project(d.sweep.system.mass, d.basis);
   d.mass = 0.5 * (d.mass + d.mass.transpose()).eval();
   d.damping = Project(d.sweep.system.damping, d.basis);
-  d.gyroscopic = Project(model::CalcGyroscopicMatrix(model, q), d.basis);
+  d.gyroscopic = Project(model::ComputeGyroscopicMatrix(model, q), d.basis);
   for (std::size_t g = 0; g < d.sweep.annulus_radii.size(); ++g) d.annulus.push_back(Project(d.sweep.terms[g], d.basis));
   d.poses = model.Poses(q);
   d.stations = StringStations(model);

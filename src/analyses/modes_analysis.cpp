@@ -102,7 +102,7 @@ void SetFrequencyAndDamping(const model::SystemModel& model, const VecX& q, cons
   auto fluid_terms = [&](double omega) {
     model::NodeFluidTerms sum;
     for (std::size_t k = 0; k < squares.size(); ++k) {
-      const model::NodeFluidTerms terms = model::CalcNodeFluidTerms(*fluid, k, omega);
+      const model::NodeFluidTerms terms = model::ComputeNodeFluidTerms(*fluid, k, omega);
       sum.mass += terms.mass * squares[k];
       sum.damping += terms.damping * squares[k];
     }
@@ -308,7 +308,7 @@ ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const M
   const LinearizedSystem system = Linearize(model, q, load_factor);
   // The eigenproblem's mass: the steel and the fluid at its inviscid (or given) added mass.
   LinearizedSystem solved = system;
-  if (fluid && !fluid->empty()) solved.mass += model::CalcLateralFluidMatrices(model, *fluid, q, 0.0).mass;
+  if (fluid && !fluid->empty()) solved.mass += model::ComputeLateralFluidMatrices(model, *fluid, q, 0.0).mass;
   const int n = model.num_velocities();
   const auto poses = model.Poses(q);
   const std::vector<Station> stations = StringStations(model);

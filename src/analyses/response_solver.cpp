@@ -19,8 +19,8 @@ SweepSystem AssembleSweepSystem(const model::SystemModel& model, const model::La
   const LinearizedSystem linear = Linearize(model, q, 1.0);
   sweep.system = {linear.mass, linear.damping, SparseMat(), linear.stiffness};
   if (!fluid.empty()) {
-    sweep.system.mass += model::CalcLateralFluidMatrices(model, fluid, q, 0.0, model::FluidPart::Internal).mass;
-    for (model::AnnulusGroup& group : model::CalcAnnulusGroups(model, fluid, q)) {
+    sweep.system.mass += model::ComputeLateralFluidMatrices(model, fluid, q, 0.0, model::FluidPart::Internal).mass;
+    for (model::AnnulusGroup& group : model::ComputeAnnulusGroups(model, fluid, q)) {
       sweep.annulus_radii.emplace_back(group.rod_radius, group.hole_radius);
       sweep.terms.push_back(std::move(group.unit_mass));
     }
@@ -40,7 +40,7 @@ std::vector<solvers::FrequencyTermCoefficients> SweepTermCoefficients(const Swee
       c.added_mass = sweep.fluid->added_mass_override;
     } else {
       const bool viscous = sweep.fluid->frequency_dependent() && frequency > 0.0;
-      c = fe::CalcAnnulusFluidCoefficients(rod_radius, hole_radius, viscous ? frequency : 0.0,
+      c = fe::ComputeAnnulusFluidCoefficients(rod_radius, hole_radius, viscous ? frequency : 0.0,
                                            viscous ? sweep.fluid->kinematic_viscosity : 0.0);
     }
     // m_a = C_m U_g, c_a = C_v ω U_g (model/lateral_fluid.hpp).

@@ -57,7 +57,7 @@ std::complex<double> ForceRatioScaledBasis(double alpha, double stokes_number, C
   Matrix4c matrix;
   auto row_pair = [&](int row, double x) {
     const Complex z = beta * x;
-    const ScaledModifiedBessel b = CalcScaledModifiedBessel(z);
+    const ScaledModifiedBessel b = ComputeScaledModifiedBessel(z);
     const Complex i_factor = std::exp(beta * (x - alpha));  // e^{−βα} e^{βx}
     const Complex k_factor = std::exp(-beta * (x - 1.0));   // e^{β} e^{−βx}
     // I₁′ = I₀ − I₁/z, K₁′ = −K₀ − K₁/z (A&S 9.6.27); d/dx = β d/dz.
@@ -69,7 +69,7 @@ std::complex<double> ForceRatioScaledBasis(double alpha, double stokes_number, C
   row_pair(2, alpha);
   const Vector4c c = SolveBoundaryConditions(matrix, alpha, stokes_number);
   // w″ = (1 + 1/z²) w − w′/z for w = I₁, K₁ (the modified Bessel equation, A&S 9.6.1, ν = 1).
-  const ScaledModifiedBessel b = CalcScaledModifiedBessel(beta);
+  const ScaledModifiedBessel b = ComputeScaledModifiedBessel(beta);
   const Complex inv = 1.0 / beta;
   const Complex di1 = b.i0 - b.i1 * inv, dk1 = -b.k0 - b.k1 * inv;
   const Complex d2i1 = (1.0 + inv * inv) * b.i1 - di1 * inv;
@@ -89,7 +89,7 @@ std::complex<double> ForceRatioSmallArgumentBasis(double alpha, double stokes_nu
     Complex g, dg, p, dp;
   };
   auto remainders = [](Complex z) {
-    const BesselRemainders r = CalcSmallArgumentBesselRemainders(z);
+    const BesselRemainders r = ComputeSmallArgumentBesselRemainders(z);
     return Remainder{r.i1_less_linear, r.i0_less_one - r.i1_less_linear / z, r.k1_less_pole,
                      -r.k0 - r.k1_less_pole / z};
   };
@@ -152,16 +152,16 @@ std::complex<double> UnconfinedForceRatio(double stokes_number) {
     throw LogicError("UnconfinedForceRatio: needs a finite Stokes number S > 0");
   }
   const Complex beta = std::sqrt(stokes_number) * std::polar(1.0, kPi / 4.0);
-  const ScaledModifiedBessel b = CalcScaledModifiedBessel(beta);
+  const ScaledModifiedBessel b = ComputeScaledModifiedBessel(beta);
   return 1.0 + 4.0 * b.k1 / (beta * b.k0);  // the scale factors e^{β} cancel
 }
 
-AnnulusFluidCoefficients CalcAnnulusFluidCoefficients(double rod_radius, double hole_radius,
+AnnulusFluidCoefficients ComputeAnnulusFluidCoefficients(double rod_radius, double hole_radius,
                                                       double circular_frequency,
                                                       double kinematic_viscosity) {
   if (!(rod_radius > 0.0) || !(hole_radius > rod_radius) || !(circular_frequency >= 0.0) ||
       !(kinematic_viscosity >= 0.0) || !std::isfinite(hole_radius)) {
-    throw LogicError("CalcAnnulusFluidCoefficients: needs 0 < a < b, ω ≥ 0 and ν ≥ 0 (a = " +
+    throw LogicError("ComputeAnnulusFluidCoefficients: needs 0 < a < b, ω ≥ 0 and ν ≥ 0 (a = " +
                      std::to_string(rod_radius) + " m, b = " + std::to_string(hole_radius) +
                      " m, ω = " + std::to_string(circular_frequency) + " rad/s, ν = " +
                      std::to_string(kinematic_viscosity) + " m²/s)");
@@ -170,7 +170,7 @@ AnnulusFluidCoefficients CalcAnnulusFluidCoefficients(double rod_radius, double 
   if (kinematic_viscosity == 0.0) return {InviscidAddedMassCoefficient(alpha), 0.0};
   if (circular_frequency == 0.0) {
     throw LogicError(
-        "CalcAnnulusFluidCoefficients: a viscous fluid has no added-mass and damping "
+        "ComputeAnnulusFluidCoefficients: a viscous fluid has no added-mass and damping "
         "coefficients at ω = 0");
   }
   const Complex h =

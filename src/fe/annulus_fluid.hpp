@@ -44,7 +44,7 @@ std::complex<double> UnconfinedForceRatio(double stokes_number);
 // {C_m, C_v} for a rod of radius a in a hole of radius b > a at circular frequency ω of a fluid
 // of kinematic viscosity ν; ν = 0 (inviscid) gives {(α²+1)/(α²−1), 0} at any ω ≥ 0. Throws
 // LogicError on a ≤ 0, b ≤ a, ω < 0, ν < 0, or ω = 0 with ν > 0 (no steady limit of C_m, C_v).
-AnnulusFluidCoefficients CalcAnnulusFluidCoefficients(double rod_radius, double hole_radius,
+AnnulusFluidCoefficients ComputeAnnulusFluidCoefficients(double rod_radius, double hole_radius,
                                                       double circular_frequency,
                                                       double kinematic_viscosity);
 

@@ -148,16 +148,16 @@ Complex AsymptoticSum(Complex z, int order, double sign) {
 
 }  // namespace
 
-ScaledModifiedBessel CalcScaledModifiedBesselSeries(Complex z) {
-  CheckArgument(z, "CalcScaledModifiedBesselSeries");
+ScaledModifiedBessel ComputeScaledModifiedBesselSeries(Complex z) {
+  CheckArgument(z, "ComputeScaledModifiedBesselSeries");
   const SeriesParts parts = SumSeries(z);
   const Complex grow = std::exp(z), decay = std::exp(-z);
   return {decay * (1.0 + parts.i0_less_one), decay * (0.5 * z + parts.i1_less_linear),
           grow * parts.k0, grow * (1.0 / z + parts.k1_less_pole)};
 }
 
-ScaledModifiedBessel CalcScaledModifiedBesselAsymptotic(Complex z) {
-  CheckArgument(z, "CalcScaledModifiedBesselAsymptotic");
+ScaledModifiedBessel ComputeScaledModifiedBesselAsymptotic(Complex z) {
+  CheckArgument(z, "ComputeScaledModifiedBesselAsymptotic");
   // A&S 9.7.1: I_ν(z) ~ e^z/sqrt(2πz) Σ (−1)^k a_k/z^k;
   // A&S 9.7.2: K_ν(z) ~ sqrt(π/2z) e^{−z} Σ a_k/z^k.
   const Complex i_factor = 1.0 / std::sqrt(2.0 * kPi * z);
@@ -166,13 +166,13 @@ ScaledModifiedBessel CalcScaledModifiedBesselAsymptotic(Complex z) {
           k_factor * AsymptoticSum(z, 0, 1.0), k_factor * AsymptoticSum(z, 1, 1.0)};
 }
 
-ScaledModifiedBessel CalcScaledModifiedBessel(Complex z) {
-  CheckArgument(z, "CalcScaledModifiedBessel");
-  if (std::abs(z) <= kBesselSeriesLimit) return CalcScaledModifiedBesselSeries(z);
+ScaledModifiedBessel ComputeScaledModifiedBessel(Complex z) {
+  CheckArgument(z, "ComputeScaledModifiedBessel");
+  if (std::abs(z) <= kBesselSeriesLimit) return ComputeScaledModifiedBesselSeries(z);
   ScaledModifiedBessel values;
   ContinuedFractionK(z, values.k0, values.k1);
   if (z.real() > kAsymptoticRealPart) {
-    const ScaledModifiedBessel asymptotic = CalcScaledModifiedBesselAsymptotic(z);
+    const ScaledModifiedBessel asymptotic = ComputeScaledModifiedBesselAsymptotic(z);
     values.i0 = asymptotic.i0;
     values.i1 = asymptotic.i1;
     return values;
@@ -184,10 +184,10 @@ ScaledModifiedBessel CalcScaledModifiedBessel(Complex z) {
   return values;
 }
 
-BesselRemainders CalcSmallArgumentBesselRemainders(Complex z) {
-  CheckArgument(z, "CalcSmallArgumentBesselRemainders");
+BesselRemainders ComputeSmallArgumentBesselRemainders(Complex z) {
+  CheckArgument(z, "ComputeSmallArgumentBesselRemainders");
   if (std::abs(z) > kBesselSeriesLimit) {
-    throw LogicError("CalcSmallArgumentBesselRemainders: |z| > 2 at " + Describe(z));
+    throw LogicError("ComputeSmallArgumentBesselRemainders: |z| > 2 at " + Describe(z));
   }
   const SeriesParts parts = SumSeries(z);
   return {parts.i0_less_one, parts.i1_less_linear, parts.k0, parts.k1_less_pole};

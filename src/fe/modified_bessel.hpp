@@ -35,14 +35,14 @@ struct ScaledModifiedBessel {
 inline constexpr double kBesselSeriesLimit = 2.0;
 
 // All four scaled functions at z. Throws LogicError unless Re z > 0 and z is finite.
-ScaledModifiedBessel CalcScaledModifiedBessel(Complex z);
+ScaledModifiedBessel ComputeScaledModifiedBessel(Complex z);
 
 // The branches on their own (for the tests of continuity between them; any Re z > 0, but each
-// is accurate only where CalcScaledModifiedBessel uses it):
+// is accurate only where ComputeScaledModifiedBessel uses it):
 // the ascending series (cancellation grows like e^{|z| + Re z} for K);
-ScaledModifiedBessel CalcScaledModifiedBesselSeries(Complex z);
+ScaledModifiedBessel ComputeScaledModifiedBesselSeries(Complex z);
 // the large-argument expansions A&S 9.7.1 and 9.7.2, summed to their smallest term.
-ScaledModifiedBessel CalcScaledModifiedBesselAsymptotic(Complex z);
+ScaledModifiedBessel ComputeScaledModifiedBesselAsymptotic(Complex z);
 
 // For small |z| (≤ kBesselSeriesLimit), the functions less their algebraic leading terms,
 // unscaled, from the same series: I₀ − 1, I₁ − z/2, K₁ − 1/z, and K₀. In a basis of solutions
@@ -54,6 +54,6 @@ struct BesselRemainders {
   Complex k1_less_pole;    // K₁(z) − 1/z
 };
 // Throws LogicError unless 0 < |z| ≤ kBesselSeriesLimit and Re z > 0.
-BesselRemainders CalcSmallArgumentBesselRemainders(Complex z);
+BesselRemainders ComputeSmallArgumentBesselRemainders(Complex z);
 
 }  // namespace drillflex::fe

@@ -238,7 +238,7 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
   files.Add("mode_shapes.csv", shapes.ToString());
   files.json()["modes"] = modes;
   // The first lateral mode at 1× rotation beside the field rule of thumb (validation.md V6).
-  const RuleOfThumbRpm rule = CalcRuleOfThumbCriticalRpm(c);
+  const RuleOfThumbRpm rule = ComputeRuleOfThumbCriticalRpm(c);
   json critical = {{"rule_of_thumb", out(rule.rpm, Quantity::RotarySpeed)},
                    {"rule_of_thumb_span", out(rule.span, Quantity::Length)}};
   if (const analyses::ModeResult* lateral = analyses::FirstLateralMode(result)) {

@@ -50,7 +50,7 @@ struct RuleOfThumbRpm {
   double outer_diameter = 0.0;  // m
   double inner_diameter = 0.0;  // m
 };
-RuleOfThumbRpm CalcRuleOfThumbCriticalRpm(const Case& c);
+RuleOfThumbRpm ComputeRuleOfThumbCriticalRpm(const Case& c);
 
 // MD of a station: bit MD − s with a well, s without one (measured along the string from the bit).
 double StationMd(const Case& c, double s);

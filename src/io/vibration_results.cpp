@@ -12,7 +12,7 @@ using units::Quantity;
 
 }  // namespace
 
-RuleOfThumbRpm CalcRuleOfThumbCriticalRpm(const Case& c) {
+RuleOfThumbRpm ComputeRuleOfThumbCriticalRpm(const Case& c) {
   RuleOfThumbRpm rule;
   if (c.input.string.components.empty()) return rule;
   // The span: between the outermost supports that hold the string laterally; else, for drill pipe

@@ -52,7 +52,7 @@ struct ModelInput {
   std::vector<Imbalance> imbalances;
   // Set (a transient's model): the drilling fluid moves with the bodies sideways, as lumps of lateral
   // mass and damping at their nodes (model/fluid_inertia.hpp), the annulus's C_m and C_v taken at
-  // this circular frequency, rad/s (model/lateral_fluid.hpp CalcNodeFluidTerms; 0: the inviscid
+  // this circular frequency, rad/s (model/lateral_fluid.hpp ComputeNodeFluidTerms; 0: the inviscid
   // C_m and no damping, allowed only for an inviscid fluid or a given C_m). Unset: the model's mass
   // is the steel's, and the linear analyses add the fluid themselves.
   std::optional<double> transient_fluid_frequency;

@@ -52,7 +52,7 @@ void GyroscopicElement::DoEvaluate(const ElementState& state, bool with_matrices
   }
 }
 
-SparseMat CalcGyroscopicMatrix(const SystemModel& model, const VecX& q) {
+SparseMat ComputeGyroscopicMatrix(const SystemModel& model, const VecX& q) {
   const std::vector<BodyPose> poses = model.Poses(q);
   std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t b = 0; b < model.bodies().size(); ++b) {

@@ -46,6 +46,6 @@ class GyroscopicElement : public ForceElement {
 // The gyroscopic matrix G of the whole model at q for a unit spin (1 rad/s, clockwise looking
 // down-hole) of every body: the assembled ∂m/∂v of a GyroscopicElement on each body (N·m·s per rad/s
 // of spin, per unit of each velocity coordinate); skew-symmetric, the pattern of the body blocks.
-SparseMat CalcGyroscopicMatrix(const SystemModel& model, const VecX& q);
+SparseMat ComputeGyroscopicMatrix(const SystemModel& model, const VecX& q);
 
 }  // namespace drillflex::model

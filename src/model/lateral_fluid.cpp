@@ -75,13 +75,13 @@ void AttachLateralFluid(const ModelInput& input, double circular_frequency, std:
   }
   for (std::size_t i = 0; i < fluid.nodes.size(); ++i) {
     const LateralFluidNode& node = fluid.nodes[i];
-    const NodeFluidTerms terms = CalcNodeFluidTerms(fluid, i, circular_frequency);
+    const NodeFluidTerms terms = ComputeNodeFluidTerms(fluid, i, circular_frequency);
     bodies[node.body].fluid_lateral_mass[node.node] = terms.mass;
     bodies[node.body].fluid_lateral_damping[node.node] = terms.damping;
   }
 }
 
-NodeFluidTerms CalcNodeFluidTerms(const LateralFluid& fluid, std::size_t index, double circular_frequency) {
+NodeFluidTerms ComputeNodeFluidTerms(const LateralFluid& fluid, std::size_t index, double circular_frequency) {
   const LateralFluidNode& node = fluid.nodes.at(index);
   NodeFluidTerms terms;
   terms.mass = node.internal_mass;
@@ -90,9 +90,9 @@ NodeFluidTerms CalcNodeFluidTerms(const LateralFluid& fluid, std::size_t index, 
   if (fluid.added_mass_override >= 0.0) {
     coefficients.added_mass = fluid.added_mass_override;
   } else if (!fluid.frequency_dependent() || circular_frequency <= 0.0) {
-    coefficients = fe::CalcAnnulusFluidCoefficients(node.rod_radius, node.hole_radius, 0.0, 0.0);
+    coefficients = fe::ComputeAnnulusFluidCoefficients(node.rod_radius, node.hole_radius, 0.0, 0.0);
   } else {
-    coefficients = fe::CalcAnnulusFluidCoefficients(node.rod_radius, node.hole_radius, circular_frequency,
+    coefficients = fe::ComputeAnnulusFluidCoefficients(node.rod_radius, node.hole_radius, circular_frequency,
                                                     fluid.kinematic_viscosity);
   }
   // m_a = C_m ρ π a² and c = C_v ρ π a² ω per length (Chen et al. 1976; fe/annulus_fluid.hpp).
@@ -111,13 +111,13 @@ MatX LateralNodeJacobian(const SystemModel& model, const std::vector<BodyPose>& 
   return jacobian.bottomRows<2>();
 }
 
-LateralFluidMatrices CalcLateralFluidMatrices(const SystemModel& model, const LateralFluid& fluid, const VecX& q,
+LateralFluidMatrices ComputeLateralFluidMatrices(const SystemModel& model, const LateralFluid& fluid, const VecX& q,
                                               double circular_frequency, FluidPart part) {
   const auto poses = model.Poses(q);
   std::vector<Eigen::Triplet<double>> mass, damping;
   for (std::size_t i = 0; i < fluid.nodes.size(); ++i) {
     const LateralFluidNode& node = fluid.nodes[i];
-    NodeFluidTerms terms = CalcNodeFluidTerms(fluid, i, circular_frequency);
+    NodeFluidTerms terms = ComputeNodeFluidTerms(fluid, i, circular_frequency);
     if (part == FluidPart::Annulus) terms.mass -= node.internal_mass;
     if (part == FluidPart::Internal) terms = {node.internal_mass, 0.0};
     if (terms.mass == 0.0 && terms.damping == 0.0) continue;
@@ -140,7 +140,7 @@ LateralFluidMatrices CalcLateralFluidMatrices(const SystemModel& model, const La
   return matrices;
 }
 
-std::vector<AnnulusGroup> CalcAnnulusGroups(const SystemModel& model, const LateralFluid& fluid, const VecX& q) {
+std::vector<AnnulusGroup> ComputeAnnulusGroups(const SystemModel& model, const LateralFluid& fluid, const VecX& q) {
   const auto poses = model.Poses(q);
   const int n = model.num_velocities();
   std::vector<AnnulusGroup> groups;
@@ -170,7 +170,7 @@ std::vector<AnnulusGroup> CalcAnnulusGroups(const SystemModel& model, const Late
   return groups;
 }
 
-LateralFluidMatrices CalcAnnulusMatrices(const std::vector<AnnulusGroup>& groups, const LateralFluid& fluid,
+LateralFluidMatrices ComputeAnnulusMatrices(const std::vector<AnnulusGroup>& groups, const LateralFluid& fluid,
                                          double circular_frequency) {
   const Eigen::Index n = groups.empty() ? 0 : groups.front().unit_mass.rows();
   LateralFluidMatrices matrices{SparseMat(n, n), SparseMat(n, n)};
@@ -180,7 +180,7 @@ LateralFluidMatrices CalcAnnulusMatrices(const std::vector<AnnulusGroup>& groups
       coefficients.added_mass = fluid.added_mass_override;
     } else {
       const bool viscous = fluid.frequency_dependent() && circular_frequency > 0.0;
-      coefficients = fe::CalcAnnulusFluidCoefficients(group.rod_radius, group.hole_radius,
+      coefficients = fe::ComputeAnnulusFluidCoefficients(group.rod_radius, group.hole_radius,
                                                       viscous ? circular_frequency : 0.0,
                                                       viscous ? fluid.kinematic_viscosity : 0.0);
     }

@@ -53,7 +53,7 @@ LateralFluid MakeLateralFluid(const ModelInput& input, const SystemModel& model)
 LateralFluid MakeLateralFluid(const ModelInput& input, const std::vector<Body>& bodies);
 
 // Gives every body its fluid lumps for the time domain (Body::fluid_lateral_mass, _damping;
-// model/fluid_inertia.hpp): each node's CalcNodeFluidTerms at the circular frequency ω (rad/s).
+// model/fluid_inertia.hpp): each node's ComputeNodeFluidTerms at the circular frequency ω (rad/s).
 // Throws LogicError for ω ≤ 0 when the annulus terms depend on ω (a viscous fluid without a C_m).
 void AttachLateralFluid(const ModelInput& input, double circular_frequency, std::vector<Body>& bodies);
 
@@ -64,7 +64,7 @@ struct NodeFluidTerms {
   double mass = 0.0;
   double damping = 0.0;
 };
-NodeFluidTerms CalcNodeFluidTerms(const LateralFluid& fluid, std::size_t index, double circular_frequency);
+NodeFluidTerms ComputeNodeFluidTerms(const LateralFluid& fluid, std::size_t index, double circular_frequency);
 
 // The 2 × (6 + n_f) lateral rows of J_k of a fluid node at q (the body's velocity block).
 MatX LateralNodeJacobian(const SystemModel& model, const std::vector<BodyPose>& poses, const LateralFluidNode& node);
@@ -76,7 +76,7 @@ struct LateralFluidMatrices {
 // Which fluid: both, the bore's (constant in ω) or the annulus's.
 enum class FluidPart { All, Internal, Annulus };
 // The matrices at q and ω.
-LateralFluidMatrices CalcLateralFluidMatrices(const SystemModel& model, const LateralFluid& fluid, const VecX& q,
+LateralFluidMatrices ComputeLateralFluidMatrices(const SystemModel& model, const LateralFluid& fluid, const VecX& q,
                                               double circular_frequency, FluidPart part = FluidPart::All);
 
 // The annulus of the nodes that share a rod and hole radius (a component in one hole section):
@@ -86,8 +86,8 @@ struct AnnulusGroup {
   double rod_radius = 0.0, hole_radius = 0.0;  // m
   SparseMat unit_mass;                         // U_g, kg
 };
-std::vector<AnnulusGroup> CalcAnnulusGroups(const SystemModel& model, const LateralFluid& fluid, const VecX& q);
-LateralFluidMatrices CalcAnnulusMatrices(const std::vector<AnnulusGroup>& groups, const LateralFluid& fluid,
+std::vector<AnnulusGroup> ComputeAnnulusGroups(const SystemModel& model, const LateralFluid& fluid, const VecX& q);
+LateralFluidMatrices ComputeAnnulusMatrices(const std::vector<AnnulusGroup>& groups, const LateralFluid& fluid,
                                          double circular_frequency);
 
 // |J_lat,k v|² of every fluid node for a velocity vector v (a mode): vᵀ M_f v = Σ m_k s_k.

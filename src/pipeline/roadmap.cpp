@@ -59,7 +59,7 @@ SurfaceLoads RunStaticAtSurface(io::Case c, bool off_bottom) {
     c.analyses.static_analysis = settings;
   }
   const CaseResults results = RunCase(c, AnalysisRequest::Only(Analysis::Static));
-  SurfaceLoads loads = CalcSurfaceLoads(results);
+  SurfaceLoads loads = ComputeSurfaceLoads(results);
   if (off_bottom) loads.hook_load += model::StringAboveWeight(results.model.input);
   return loads;
 }

@@ -176,7 +176,7 @@ void WriteCampbell(std::ostream& out, const analyses::CampbellResult& result) {
 }
 
 void WriteCriticalRpm(std::ostream& out, const io::Case& c, const analyses::ModesResult& result) {
-  const io::RuleOfThumbRpm rule = io::CalcRuleOfThumbCriticalRpm(c);
+  const io::RuleOfThumbRpm rule = io::ComputeRuleOfThumbCriticalRpm(c);
   if (const analyses::ModeResult* mode = analyses::FirstLateralMode(result)) {
     out << fmt::format("  critical RPM of the first lateral mode {:.5g} rpm; rule of thumb 33055 sqrt(OD²+ID²)/L² "
                              "{:.5g} rpm (span {}, ±15 %)\n",

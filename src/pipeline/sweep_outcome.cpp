@@ -25,7 +25,7 @@ double StickSlipSeverity(const analyses::TransientResult& result) {
   return (highest - lowest) / std::abs(mean);
 }
 
-SurfaceLoads CalcSurfaceLoads(const CaseResults& results) {
+SurfaceLoads ComputeSurfaceLoads(const CaseResults& results) {
   SurfaceLoads loads;
   if (!results.static_result) return loads;
   const model::ModelInput& input = results.model.input;
@@ -61,7 +61,7 @@ void SummarizeStatic(const CaseResults& results, SweepOutcome& outcome) {
       outcome.peak_von_mises_stress = std::max(outcome.peak_von_mises_stress, node.von_mises_stress);
     }
   }
-  const SurfaceLoads surface = CalcSurfaceLoads(results);
+  const SurfaceLoads surface = ComputeSurfaceLoads(results);
   outcome.hook_load = surface.hook_load;
   outcome.surface_torque = surface.surface_torque;
 }

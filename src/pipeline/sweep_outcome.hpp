@@ -25,8 +25,10 @@ struct SweepOutcome {
   double whirl_speed = kNotComputed;            // rad/s, the whirling probe's precession (0: no whirl; transient)
   std::string whirl;                            // "none", "forward", "backward" (transient; pipeline/drilling_regime.hpp)
   std::string regime;                           // "smooth", "stick-slip, backward whirl", ... (transient)
-  double hook_load = kNotComputed;              // N: tension at the surface (static: CalcSurfaceLoads; else the transient's end)
-  double surface_torque = kNotComputed;         // N·m, at the top (static: CalcSurfaceLoads; else the transient's end)
+  // N: tension at the surface, and N·m, the torque at the top (static: ComputeSurfaceLoads; else the
+  // transient's end).
+  double hook_load = kNotComputed;
+  double surface_torque = kNotComputed;
 };
 
 // What the rig sees of a static equilibrium: the tension at the surface (N; the top support's axial
@@ -39,7 +41,7 @@ struct SurfaceLoads {
   double hook_load = kNotComputed;
   double surface_torque = kNotComputed;
 };
-SurfaceLoads CalcSurfaceLoads(const CaseResults& results);
+SurfaceLoads ComputeSurfaceLoads(const CaseResults& results);
 
 // The headline of a finished run.
 SweepOutcome SummarizeRun(const CaseResults& results);

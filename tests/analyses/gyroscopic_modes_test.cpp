@@ -36,7 +36,7 @@ TEST(GyroscopicModes, ProjectionMatchesTheFullStateSpaceSolve) {
   ASSERT_EQ(projected.modes.size(), 6u);
   EXPECT_LT(projected.basis_size, built.system.num_velocities());
   const LinearizedSystem linear = Linearize(built.system, q, 1.0);
-  const SparseMat velocity = linear.damping + kSpin * model::CalcGyroscopicMatrix(built.system, q);
+  const SparseMat velocity = linear.damping + kSpin * model::ComputeGyroscopicMatrix(built.system, q);
   const solvers::ComplexModes full = solvers::SolveDampedModes(MatX(linear.stiffness), MatX(velocity), MatX(linear.mass),
                                                                built.system.num_velocities(), false);
   std::vector<double> frequencies;

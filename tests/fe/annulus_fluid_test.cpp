@@ -147,21 +147,21 @@ TEST(AnnulusFluid, CoefficientsAndForcesPerLength) {
   const double nu = 1e-5;          // m²/s
   const double omega = 1e3 * nu / (a * a);  // S = 1e3
   EXPECT_NEAR(StokesNumber(a, omega, nu), 1e3, 1e-9);
-  const AnnulusFluidCoefficients c = CalcAnnulusFluidCoefficients(a, b, omega, nu);
+  const AnnulusFluidCoefficients c = ComputeAnnulusFluidCoefficients(a, b, omega, nu);
   EXPECT_NEAR(c.added_mass, 2.969028545, 1e-8);
   EXPECT_NEAR(c.damping, 0.443900287693, 1e-8);
   const double rho = 1198.26;
   EXPECT_NEAR(AddedMassPerLength(c, rho, a), c.added_mass * rho * kPi * a * a, 1e-12);
   EXPECT_NEAR(DampingPerLength(c, rho, a, omega), c.damping * rho * kPi * a * a * omega, 1e-12);
   // Inviscid fluid: the potential-flow value at any frequency, no damping.
-  const AnnulusFluidCoefficients inviscid = CalcAnnulusFluidCoefficients(a, b, 30.0, 0.0);
+  const AnnulusFluidCoefficients inviscid = ComputeAnnulusFluidCoefficients(a, b, 30.0, 0.0);
   EXPECT_DOUBLE_EQ(inviscid.added_mass, 2.6);
   EXPECT_EQ(inviscid.damping, 0.0);
-  EXPECT_DOUBLE_EQ(CalcAnnulusFluidCoefficients(a, b, 0.0, 0.0).added_mass, 2.6);
-  EXPECT_THROW(CalcAnnulusFluidCoefficients(a, a, omega, nu), LogicError);
-  EXPECT_THROW(CalcAnnulusFluidCoefficients(a, b, -1.0, nu), LogicError);
-  EXPECT_THROW(CalcAnnulusFluidCoefficients(a, b, omega, -nu), LogicError);
-  EXPECT_THROW(CalcAnnulusFluidCoefficients(a, b, 0.0, nu), LogicError);
+  EXPECT_DOUBLE_EQ(ComputeAnnulusFluidCoefficients(a, b, 0.0, 0.0).added_mass, 2.6);
+  EXPECT_THROW(ComputeAnnulusFluidCoefficients(a, a, omega, nu), LogicError);
+  EXPECT_THROW(ComputeAnnulusFluidCoefficients(a, b, -1.0, nu), LogicError);
+  EXPECT_THROW(ComputeAnnulusFluidCoefficients(a, b, omega, -nu), LogicError);
+  EXPECT_THROW(ComputeAnnulusFluidCoefficients(a, b, 0.0, nu), LogicError);
   EXPECT_THROW(ConfinedForceRatio(1.5, 0.0), LogicError);
 }
 
@@ -180,7 +180,7 @@ TEST(AnnulusFluid, ValidationV5CollarFrequencies) {
   const double dry = steel * collar.area();
   const double with_bore = dry + mud * collar.bore_area();
   const AnnulusFluidCoefficients inviscid =
-      CalcAnnulusFluidCoefficients(rod_radius, hole_radius, 2.0 * kPi * 4.3, 0.0);
+      ComputeAnnulusFluidCoefficients(rod_radius, hole_radius, 2.0 * kPi * 4.3, 0.0);
   const double with_annulus = with_bore + AddedMassPerLength(inviscid, mud, rod_radius);
   const double f_dry = frequency(dry), f_bore = frequency(with_bore);
   const double f_annulus = frequency(with_annulus);

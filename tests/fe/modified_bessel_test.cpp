@@ -21,14 +21,14 @@ TEST(ModifiedBessel, RealArgumentsMatchAbramowitzStegunTable9_8) {
   // A&S Table 9.8: I₀(1) = 1.266065878, I₁(1) = 0.565159104, K₀(1) = 0.421024438,
   // K₁(1) = 0.601907230; e^{−10} I₀(10) = 0.1278333372, e^{10} K₀(10) = 0.3916319344,
   // e^{10} K₁(10) = 0.4107665706.
-  const ScaledModifiedBessel at_one = CalcScaledModifiedBessel(1.0);
+  const ScaledModifiedBessel at_one = ComputeScaledModifiedBessel(1.0);
   const double e = std::exp(1.0);
   EXPECT_NEAR(at_one.i0.real() * e, 1.266065878, 1e-9);
   EXPECT_NEAR(at_one.i1.real() * e, 0.565159104, 1e-9);
   EXPECT_NEAR(at_one.k0.real() / e, 0.421024438, 1e-9);
   EXPECT_NEAR(at_one.k1.real() / e, 0.601907230, 1e-9);
   EXPECT_NEAR(at_one.i0.imag(), 0.0, 1e-16);
-  const ScaledModifiedBessel at_ten = CalcScaledModifiedBessel(10.0);
+  const ScaledModifiedBessel at_ten = ComputeScaledModifiedBessel(10.0);
   EXPECT_NEAR(at_ten.i0.real(), 0.1278333372, 1e-10);
   EXPECT_NEAR(at_ten.k0.real(), 0.3916319344, 1e-10);
   EXPECT_NEAR(at_ten.k1.real(), 0.4107665706, 1e-10);
@@ -48,7 +48,7 @@ TEST(ModifiedBessel, KelvinFunctionsMatchAbramowitzStegunTable9_12) {
   };
   for (const Kelvin& row : table) {
     const Complex z = row.x * kEighthTurn;
-    const ScaledModifiedBessel values = CalcScaledModifiedBessel(z);
+    const ScaledModifiedBessel values = ComputeScaledModifiedBessel(z);
     EXPECT_LT(RelativeError(values.i0 * std::exp(z), {row.ber, row.bei}), 2e-10) << row.x;
     EXPECT_LT(RelativeError(values.k0 * std::exp(-z), {row.ker, row.kei}), 2e-9) << row.x;
   }
@@ -95,7 +95,7 @@ TEST(ModifiedBessel, ScaledValuesAlongTheEighthTurnMatchMpmath) {
        {0.036622059106499628, -0.015180723787558681}},
   };
   for (const Row& row : rows) {
-    const ScaledModifiedBessel values = CalcScaledModifiedBessel(row.r * kEighthTurn);
+    const ScaledModifiedBessel values = ComputeScaledModifiedBessel(row.r * kEighthTurn);
     EXPECT_LT(RelativeError(values.i0, row.i0), 1e-14) << "I0 at |z| = " << row.r;
     EXPECT_LT(RelativeError(values.i1, row.i1), 1e-14) << "I1 at |z| = " << row.r;
     EXPECT_LT(RelativeError(values.k0, row.k0), 1e-14) << "K0 at |z| = " << row.r;
@@ -108,7 +108,7 @@ TEST(ModifiedBessel, WronskianHoldsFromTinyToHugeArguments) {
   for (const double angle : {0.0, kPi / 4.0, 1.2}) {
     for (double r = 1e-3; r <= 2e4; r *= 1.37) {
       const Complex z = std::polar(r, angle);
-      const ScaledModifiedBessel v = CalcScaledModifiedBessel(z);
+      const ScaledModifiedBessel v = ComputeScaledModifiedBessel(z);
       const Complex w = z * (v.i0 * v.k1 + v.i1 * v.k0);
       EXPECT_LT(std::abs(w - 1.0), 2e-14) << "|z| = " << r << ", arg z = " << angle;
     }
@@ -130,7 +130,7 @@ TEST(ModifiedBessel, BranchesAgreeWhereTheyMeet) {
   // Series against the continued fractions across |z| = 2 (the series is still good there).
   for (const double r : {2.0 * (1 - 1e-12), 2.0 * (1 + 1e-12), 2.5}) {
     const Complex z = r * kEighthTurn;
-    expect_close(CalcScaledModifiedBesselSeries(z), CalcScaledModifiedBessel(z), true, true,
+    expect_close(ComputeScaledModifiedBesselSeries(z), ComputeScaledModifiedBessel(z), true, true,
                  1e-14, r);
   }
   // CF1 + Wronskian against the asymptotic expansion across Re z = 40, and CF2 against the
@@ -138,34 +138,34 @@ TEST(ModifiedBessel, BranchesAgreeWhereTheyMeet) {
   for (const double r : {40.0 * std::sqrt(2.0) * (1 - 1e-12), 40.0 * std::sqrt(2.0) * (1 + 1e-12),
                          300.0, 5000.0}) {
     const Complex z = r * kEighthTurn;
-    expect_close(CalcScaledModifiedBesselAsymptotic(z), CalcScaledModifiedBessel(z), true, true,
+    expect_close(ComputeScaledModifiedBesselAsymptotic(z), ComputeScaledModifiedBessel(z), true, true,
                  1e-14, r);
   }
 }
 
 TEST(ModifiedBessel, RemaindersKeepTheirDigitsAtSmallArguments) {
   // mpmath 1.3: I₀ − 1, I₁ − z/2 and K₁ − 1/z at z = 1e-3 e^{iπ/4} and 1.5 e^{iπ/4}.
-  const BesselRemainders tiny = CalcSmallArgumentBesselRemainders(1e-3 * kEighthTurn);
+  const BesselRemainders tiny = ComputeSmallArgumentBesselRemainders(1e-3 * kEighthTurn);
   EXPECT_LT(RelativeError(tiny.i0_less_one, {-1.5624999999999993e-14, 2.4999999999999957e-7}),
             1e-14);
   EXPECT_LT(RelativeError(tiny.i1_less_linear, {-4.4194175665583091e-11, 4.4194171982735273e-11}),
             1e-14);
   EXPECT_LT(RelativeError(tiny.k1_less_pole, {-0.0029377048287031571, -0.002382345192730869}),
             1e-14);
-  const BesselRemainders mid = CalcSmallArgumentBesselRemainders(1.5 * kEighthTurn);
+  const BesselRemainders mid = ComputeSmallArgumentBesselRemainders(1.5 * kEighthTurn);
   EXPECT_LT(RelativeError(mid.i0_less_one, {-0.078927816453744236, 0.55756006230308669}), 1e-14);
   EXPECT_LT(RelativeError(mid.i1_less_linear, {-0.16246509688782071, 0.13453533206985843}),
             1e-14);
   EXPECT_LT(RelativeError(mid.k1_less_pole, {-0.47241320177604154, 0.054360235624774273}),
             1e-14);
-  EXPECT_THROW(CalcSmallArgumentBesselRemainders(3.0), LogicError);
+  EXPECT_THROW(ComputeSmallArgumentBesselRemainders(3.0), LogicError);
 }
 
 TEST(ModifiedBessel, RejectsArgumentsOutsideTheRightHalfPlane) {
-  EXPECT_THROW(CalcScaledModifiedBessel(0.0), LogicError);
-  EXPECT_THROW(CalcScaledModifiedBessel({-1.0, 1.0}), LogicError);
-  EXPECT_THROW(CalcScaledModifiedBessel({0.0, 3.0}), LogicError);
-  EXPECT_THROW(CalcScaledModifiedBessel({std::nan(""), 1.0}), LogicError);
+  EXPECT_THROW(ComputeScaledModifiedBessel(0.0), LogicError);
+  EXPECT_THROW(ComputeScaledModifiedBessel({-1.0, 1.0}), LogicError);
+  EXPECT_THROW(ComputeScaledModifiedBessel({0.0, 3.0}), LogicError);
+  EXPECT_THROW(ComputeScaledModifiedBessel({std::nan(""), 1.0}), LogicError);
 }
 
 }  // namespace

@@ -125,7 +125,7 @@ TEST(FluidInertia, TheBuilderGivesEveryNodeItsLumpsAtTheFrequency) {
   const ModelInput input = HollowRodInHole();
   const LateralFluid fluid = MakeLateralFluid(input, built.system);
   for (std::size_t i = 0; i < fluid.nodes.size(); ++i) {
-    const NodeFluidTerms terms = CalcNodeFluidTerms(fluid, i, 10.0);
+    const NodeFluidTerms terms = ComputeNodeFluidTerms(fluid, i, 10.0);
     const Body& body = built.system.bodies()[fluid.nodes[i].body];
     EXPECT_DOUBLE_EQ(body.fluid_lateral_mass[fluid.nodes[i].node], terms.mass);
     EXPECT_DOUBLE_EQ(body.fluid_lateral_damping[fluid.nodes[i].node], terms.damping);
@@ -222,7 +222,7 @@ TEST(FluidInertia, SpinMovesNoFluidAndLateralTranslationCarriesItAll) {
   // Hand sum over the 5.08 m rod: (ρ A_i + C_m(ω) ρ π a²) L, C_m of the viscous annulus at 10 rad/s
   // (Chen et al. 1976, fe/annulus_fluid.hpp).
   const double a = 0.0381, b = 0.0762, rho = 1200.0, length = 5.08;
-  const fe::AnnulusFluidCoefficients c = fe::CalcAnnulusFluidCoefficients(a, b, 10.0, 0.02 / rho);
+  const fe::AnnulusFluidCoefficients c = fe::ComputeAnnulusFluidCoefficients(a, b, 10.0, 0.02 / rho);
   const double expected = (rho * kPi * 0.0127 * 0.0127 + c.added_mass * rho * kPi * a * a) * length;
   EXPECT_NEAR(lateral_mass, expected, 1e-12 * expected);
 }
@@ -238,7 +238,7 @@ TEST(FluidInertia, MassAtRestIsTheLinearAnalysesMass) {
   const SystemModel steel = BodiesOnly(BuildSystemModel(input, cache).system);
   const MatX transient(model.MassMatrix(q));
   const MatX linear = MatX(steel.MassMatrix(q)) +
-                      MatX(CalcLateralFluidMatrices(steel, MakeLateralFluid(input, steel), q, 10.0).mass);
+                      MatX(ComputeLateralFluidMatrices(steel, MakeLateralFluid(input, steel), q, 10.0).mass);
   EXPECT_LT(solvers::RelativeMatrixError(transient, linear), 1e-13);
 }
 

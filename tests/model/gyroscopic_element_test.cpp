@@ -51,7 +51,7 @@ TEST(GyroscopicElement, AssembledMatrixIsTheElementsForcePerSpinAndDoesNoWork) {
   std::mt19937 rng(5);
   const VecX q = testing::SpunPositions(model, 0.4, 0.05, rng);
   const VecX v = testing::SpinningVelocities(model, 0.0, 1.0, rng);
-  const SparseMat gyroscopic = CalcGyroscopicMatrix(model, q);
+  const SparseMat gyroscopic = ComputeGyroscopicMatrix(model, q);
   VecX element_forces = VecX::Zero(v.size());
   const auto poses = model.Poses(q);
   for (const auto& element : model.elements()) {

@@ -36,7 +36,7 @@ TEST(LateralFluid, RigidLateralMotionCarriesBoreAndAnnulusFluid) {
   const BuiltModel built = BuildSystemModel(input, cache);
   const LateralFluid fluid = MakeLateralFluid(input, built.system);
   const VecX q = built.system.ReferencePositions();
-  const LateralFluidMatrices m = CalcLateralFluidMatrices(built.system, fluid, q, 10.0);
+  const LateralFluidMatrices m = ComputeLateralFluidMatrices(built.system, fluid, q, 10.0);
   const double a = 0.0381, b = 0.0762, length = 5.08;
   const double bore = 1200.0 * kPi * 0.0127 * 0.0127 * length;
   const double cm = (b * b + a * a) / (b * b - a * a);  // inviscid, method.md §7
@@ -51,11 +51,11 @@ TEST(LateralFluid, RigidLateralMotionCarriesBoreAndAnnulusFluid) {
   EXPECT_NEAR(axial.dot(m.mass * axial), 0.0, 1e-9 * annulus);
   // Internal only: the bore's share; annulus groups (one group here) equal the annulus part.
   const VecX v = RigidTranslation(built.system, Vec3::UnitX());
-  const SparseMat internal = CalcLateralFluidMatrices(built.system, fluid, q, 10.0, FluidPart::Internal).mass;
+  const SparseMat internal = ComputeLateralFluidMatrices(built.system, fluid, q, 10.0, FluidPart::Internal).mass;
   EXPECT_NEAR(v.dot(internal * v), bore, 1e-9 * bore);
-  const auto groups = CalcAnnulusGroups(built.system, fluid, q);
+  const auto groups = ComputeAnnulusGroups(built.system, fluid, q);
   ASSERT_EQ(groups.size(), 1u);
-  const LateralFluidMatrices grouped = CalcAnnulusMatrices(groups, fluid, 10.0);
+  const LateralFluidMatrices grouped = ComputeAnnulusMatrices(groups, fluid, 10.0);
   EXPECT_NEAR(v.dot(grouped.mass * v), annulus, 1e-9 * annulus);
 }
 
@@ -67,8 +67,8 @@ TEST(LateralFluid, ViscousAnnulusFollowsChenWambsganssAtTheFrequency) {
   ASSERT_TRUE(fluid.frequency_dependent());
   const VecX q = built.system.ReferencePositions();
   const double omega = 30.0, a = 0.0381, length = 5.08;
-  const fe::AnnulusFluidCoefficients c = fe::CalcAnnulusFluidCoefficients(a, 0.0762, omega, 0.02 / 1200.0);
-  const LateralFluidMatrices m = CalcLateralFluidMatrices(built.system, fluid, q, omega, FluidPart::Annulus);
+  const fe::AnnulusFluidCoefficients c = fe::ComputeAnnulusFluidCoefficients(a, 0.0762, omega, 0.02 / 1200.0);
+  const LateralFluidMatrices m = ComputeLateralFluidMatrices(built.system, fluid, q, omega, FluidPart::Annulus);
   const VecX v = RigidTranslation(built.system, Vec3::UnitY());
   const double unit = 1200.0 * kPi * a * a * length;
   EXPECT_NEAR(v.dot(m.mass * v), c.added_mass * unit, 1e-9 * unit);
@@ -81,7 +81,7 @@ TEST(LateralFluid, ViscousAnnulusFollowsChenWambsganssAtTheFrequency) {
   const BuiltModel straight = BuildSystemModel(dry_hole, cache);
   const LateralFluid no_annulus = MakeLateralFluid(dry_hole, straight.system);
   const LateralFluidMatrices bore =
-      CalcLateralFluidMatrices(straight.system, no_annulus, straight.system.ReferencePositions(), omega);
+      ComputeLateralFluidMatrices(straight.system, no_annulus, straight.system.ReferencePositions(), omega);
   const VecX w = RigidTranslation(straight.system, Vec3::UnitZ());
   EXPECT_NEAR(w.dot(bore.mass * w), 1200.0 * kPi * 0.0127 * 0.0127 * length, 1e-9);
 }
