@@ -53,12 +53,12 @@ void Sweep(benchmark::State& state, const std::string& path, bool static_equilib
   analyses::VibrationResult result;
   for (auto _ : state) {
     result = pipeline::RunCaseVibration(c, case_model, q, settings);
-    benchmark::DoNotOptimize(result.rpm.data());
+    benchmark::DoNotOptimize(result.rotary_speeds.data());
   }
   state.counters["coordinates"] = built.system.num_velocities();
-  state.counters["rpm_values"] = static_cast<double>(result.rpm.size());
+  state.counters["rpm_values"] = static_cast<double>(result.rotary_speeds.size());
   state.counters["closed_contacts"] = result.closed_contacts;
-  state.counters["critical_rpms"] = static_cast<double>(result.critical_rpm.size());
+  state.counters["critical_rpms"] = static_cast<double>(result.critical_rotary_speeds.size());
   state.counters["peak_MB"] = PeakMemoryMb();
   state.counters["basis_size"] = result.basis_size;
   state.counters["check_error"] = result.reduced_check_error;

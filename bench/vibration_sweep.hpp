@@ -12,9 +12,9 @@ inline analyses::VibrationSettings ThreeExcitationSweep(analyses::VibrationMetho
   constexpr double kRpm = kPi / 30.0, kFoot = 0.3048, kLbf = 4.4482216152605;
   analyses::VibrationSettings settings;
   settings.method = method;
-  settings.rpm_from = 20.0 * kRpm;
-  settings.rpm_to = 250.0 * kRpm;
-  settings.rpm_step = 1.0 * kRpm;
+  settings.speed_from = 20.0 * kRpm;
+  settings.speed_to = 250.0 * kRpm;
+  settings.speed_step = 1.0 * kRpm;
   analyses::Excitation imbalance;
   imbalance.type = analyses::ExcitationType::Imbalance;
   imbalance.at = 40.0 * kFoot;

@@ -97,9 +97,10 @@ class ModesResult(Result):
 class VibrationResult(Result):
     """The forced response against rotary speed (``drillflex.vibration``).
 
-    Per speed: ``rpm`` (rad/s), ``max_lateral_displacement`` (m), ``max_clearance_ratio`` (empty
-    without a well), ``max_bending_stress`` (Pa), ``max_contact_force`` (N), ``s_max_displacement``
-    (m). ``critical_rpm`` (rad/s, ascending); ``critical_speeds``: Records (``rpm``, ``severity``,
+    Per speed: ``rotary_speed`` (rad/s), ``max_lateral_displacement`` (m), ``max_clearance_ratio``
+    (empty without a well), ``max_bending_stress`` (Pa), ``max_contact_force`` (N),
+    ``s_max_displacement`` (m). ``critical_rotary_speed`` (rad/s, ascending); ``critical_speeds``:
+    Records (``rotary_speed``, ``severity``,
     ``displacement``, ``bending_stress``, ``excitation``, ``frequency``), most severe first;
     ``safe_windows``, ``quietest_windows`` (n×2, from and to, rad/s); ``excitation_frequencies``,
     ``excitation_displacement`` (one array per excitation); ``clearance_fraction``, ``stress_limit``,

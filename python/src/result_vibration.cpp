@@ -9,8 +9,8 @@ namespace drillflex::python {
 namespace {
 
 // The windows as an (n, 2) array of (from, to).
-py::array Windows(const std::vector<analyses::RpmWindow>& windows, const py::capsule& owner) {
-  return View<double>({static_cast<py::ssize_t>(windows.size()), 2}, {sizeof(analyses::RpmWindow), sizeof(double)},
+py::array Windows(const std::vector<analyses::SpeedWindow>& windows, const py::capsule& owner) {
+  return View<double>({static_cast<py::ssize_t>(windows.size()), 2}, {sizeof(analyses::SpeedWindow), sizeof(double)},
                       windows.empty() ? nullptr : &windows.front().from, owner);
 }
 
@@ -20,16 +20,16 @@ void BindVibrationResult(py::class_<RunHandle>& run) {
   DefFields(run, "vibration_fields", &pipeline::CaseResults::vibration,
             [](const RunHandle&, const analyses::VibrationResult& result, const py::capsule& owner) {
     py::dict fields;
-    fields["rpm"] = VectorView(result.rpm, owner);
+    fields["rotary_speed"] = VectorView(result.rotary_speeds, owner);
     fields["max_lateral_displacement"] = VectorView(result.max_lateral_displacement, owner);
     fields["max_clearance_ratio"] = VectorView(result.max_clearance_ratio, owner);
     fields["max_bending_stress"] = VectorView(result.max_bending_stress, owner);
     fields["max_contact_force"] = VectorView(result.max_contact_force, owner);
     fields["s_max_displacement"] = VectorView(result.s_max_displacement, owner);
-    fields["critical_rpm"] = VectorView(result.critical_rpm, owner);
+    fields["critical_rotary_speed"] = VectorView(result.critical_rotary_speeds, owner);
     py::list critical;
     for (const analyses::CriticalSpeed& speed : result.critical_speeds) {
-      critical.append(py::dict(py::arg("rpm") = speed.rpm, py::arg("severity") = speed.severity,
+      critical.append(py::dict(py::arg("rotary_speed") = speed.rotary_speed, py::arg("severity") = speed.severity,
                                py::arg("displacement") = speed.displacement, py::arg("bending_stress") = speed.bending_stress,
                                py::arg("excitation") = speed.excitation, py::arg("frequency") = speed.frequency));
     }

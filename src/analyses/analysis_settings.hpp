@@ -66,9 +66,9 @@ struct VibrationSettings {
   // (solvers::KrylovBasisOptions).
   int basis_shifts = 20;
   int basis_depth = 2;
-  double rpm_from = 20.0 * kPi / 30.0;   // rad/s
-  double rpm_to = 250.0 * kPi / 30.0;    // rad/s
-  double rpm_step = 1.0 * kPi / 30.0;    // rad/s
+  double speed_from = 20.0 * kPi / 30.0;  // rad/s
+  double speed_to = 250.0 * kPi / 30.0;   // rad/s
+  double speed_step = 1.0 * kPi / 30.0;   // rad/s
   std::vector<Excitation> excitations;
   // Safe windows (analyses/critical_speeds.hpp): the lateral displacement amplitude stays below
   // this fraction of the radial clearance, and the bending-stress amplitude below the limit.

@@ -316,9 +316,9 @@ void FindCriticalSpeeds(const VibrationSettings& settings, const std::vector<Res
   const bool ratio = !result.max_clearance_ratio.empty();
   const std::vector<double>& curve = ratio ? result.max_clearance_ratio : result.max_lateral_displacement;
   for (const std::size_t i : FindProminentPeaks(curve, kCriticalPeakProminence)) {
-    result.critical_rpm.push_back(result.rpm[i]);
+    result.critical_rotary_speeds.push_back(result.rotary_speeds[i]);
     CriticalSpeed critical;
-    critical.rpm = result.rpm[i];
+    critical.rotary_speed = result.rotary_speeds[i];
     critical.severity = curve[i];
     critical.displacement = result.max_lateral_displacement[i];
     critical.bending_stress = result.max_bending_stress[i];
@@ -327,24 +327,24 @@ void FindCriticalSpeeds(const VibrationSettings& settings, const std::vector<Res
       if (excitations[e].excitation.type == ExcitationType::Motor || sums[i].by_excitation[e] <= driving) continue;
       driving = sums[i].by_excitation[e];
       critical.excitation = static_cast<int>(e);
-      critical.frequency = ExcitationFrequency(excitations[e].excitation, result.rpm[i], excitations[e].motor_speed);
+      critical.frequency = ExcitationFrequency(excitations[e].excitation, result.rotary_speeds[i], excitations[e].motor_speed);
     }
     result.critical_speeds.push_back(critical);
   }
   std::stable_sort(result.critical_speeds.begin(), result.critical_speeds.end(),
                    [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.severity > b.severity; });
-  std::vector<bool> ok(result.rpm.size());
+  std::vector<bool> ok(result.rotary_speeds.size());
   for (std::size_t i = 0; i < ok.size(); ++i) {
     ok[i] = result.max_bending_stress[i] <= settings.stress_limit &&
             (!ratio || result.max_clearance_ratio[i] <= settings.clearance_fraction);
   }
-  for (const IndexRange& run : FindRuns(ok)) result.safe_windows.push_back({result.rpm[run.first], result.rpm[run.last]});
+  for (const IndexRange& run : FindRuns(ok)) result.safe_windows.push_back({result.rotary_speeds[run.first], result.rotary_speeds[run.last]});
   // The quietest ranges: severity within kQuietFactor of the sweep's least.
   const double least = *std::min_element(curve.begin(), curve.end());
   std::vector<bool> quiet(curve.size());
   for (std::size_t i = 0; i < quiet.size(); ++i) quiet[i] = curve[i] <= kQuietFactor * least;
   for (const IndexRange& run : FindRuns(quiet)) {
-    result.quietest_windows.push_back({result.rpm[run.first], result.rpm[run.last]});
+    result.quietest_windows.push_back({result.rotary_speeds[run.first], result.rotary_speeds[run.last]});
   }
 }
 
@@ -583,7 +583,7 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
   const WallState wall = ReadWall(built, poses);
   const std::vector<StationMap> stations = MapStations(model, poses, wall);
   const std::vector<ElementMap> elements = MapElements(model);
-  const int count = static_cast<int>(std::floor((settings.rpm_to - settings.rpm_from) / settings.rpm_step + 1e-9)) + 1;
+  const int count = static_cast<int>(std::floor((settings.speed_to - settings.speed_from) / settings.speed_step + 1e-9)) + 1;
   VibrationResult result;
   result.clearance_fraction = settings.clearance_fraction;
   result.stress_limit = settings.stress_limit;
@@ -592,12 +592,12 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
   std::vector<ComplexVec> unit_loads;
   for (const ResolvedExcitation& item : excitations) {
     unit_loads.push_back(ExcitationLoad(model, poses, input, item.excitation, 1.0));
-    result.excitation_frequencies.push_back(ExcitationFrequency(item.excitation, settings.rpm_from, item.motor_speed));
+    result.excitation_frequencies.push_back(ExcitationFrequency(item.excitation, settings.speed_from, item.motor_speed));
   }
   for (int j = 0; j < count; ++j) {
-    result.rpm.push_back(settings.rpm_from + j * settings.rpm_step);
+    result.rotary_speeds.push_back(settings.speed_from + j * settings.speed_step);
     for (std::size_t e = 0; e < excitations.size(); ++e) {
-      const double frequency = ExcitationFrequency(excitations[e].excitation, result.rpm.back(), excitations[e].motor_speed);
+      const double frequency = ExcitationFrequency(excitations[e].excitation, result.rotary_speeds.back(), excitations[e].motor_speed);
       tasks.push_back({frequency, j, static_cast<int>(e)});
     }
   }
@@ -607,7 +607,7 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
   const Amplitudes zero{std::vector<double>(stations.size(), 0.0), std::vector<double>(elements.size(), 0.0),
                         std::vector<double>(wall.closed.size(), 0.0), std::vector<double>(excitations.size(), 0.0)};
   const std::vector<Amplitudes> sums =
-      SolveSweep(std::move(tasks), unit_loads, excitations, result.rpm, solvers, zero, {stations, elements, wall.closed});
+      SolveSweep(std::move(tasks), unit_loads, excitations, result.rotary_speeds, solvers, zero, {stations, elements, wall.closed});
   const bool with_clearance = std::any_of(stations.begin(), stations.end(), [](const StationMap& m) { return m.clearance > 0.0; });
   for (const Amplitudes& point : sums) {
     const auto widest = std::max_element(point.displacement.begin(), point.displacement.end());

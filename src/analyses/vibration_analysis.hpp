@@ -41,7 +41,7 @@
 
 namespace drillflex::analyses {
 
-struct RpmWindow {
+struct SpeedWindow {
   double from = 0.0, to = 0.0;  // rad/s
 };
 
@@ -58,7 +58,7 @@ inline constexpr double kReducedCheckTolerance = 0.05;
 
 // A critical RPM with what makes it one.
 struct CriticalSpeed {
-  double rpm = 0.0;             // rad/s
+  double rotary_speed = 0.0;    // rad/s
   double severity = 0.0;        // the clearance ratio there (without clearances: the displacement, m)
   double displacement = 0.0;    // the largest lateral displacement amplitude there, m
   double bending_stress = 0.0;  // the largest bending-stress amplitude there, Pa
@@ -67,7 +67,7 @@ struct CriticalSpeed {
 };
 
 struct VibrationResult {
-  std::vector<double> rpm;                       // rotary speeds Ω, rad/s
+  std::vector<double> rotary_speeds;             // Ω, rad/s
   std::vector<double> max_lateral_displacement;  // m
   std::vector<double> max_clearance_ratio;       // –; empty without clearances (no well)
   std::vector<double> max_bending_stress;        // Pa
@@ -75,12 +75,12 @@ struct VibrationResult {
   std::vector<double> s_max_displacement;        // where the displacement peaks, m from the bit
   // The critical-speed map (analyses/critical_speeds.hpp): the peaks of the clearance ratio (of the
   // displacement without clearances), and the windows that stay below the limits.
-  std::vector<double> critical_rpm;  // rad/s, ascending
+  std::vector<double> critical_rotary_speeds;  // rad/s, ascending
   std::vector<CriticalSpeed> critical_speeds;  // the same peaks, most severe first
-  std::vector<RpmWindow> safe_windows;
+  std::vector<SpeedWindow> safe_windows;
   // The RPM ranges whose severity (clearance ratio, else displacement) stays within kQuietFactor of
   // the least of the sweep: where to drill when no window is safe.
-  std::vector<RpmWindow> quietest_windows;
+  std::vector<SpeedWindow> quietest_windows;
   double clearance_fraction = 0.0;   // the limits used (VibrationSettings)
   double stress_limit = 0.0;         // Pa
   int closed_contacts = 0;           // wall contacts closed at q (springs of the linear model)

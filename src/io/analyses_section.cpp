@@ -52,7 +52,7 @@ analyses::ModesSettings ReadModes(const YamlView& node, const model::Operation& 
     else kind->Fail(fmt::format("expected all, lateral, axial or torsional, got '{}'", name));
   }
   if (const auto gyro = node.OptionalChild("gyroscopic")) settings.gyroscopic = gyro->AsBool();
-  settings.rotary_speed = operation.rpm;
+  settings.rotary_speed = operation.rotary_speed;
   const bool lateral = settings.kind == analyses::ModeKind::All || settings.kind == analyses::ModeKind::Lateral;
   if (settings.gyroscopic && !lateral) {
     node.Child("gyroscopic").Fail("the gyroscopic terms couple lateral motion only: use kind all or lateral");
@@ -117,12 +117,12 @@ analyses::VibrationSettings ReadVibration(const YamlView& node) {
   if (const auto rpm = node.OptionalChild("rpm")) {
     rpm->ExpectMap("an RPM sweep {from, to, step}", false);
     rpm->AllowOnlyKeys({"from", "to", "step"});
-    settings.rpm_from = rpm->QuantityOr("from", Quantity::RotarySpeed, settings.rpm_from);
-    settings.rpm_to = rpm->QuantityOr("to", Quantity::RotarySpeed, settings.rpm_to);
-    settings.rpm_step = rpm->OptionalPositive("step", Quantity::RotarySpeed).value_or(settings.rpm_step);
-    if (settings.rpm_from <= 0.0) rpm->Child("from").Fail("the sweep must start above 0 rpm");
-    if (!(settings.rpm_to >= settings.rpm_from)) rpm->Fail("'to' must not lie below 'from'");
-    if ((settings.rpm_to - settings.rpm_from) / settings.rpm_step > 1.0e5) rpm->Fail("more than 100000 RPM values: use a larger step");
+    settings.speed_from = rpm->QuantityOr("from", Quantity::RotarySpeed, settings.speed_from);
+    settings.speed_to = rpm->QuantityOr("to", Quantity::RotarySpeed, settings.speed_to);
+    settings.speed_step = rpm->OptionalPositive("step", Quantity::RotarySpeed).value_or(settings.speed_step);
+    if (settings.speed_from <= 0.0) rpm->Child("from").Fail("the sweep must start above 0 rpm");
+    if (!(settings.speed_to >= settings.speed_from)) rpm->Fail("'to' must not lie below 'from'");
+    if ((settings.speed_to - settings.speed_from) / settings.speed_step > 1.0e5) rpm->Fail("more than 100000 RPM values: use a larger step");
   }
   settings.clearance_fraction =
       node.OptionalPositive("clearance_fraction", Quantity::Dimensionless).value_or(settings.clearance_fraction);
@@ -190,8 +190,8 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
   // A rotating operation turns the top in a transient too (model/drives.hpp, io/drives_section.cpp).
   if (const auto drive = node.PresentChild("top_drive")) {
     settings.top_drive = ReadTopDrive(*drive, operation);
-  } else if (operation.rpm != 0.0) {
-    settings.top_drive = model::TopDrive{model::TopDriveMode::Speed, {operation.rpm, model::kDefaultTopDriveRamp}};
+  } else if (operation.rotary_speed != 0.0) {
+    settings.top_drive = model::TopDrive{model::TopDriveMode::Speed, {operation.rotary_speed, model::kDefaultTopDriveRamp}};
   }
   if (const auto block = node.PresentChild("block")) settings.block = ReadBlock(*block, operation);
   if (const auto probes = node.OptionalChild("probes")) {

@@ -54,7 +54,7 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
 void AddOperation(const Case& c, const model::ModelInput& input, ResultFiles& files) {
   const OutputUnits out{c.output_units};
   nlohmann::json operation = {{"weight_on_bit", out(input.operation.weight_on_bit, Quantity::WeightOnBit)},
-                              {"rpm", out(input.operation.rpm, Quantity::RotarySpeed)},
+                              {"rpm", out(input.operation.rotary_speed, Quantity::RotarySpeed)},
                               {"torque_on_bit", out(input.operation.torque_on_bit, Quantity::Moment)}};
   if (c.input.operation.hook_load) {
     operation["hook_load"] = out(*c.input.operation.hook_load, Quantity::Force);
@@ -238,8 +238,8 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
   files.Add("mode_shapes.csv", shapes.ToString());
   files.json()["modes"] = modes;
   // The first lateral mode at 1× rotation beside the field rule of thumb (validation.md V6).
-  const RuleOfThumbRpm rule = ComputeRuleOfThumbCriticalRpm(c);
-  json critical = {{"rule_of_thumb", out(rule.rpm, Quantity::RotarySpeed)},
+  const RuleOfThumbSpeed rule = ComputeRuleOfThumbCriticalSpeed(c);
+  json critical = {{"rule_of_thumb", out(rule.rotary_speed, Quantity::RotarySpeed)},
                    {"rule_of_thumb_span", out(rule.span, Quantity::Length)}};
   if (const analyses::ModeResult* lateral = analyses::FirstLateralMode(result)) {
     critical["first_lateral"] = 60.0 * lateral->frequency_hz;

@@ -44,13 +44,13 @@ void AddTransientResults(const Case& c, const analyses::TransientResult& result,
 // 33,055 sqrt(OD² + ID²)/L² rpm (in, ft), for the longest component's OD and ID over the span
 // between the outermost lateral supports; without two of them, one tool-joint spacing of a pipe
 // with joints, else the whole string.
-struct RuleOfThumbRpm {
-  double rpm = 0.0;             // rad/s
+struct RuleOfThumbSpeed {
+  double rotary_speed = 0.0;    // rad/s
   double span = 0.0;            // L, m
   double outer_diameter = 0.0;  // m
   double inner_diameter = 0.0;  // m
 };
-RuleOfThumbRpm ComputeRuleOfThumbCriticalRpm(const Case& c);
+RuleOfThumbSpeed ComputeRuleOfThumbCriticalSpeed(const Case& c);
 
 // MD of a station: bit MD − s with a well, s without one (measured along the string from the bit).
 double StationMd(const Case& c, double s);

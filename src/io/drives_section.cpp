@@ -39,8 +39,8 @@ model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& opera
   drive.mode = model::TopDriveMode::Speed;
   if (node.Has("rpm")) {
     drive.setting.target = node.Quantity("rpm", Quantity::RotarySpeed);
-  } else if (operation.rpm != 0.0) {
-    drive.setting.target = operation.rpm;
+  } else if (operation.rotary_speed != 0.0) {
+    drive.setting.target = operation.rotary_speed;
   } else {
     node.Fail("the top drive has no speed: give 'rpm' (or 'torque') here, or 'rpm' under 'operation'");
   }

@@ -10,7 +10,7 @@ void CompleteModelInput(Case& c) {
   model::ModelInput& input = c.input;
   // A static analysis of a rotating string (rpm > 0): the wall friction acts around the string
   // (rotating off bottom or drilling; torque and drag).
-  if (input.operation.rpm > 0.0) input.static_sliding = model::PrescribedSliding{0.0, input.operation.rpm};
+  if (input.operation.rotary_speed > 0.0) input.static_sliding = model::PrescribedSliding{0.0, input.operation.rotary_speed};
   if (c.well) {
     input.trajectory.emplace(c.well->survey);
     input.bit_md = c.well->bit_md;

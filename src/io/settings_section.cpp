@@ -152,7 +152,7 @@ model::Operation ReadOperationSection(const YamlView& node) {
   model::Operation operation;
   if (node.IsNull()) return operation;
   operation.weight_on_bit = node.QuantityOr("wob", Quantity::WeightOnBit, 0.0);
-  operation.rpm = node.QuantityOr("rpm", Quantity::RotarySpeed, 0.0);
+  operation.rotary_speed = node.QuantityOr("rpm", Quantity::RotarySpeed, 0.0);
   operation.torque_on_bit = node.QuantityOr("torque_on_bit", Quantity::Moment, 0.0);
   operation.flow_rate = node.OptionalQuantity("flow_rate", Quantity::FlowRate);
   operation.hook_load = node.OptionalQuantity("hook_load", Quantity::Force);

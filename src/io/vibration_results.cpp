@@ -12,8 +12,8 @@ using units::Quantity;
 
 }  // namespace
 
-RuleOfThumbRpm ComputeRuleOfThumbCriticalRpm(const Case& c) {
-  RuleOfThumbRpm rule;
+RuleOfThumbSpeed ComputeRuleOfThumbCriticalSpeed(const Case& c) {
+  RuleOfThumbSpeed rule;
   if (c.input.string.components.empty()) return rule;
   // The span: between the outermost supports that hold the string laterally; else, for drill pipe
   // or HWDP with tool joints, one joint spacing (the rule's own use: the pipe between two joints
@@ -42,7 +42,7 @@ RuleOfThumbRpm ComputeRuleOfThumbCriticalRpm(const Case& c) {
   // 33,055 sqrt(OD² + ID²)/L² rpm, OD and ID in in, L in ft (validation.md V6; ±15 %): 60 × the
   // first frequency of a pinned-pinned steel tube of that span, π/(2L²) sqrt(EI/m).
   const double od = rule.outer_diameter / 0.0254, id = rule.inner_diameter / 0.0254, span_ft = rule.span / 0.3048;
-  rule.rpm = 33055.0 * std::sqrt(od * od + id * id) / (span_ft * span_ft) * kPi / 30.0;
+  rule.rotary_speed = 33055.0 * std::sqrt(od * od + id * id) / (span_ft * span_ft) * kPi / 30.0;
   return rule;
 }
 
@@ -58,8 +58,8 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
   CsvTable table(columns, column_units);
   json rpm = json::array(), displacement = json::array(), stress = json::array(), contact = json::array(),
        clearance = json::array(), where = json::array();
-  for (std::size_t i = 0; i < result.rpm.size(); ++i) {
-    std::vector<double> row = {out(result.rpm[i], Quantity::RotarySpeed),
+  for (std::size_t i = 0; i < result.rotary_speeds.size(); ++i) {
+    std::vector<double> row = {out(result.rotary_speeds[i], Quantity::RotarySpeed),
                                out(result.max_lateral_displacement[i], Quantity::Diameter),
                                out(result.s_max_displacement[i], Quantity::Length),
                                out(result.max_bending_stress[i], Quantity::Stress),
@@ -77,10 +77,10 @@ void AddVibrationResults(const Case& c, const analyses::VibrationResult& result,
   for (const auto& window : result.quietest_windows) {
     quiet.push_back({{"from", out(window.from, Quantity::RotarySpeed)}, {"to", out(window.to, Quantity::RotarySpeed)}});
   }
-  for (const double value : result.critical_rpm) critical.push_back(out(value, Quantity::RotarySpeed));
+  for (const double value : result.critical_rotary_speeds) critical.push_back(out(value, Quantity::RotarySpeed));
   json ranked = json::array();
   for (const analyses::CriticalSpeed& speed : result.critical_speeds) {
-    ranked.push_back({{"rpm", out(speed.rpm, Quantity::RotarySpeed)},
+    ranked.push_back({{"rpm", out(speed.rotary_speed, Quantity::RotarySpeed)},
                       {"severity", ratio ? speed.severity : out(speed.severity, Quantity::Diameter)},
                       {"max_lateral_displacement", out(speed.displacement, Quantity::Diameter)},
                       {"max_bending_stress", out(speed.bending_stress, Quantity::Stress)},

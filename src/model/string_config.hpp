@@ -122,7 +122,7 @@ struct Imbalance {
 
 struct Operation {
   double weight_on_bit = 0.0;   // N, compression at the bit
-  double rpm = 0.0;             // surface rotary speed, rad/s
+  double rotary_speed = 0.0;    // surface rotary speed, rad/s
   double torque_on_bit = 0.0;   // N·m
   std::optional<double> flow_rate;  // m³/s
   std::optional<double> hook_load;  // N

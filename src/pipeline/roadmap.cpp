@@ -71,7 +71,7 @@ io::Case WithOperation(io::Case c, double friction, double wob, double tob, mode
   c.input.settings.contact.axial_friction.reset();
   c.input.operation.weight_on_bit = wob;
   c.input.operation.torque_on_bit = tob;
-  c.input.operation.rpm = sliding.rotary_speed;
+  c.input.operation.rotary_speed = sliding.rotary_speed;
   c.input.operation.hook_load.reset();
   c.input.static_sliding = sliding;
   return c;
@@ -157,7 +157,7 @@ analyses::RoadmapSettings CompleteRoadmapSettings(const io::Case& c, const analy
     }
   }
   if (complete.rotary_speed == 0.0) {
-    complete.rotary_speed = c.input.operation.rpm > 0.0 ? c.input.operation.rpm : kDefaultRoadmapRpm;
+    complete.rotary_speed = c.input.operation.rotary_speed > 0.0 ? c.input.operation.rotary_speed : kDefaultRoadmapRpm;
   }
   const double depths = std::floor((td - complete.from_md) / complete.step + 1e-9) + 2.0;
   if (depths * static_cast<double>(complete.friction.size()) > static_cast<double>(kMaxPoints)) {

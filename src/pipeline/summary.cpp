@@ -33,14 +33,14 @@ void WriteCriticalSpeeds(std::ostream& out, const io::Case& c, const analyses::V
     const analyses::CriticalSpeed& critical = result.critical_speeds[k];
     const std::string severity = ratio ? fmt::format("{:.3g} of the clearance, ", critical.severity) : "";
     out << fmt::format("    {}: {}largest amplitude {}, bending {}; {} at {:.3g} Hz\n",
-                             Show(c, critical.rpm, Quantity::RotarySpeed), severity,
+                             Show(c, critical.rotary_speed, Quantity::RotarySpeed), severity,
                              Show(c, critical.displacement, Quantity::Diameter),
                              Show(c, critical.bending_stress, Quantity::Stress), ExcitationName(c, critical.excitation),
                              critical.frequency / (2.0 * kPi));
   }
   if (result.critical_speeds.size() > kListed) {
     std::vector<double> rest;
-    for (std::size_t k = kListed; k < result.critical_speeds.size(); ++k) rest.push_back(result.critical_speeds[k].rpm);
+    for (std::size_t k = kListed; k < result.critical_speeds.size(); ++k) rest.push_back(result.critical_speeds[k].rotary_speed);
     std::sort(rest.begin(), rest.end());
     std::string list;
     for (const double rpm : rest) list += (list.empty() ? "" : ", ") + Show(c, rpm, Quantity::RotarySpeed);
@@ -176,23 +176,23 @@ void WriteCampbell(std::ostream& out, const analyses::CampbellResult& result) {
 }
 
 void WriteCriticalRpm(std::ostream& out, const io::Case& c, const analyses::ModesResult& result) {
-  const io::RuleOfThumbRpm rule = io::ComputeRuleOfThumbCriticalRpm(c);
+  const io::RuleOfThumbSpeed rule = io::ComputeRuleOfThumbCriticalSpeed(c);
   if (const analyses::ModeResult* mode = analyses::FirstLateralMode(result)) {
     out << fmt::format("  critical RPM of the first lateral mode {:.5g} rpm; rule of thumb 33055 sqrt(OD²+ID²)/L² "
                              "{:.5g} rpm (span {}, ±15 %)\n",
-                             60.0 * mode->frequency_hz, rule.rpm * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
+                             60.0 * mode->frequency_hz, rule.rotary_speed * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
     return;
   }
   out << fmt::format("  rule-of-thumb critical RPM 33055 sqrt(OD²+ID²)/L² {:.5g} rpm (span {})\n",
-                           rule.rpm * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
+                           rule.rotary_speed * 30.0 / kPi, Show(c, rule.span, Quantity::Length));
 }
 
 
 
 void WriteVibration(std::ostream& out, const io::Case& c, const analyses::VibrationResult& result) {
   out << fmt::format("vibration: {} rotary speeds, {} to {}; {} wall contacts closed at equilibrium\n",
-                           result.rpm.size(), Show(c, result.rpm.front(), Quantity::RotarySpeed),
-                           Show(c, result.rpm.back(), Quantity::RotarySpeed), result.closed_contacts);
+                           result.rotary_speeds.size(), Show(c, result.rotary_speeds.front(), Quantity::RotarySpeed),
+                           Show(c, result.rotary_speeds.back(), Quantity::RotarySpeed), result.closed_contacts);
   if (result.method == analyses::VibrationMethod::Reduced) {
     out << fmt::format("  solved on a reduced basis of {} vectors (method: direct for the full system)\n",
                              result.basis_size);
@@ -203,7 +203,7 @@ void WriteVibration(std::ostream& out, const io::Case& c, const analyses::Vibrat
   const auto peak = std::max_element(result.max_lateral_displacement.begin(), result.max_lateral_displacement.end());
   const std::size_t i = static_cast<std::size_t>(peak - result.max_lateral_displacement.begin());
   out << fmt::format("  largest lateral displacement amplitude {} at {} ({} from the bit)\n",
-                           Show(c, *peak, Quantity::Diameter), Show(c, result.rpm[i], Quantity::RotarySpeed),
+                           Show(c, *peak, Quantity::Diameter), Show(c, result.rotary_speeds[i], Quantity::RotarySpeed),
                            Show(c, result.s_max_displacement[i], Quantity::Length));
   WriteCriticalSpeeds(out, c, result);
   std::string windows;
@@ -307,7 +307,7 @@ void WriteSummary(std::ostream& out, const io::Case& c, Analysis analysis, const
         const analyses::TransientSettings& settings = results.transient_setup->settings;
         const bool block = settings.block.has_value();
         const bool driven =
-            block || settings.top_drive.has_value() || settings.bit_rock.has_value() || c.input.operation.rpm != 0.0;
+            block || settings.top_drive.has_value() || settings.bit_rock.has_value() || c.input.operation.rotary_speed != 0.0;
         WriteTransient(out, c, *results.transient, driven, block);
       }
       return;

@@ -74,11 +74,11 @@ SweepOutcome SummarizeRun(const CaseResults& results) {
   if (results.static_result) SummarizeStatic(results, outcome);
   if (results.vibration && !results.vibration->critical_speeds.empty()) {
     double lowest = std::numeric_limits<double>::infinity();
-    for (const auto& critical : results.vibration->critical_speeds) lowest = std::min(lowest, critical.rpm);
-    outcome.first_critical_rpm = lowest;
+    for (const auto& critical : results.vibration->critical_speeds) lowest = std::min(lowest, critical.rotary_speed);
+    outcome.first_critical_speed = lowest;
   } else if (results.modes) {
     if (const analyses::ModeResult* mode = analyses::FirstLateralMode(*results.modes)) {
-      outcome.first_critical_rpm = 2.0 * kPi * mode->frequency_hz;  // one turn a period: ω = 2π f
+      outcome.first_critical_speed = 2.0 * kPi * mode->frequency_hz;  // one turn a period: ω = 2π f
     }
   }
   if (results.transient && !results.transient->samples.empty()) {

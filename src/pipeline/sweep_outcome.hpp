@@ -20,7 +20,7 @@ struct SweepOutcome {
   std::string bit_tendency;                     // "build", "drop", "hold" (static, in a well)
   double largest_contact_force = kNotComputed;  // N, the largest wall contact force (static)
   double peak_von_mises_stress = kNotComputed;  // Pa (static)
-  double first_critical_rpm = kNotComputed;     // rad/s: the vibration's lowest critical RPM, else the modes' first lateral
+  double first_critical_speed = kNotComputed;     // rad/s: the vibration's lowest critical RPM, else the modes' first lateral
   double stick_slip_severity = kNotComputed;    // (max − min) / mean bit speed over the transient's second half
   double whirl_speed = kNotComputed;            // rad/s, the whirling probe's precession (0: no whirl; transient)
   std::string whirl;                            // "none", "forward", "backward" (transient; pipeline/drilling_regime.hpp)

@@ -35,7 +35,7 @@ constexpr HeadlineColumn kHeadlines[] = {
     {"bit_side_force", Quantity::Force, &SweepOutcome::bit_side_force},
     {"largest_contact_force", Quantity::Force, &SweepOutcome::largest_contact_force},
     {"peak_von_mises_stress", Quantity::Stress, &SweepOutcome::peak_von_mises_stress},
-    {"first_critical_rpm", Quantity::RotarySpeed, &SweepOutcome::first_critical_rpm},
+    {"first_critical_rpm", Quantity::RotarySpeed, &SweepOutcome::first_critical_speed},
     {"stick_slip_severity", Quantity::Dimensionless, &SweepOutcome::stick_slip_severity},
     {"whirl_speed", Quantity::RotarySpeed, &SweepOutcome::whirl_speed},
     {"hook_load", Quantity::Force, &SweepOutcome::hook_load},

@@ -43,9 +43,9 @@ Excitation Imbalance(double at, double me) {
 
 VibrationSettings Sweep(std::vector<Excitation> excitations, double from_rpm, double to_rpm, double step_rpm) {
   VibrationSettings settings;
-  settings.rpm_from = from_rpm * kPi / 30.0;
-  settings.rpm_to = to_rpm * kPi / 30.0;
-  settings.rpm_step = step_rpm * kPi / 30.0;
+  settings.speed_from = from_rpm * kPi / 30.0;
+  settings.speed_to = to_rpm * kPi / 30.0;
+  settings.speed_step = step_rpm * kPi / 30.0;
   settings.excitations = std::move(excitations);
   return settings;
 }
@@ -56,8 +56,8 @@ TEST(VibrationAnalysis, ResponsesAreLinearAndExcitationsAtOneFrequencySuperpose)
   const VibrationResult one = rod.Run(Sweep({Imbalance(mid, 0.01)}, 100, 3000, 100));
   const VibrationResult doubled = rod.Run(Sweep({Imbalance(mid, 0.02)}, 100, 3000, 100));
   const VibrationResult pair = rod.Run(Sweep({Imbalance(mid, 0.01), Imbalance(mid, 0.01)}, 100, 3000, 100));
-  ASSERT_EQ(one.rpm.size(), 30u);
-  for (std::size_t i = 0; i < one.rpm.size(); ++i) {
+  ASSERT_EQ(one.rotary_speeds.size(), 30u);
+  for (std::size_t i = 0; i < one.rotary_speeds.size(); ++i) {
     const double x = one.max_lateral_displacement[i];
     EXPECT_NEAR(doubled.max_lateral_displacement[i], 2.0 * x, 1e-10 * x);
     EXPECT_NEAR(pair.max_lateral_displacement[i], 2.0 * x, 1e-8 * x);  // two solves added: round-off
@@ -81,8 +81,8 @@ TEST(VibrationAnalysis, EachExcitationHasItsOwnCurve) {
   };
   const VibrationResult one = rod.Run(direct(Sweep({Imbalance(mid, 0.01)}, 100, 3000, 100)));
   ASSERT_EQ(one.excitation_displacement.size(), 1u);
-  ASSERT_EQ(one.excitation_displacement[0].size(), one.rpm.size());
-  for (std::size_t i = 0; i < one.rpm.size(); ++i) {
+  ASSERT_EQ(one.excitation_displacement[0].size(), one.rotary_speeds.size());
+  for (std::size_t i = 0; i < one.rotary_speeds.size(); ++i) {
     EXPECT_NEAR(one.excitation_displacement[0][i], one.max_lateral_displacement[i], 1e-12 * one.max_lateral_displacement[i]);
   }
   Excitation bit;
@@ -95,7 +95,7 @@ TEST(VibrationAnalysis, EachExcitationHasItsOwnCurve) {
   // The same responses to round-off (the bit's lateral force acts at the pinned end: its response is
   // small, compared against the sweep's largest).
   const double scale = *std::max_element(one.max_lateral_displacement.begin(), one.max_lateral_displacement.end());
-  for (std::size_t i = 0; i < both.rpm.size(); ++i) {
+  for (std::size_t i = 0; i < both.rotary_speeds.size(); ++i) {
     const double imbalance = one.max_lateral_displacement[i], alone = bit_alone.max_lateral_displacement[i];
     EXPECT_NEAR(both.excitation_displacement[0][i], imbalance, 1e-9 * scale) << i;
     EXPECT_NEAR(both.excitation_displacement[1][i], alone, 1e-9 * scale) << i;
@@ -129,8 +129,8 @@ TEST(VibrationAnalysis, AnAxialBitForceMovesAStraightRodOnlyAlongItsAxis) {
   bit.harmonic = 3;
   bit.axial = 1000.0;
   const VibrationResult axial = rod.Run(Sweep({bit}, 100, 500, 200));
-  ASSERT_EQ(axial.rpm.size(), 3u);
-  for (std::size_t i = 0; i < axial.rpm.size(); ++i) {
+  ASSERT_EQ(axial.rotary_speeds.size(), 3u);
+  for (std::size_t i = 0; i < axial.rotary_speeds.size(); ++i) {
     EXPECT_LT(axial.max_lateral_displacement[i], 1e-12);
     EXPECT_LT(axial.max_bending_stress[i], 1e-3);  // Pa
   }

@@ -104,13 +104,13 @@ TEST(CaseReader, ReadsEveryKeyOfTheContractInSI) {
   EXPECT_NEAR(c.input.loads[1].force_per_length.z(), 100 * kLbf / kFt, 1e-9);
   EXPECT_NEAR(c.input.loads[2].moment.z(), 500 * kLbf * kFt, 1e-9);
   EXPECT_NEAR(c.input.operation.weight_on_bit, 25000 * kLbf, 1e-6);
-  EXPECT_NEAR(c.input.operation.rpm, 120 * 2 * kPi / 60, 1e-12);
+  EXPECT_NEAR(c.input.operation.rotary_speed, 120 * 2 * kPi / 60, 1e-12);
   EXPECT_NEAR(c.input.operation.torque_on_bit, 5000 * kLbf * kFt, 1e-9);
   ASSERT_TRUE(c.analyses.static_analysis);
   ASSERT_TRUE(c.analyses.modes);
   EXPECT_EQ(c.analyses.modes->count, 10);
   ASSERT_TRUE(c.analyses.vibration);
-  EXPECT_NEAR(c.analyses.vibration->rpm_to, 250 * 2 * kPi / 60, 1e-12);
+  EXPECT_NEAR(c.analyses.vibration->speed_to, 250 * 2 * kPi / 60, 1e-12);
   ASSERT_EQ(c.analyses.vibration->excitations.size(), 2u);
   EXPECT_NEAR(c.analyses.vibration->excitations[0].at, 40 * kFt, 1e-12);
   EXPECT_NEAR(c.analyses.vibration->excitations[0].imbalance, 0.02, 1e-15);

@@ -52,7 +52,7 @@ TEST(CaseValues, SetsScalarsInTheCasesUnitSyntax) {
   EXPECT_NEAR(c.input.settings.contact.friction, 0.3, 1e-15);
   ASSERT_TRUE(c.analyses.transient);
   EXPECT_NEAR(c.analyses.transient->duration, 2.0, 1e-15);
-  EXPECT_NEAR(c.input.operation.rpm, 90 * kPi / 30, 1e-12);
+  EXPECT_NEAR(c.input.operation.rotary_speed, 90 * kPi / 30, 1e-12);
   // A bare number is in the case's units (klbf for a WOB in field units).
   EXPECT_NEAR(Set({{"operation.wob", "12"}}).input.operation.weight_on_bit, 12 * kKlbf, 1e-6);
 }

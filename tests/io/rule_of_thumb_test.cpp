@@ -1,4 +1,4 @@
-// The field rule of thumb for the critical RPM (io/analysis_results.hpp ComputeRuleOfThumbCriticalRpm):
+// The field rule of thumb for the critical RPM (io/analysis_results.hpp ComputeRuleOfThumbCriticalSpeed):
 // 33,055 sqrt(OD² + ID²)/L² rpm (in, ft) over the span it picks.
 #include <gtest/gtest.h>
 
@@ -28,22 +28,22 @@ TEST(RuleOfThumb, SpanIsBetweenSupportsElseOneJointElseTheString) {
   Case c;
   c.input.string.components = {Pipe(30.0, true)};
   // Pipe with tool joints, no supports: one joint spacing (30 ft, one joint per 30 ft item).
-  RuleOfThumbRpm rule = ComputeRuleOfThumbCriticalRpm(c);
+  RuleOfThumbSpeed rule = ComputeRuleOfThumbCriticalSpeed(c);
   EXPECT_NEAR(rule.span, 30.0 * kFoot, 1e-12);
-  EXPECT_NEAR(rule.rpm / kRpm, Rule(30.0), 1e-9 * Rule(30.0));  // 241.63 rpm
+  EXPECT_NEAR(rule.rotary_speed / kRpm, Rule(30.0), 1e-9 * Rule(30.0));  // 241.63 rpm
   // Two lateral supports 600 ft apart win.
   model::Support low, high;
   low.at = 0.0;
   high.at = 600.0 * kFoot;
   low.fixed[model::kY] = high.fixed[model::kZ] = true;
   c.input.supports = {low, high};
-  rule = ComputeRuleOfThumbCriticalRpm(c);
+  rule = ComputeRuleOfThumbCriticalSpeed(c);
   EXPECT_NEAR(rule.span, 600.0 * kFoot, 1e-9);
-  EXPECT_NEAR(rule.rpm / kRpm, Rule(600.0), 1e-9 * Rule(600.0));
+  EXPECT_NEAR(rule.rotary_speed / kRpm, Rule(600.0), 1e-9 * Rule(600.0));
   // No joints and no supports: the whole string (30 × 30 ft).
   c.input.supports.clear();
   c.input.string.components = {Pipe(30.0, false)};
-  EXPECT_NEAR(ComputeRuleOfThumbCriticalRpm(c).span, 900.0 * kFoot, 1e-9);
+  EXPECT_NEAR(ComputeRuleOfThumbCriticalSpeed(c).span, 900.0 * kFoot, 1e-9);
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   const auto reduced = sweep(bench::ThreeExcitationSweep(analyses::VibrationMethod::Reduced));
   ASSERT_EQ(reduced.method, analyses::VibrationMethod::Reduced);
   ASSERT_EQ(direct.method, analyses::VibrationMethod::Direct);
-  ASSERT_EQ(reduced.rpm.size(), 231u);
+  ASSERT_EQ(reduced.rotary_speeds.size(), 231u);
   ASSERT_FALSE(direct.max_clearance_ratio.empty());
   const double displacement = LargestRelativeError(reduced.max_lateral_displacement, direct.max_lateral_displacement);
   const double ratio = LargestRelativeError(reduced.max_clearance_ratio, direct.max_clearance_ratio);
@@ -53,16 +53,16 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   std::printf("reduced sweep: %d basis vectors; largest errors: displacement %.3g %%, "
               "clearance ratio %.3g %%, bending stress %.3g %%; %zu critical RPMs (direct %zu)\n",
               reduced.basis_size, 100.0 * displacement,
-              100.0 * ratio, 100.0 * stress, reduced.critical_rpm.size(), direct.critical_rpm.size());
+              100.0 * ratio, 100.0 * stress, reduced.critical_rotary_speeds.size(), direct.critical_rotary_speeds.size());
   EXPECT_LT(displacement, 0.01);
   EXPECT_LT(ratio, 0.01);
   EXPECT_LT(stress, 0.01);
-  ASSERT_EQ(reduced.critical_rpm.size(), direct.critical_rpm.size());
-  for (std::size_t k = 0; k < direct.critical_rpm.size(); ++k) {
-    EXPECT_NEAR(reduced.critical_rpm[k], direct.critical_rpm[k], 5e-3 * direct.critical_rpm[k]) << k;
-    const auto at = static_cast<std::size_t>(std::lround((direct.critical_rpm[k] - direct.rpm.front()) / (1.0 * kRpm)));
+  ASSERT_EQ(reduced.critical_rotary_speeds.size(), direct.critical_rotary_speeds.size());
+  for (std::size_t k = 0; k < direct.critical_rotary_speeds.size(); ++k) {
+    EXPECT_NEAR(reduced.critical_rotary_speeds[k], direct.critical_rotary_speeds[k], 5e-3 * direct.critical_rotary_speeds[k]) << k;
+    const auto at = static_cast<std::size_t>(std::lround((direct.critical_rotary_speeds[k] - direct.rotary_speeds.front()) / (1.0 * kRpm)));
     EXPECT_NEAR(reduced.max_clearance_ratio[at], direct.max_clearance_ratio[at], 0.02 * direct.max_clearance_ratio[at])
-        << direct.critical_rpm[k] / kRpm << " rpm";
+        << direct.critical_rotary_speeds[k] / kRpm << " rpm";
   }
   EXPECT_LT(reduced.reduced_check_error, analyses::kReducedCheckTolerance);
   // The sweep crosses about a hundred undamped modes (Sylvester's count).

@@ -148,7 +148,7 @@ TEST(Sweep, RowsEqualSingleRunsToTheLastDigit) {
   EXPECT_NEAR(rows[0].outcome.surface_torque, 0.0, 1e-3);
   // (The top node's section force, half an element down, read 0.34 % light: the reaction is taken.)
   // Not computed: no modes, vibration or transient in this case.
-  EXPECT_TRUE(std::isnan(rows[0].outcome.first_critical_rpm));
+  EXPECT_TRUE(std::isnan(rows[0].outcome.first_critical_speed));
   EXPECT_TRUE(std::isnan(rows[0].outcome.stick_slip_severity));
 
   // The table: one row a run, the values as given, empty cells where nothing was computed.

@@ -65,10 +65,13 @@ def test_modes_typed_result(small: drillflex.Case) -> None:
 
 def test_vibration_typed_result(example: drillflex.Case) -> None:
     vb = drillflex.vibration(example.with_values({"analyses.vibration.rpm": "{from: 60, to: 120, step: 5}"}))
-    assert len(vb.rpm) == 13
-    assert vb.rpm[0] == pytest.approx(60 * np.pi / 30)  # rad/s
-    assert vb.max_lateral_displacement.shape == vb.rpm.shape
+    assert len(vb.rotary_speed) == 13
+    assert vb.rotary_speed[0] == pytest.approx(60 * np.pi / 30)  # rad/s
+    assert vb.max_lateral_displacement.shape == vb.rotary_speed.shape
     assert vb.safe_windows.ndim == 2 and vb.safe_windows.shape[1] == 2
+    # The critical speeds (rad/s): the peaks, ascending, and the same speeds as the records (most severe first).
+    assert len(vb.critical_rotary_speed) == 3 and np.all(np.diff(vb.critical_rotary_speed) > 0)
+    assert sorted(r.rotary_speed for r in vb.critical_speeds) == list(vb.critical_rotary_speed)
     assert len(vb.excitation_displacement) == 2
     assert "vibration" in str(vb)
 
