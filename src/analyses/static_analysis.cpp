@@ -258,22 +258,17 @@ void CheckForcesResolved(const model::BuiltModel& built, StaticResult& result) {
                                           100.0 * fraction, result.residual_norm, scale));
     return;
   }
-  const model::Body* stiffest = nullptr;
-  double length = 0.0;
-  for (const model::Body& body : built.system.bodies()) {
-    const double l = body.reduced->node_positions.back().x() - body.reduced->node_positions.front().x();
-    if (!stiffest || body.axial_rigidity / l > stiffest->axial_rigidity / length) {
-      stiffest = &body;
-      length = l;
-    }
-  }
+  const auto& bodies = built.system.bodies();
+  const model::Body& stiffest = *std::max_element(bodies.begin(), bodies.end(), [](const auto& a, const auto& b) {
+    return a.axial_rigidity / a.length() < b.axial_rigidity / b.length();
+  });
   throw SolverError(fmt::format(
       "the equilibrium's forces are not resolved: the solver stopped where the state no longer changes with "
       "|R| = {:.4g} N unbalanced, {:.3g} times the model's loads ({:.4g} N); its stiffest couplings are beyond "
       "double precision (the stiffest body, EA/l = {:.3g} N/m: {:.4g} m long at {:.6g} m from the bit, E = {:.4g} Pa): "
       "a component too short, or a modulus too large",
-      result.residual_norm, fraction, scale, stiffest->axial_rigidity / length, length, stiffest->s_start,
-      stiffest->reduced->spec.material.youngs_modulus));
+      result.residual_norm, fraction, scale, stiffest.axial_rigidity / stiffest.length(), stiffest.length(),
+      stiffest.s_start, stiffest.reduced->spec.material.youngs_modulus));
 }
 
 StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings, const VecX* start) {

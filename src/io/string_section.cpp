@@ -167,11 +167,11 @@ void ReadMaterialsSection(const YamlView& node, std::map<std::string, fe::Materi
     // Bounds that take in every metal and composite a string is made of (composite pipe ~30 GPa,
     // tungsten carbide ~600 GPa; aluminium 2700, tungsten 19 300 kg/m³) and catch a value in the other
     // system's unit: 30e6 read as Pa where psi was meant, a steel density in ppg read as kg/m³.
-    constexpr double kPsi = 6894.757293168361;  // Pa
     if (material.youngs_modulus < 1e8 || material.youngs_modulus > 1.5e12) {
       item.Child("E").Fail(fmt::format("expected a Young's modulus between 0.1 and 1500 GPa (steel's is 207 GPa, "
                                        "30e6 psi), got {:.4g} Pa ({:.4g} psi)",
-                                       material.youngs_modulus, material.youngs_modulus / kPsi));
+                                       material.youngs_modulus,
+                                       units::FromSI(material.youngs_modulus, Quantity::Stress, units::System::Field)));
     }
     if (material.density < 500.0 || material.density > 25000.0) {
       item.Child("density").Fail(fmt::format("expected a density between 500 and 25000 kg/m3 (steel's is 7850 kg/m3, "

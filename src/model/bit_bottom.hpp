@@ -29,7 +29,7 @@ struct BitBottomParameters {
   double damping_ratio = 0.05;  // ζ: c = 2ζ sqrt(k m), m the mass of one FE element of the bit body
   // The bottom's place along t from the bit node's reference place, m (> 0: up-hole of it). A
   // transient that starts at rest on bottom sets it so that the contact carries the start's WOB
-  // (analyses/bit_bottom_start.hpp).
+  // (analyses/transient_start_places.hpp).
   double level = 0.0;
   // The bottom's harmonic axial motion (none when the amplitude is 0).
   double amplitude = 0.0;  // a, m (up-hole first)

@@ -43,6 +43,11 @@ Vec6 ElementInertia(const Body& body) {
   return m;
 }
 
+// c = 2 ζ sqrt(k m): a spring damped at the coupling's ratio ζ against the inertia it holds.
+double SpringDamping(double stiffness, double inertia) {
+  return 2.0 * kCouplingDampingRatio * std::sqrt(stiffness * inertia);
+}
+
 Vec6 SpringDamping(const Vec6& stiffness, const Vec6& inertia) {
   return (2.0 * kCouplingDampingRatio * (stiffness.cwiseProduct(inertia)).cwiseSqrt());
 }
@@ -361,7 +366,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       block_element = static_cast<int>(elements.size());
       // A line softer than the hold starts stretched to the hold's start force k_hold u0 (drives.hpp).
       const double hold = stiffness[kX], line = input.block->line_stiffness.value_or(hold);
-      const double line_damping = 2.0 * kCouplingDampingRatio * std::sqrt(line * ElementInertia(body)[kX]);
+      const double line_damping = SpringDamping(line, ElementInertia(body)[kX]);
       const double preload = (hold - line) * input.block->start_top_displacement;
       elements.push_back(std::make_unique<BlockElement>(&body, top.second, position, frame, *input.block, line,
                                                         line_damping, preload));

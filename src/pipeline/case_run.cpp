@@ -2,8 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "analyses/bit_bottom_start.hpp"
-#include "analyses/block_start.hpp"
+#include "analyses/transient_start_places.hpp"
 #include "core/error.hpp"
 #include "pipeline/summary.hpp"
 

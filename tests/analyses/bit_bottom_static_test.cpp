@@ -3,14 +3,14 @@
 //    the bottom: the contact carries the WOB the axial balance leaves, the string's buoyed weight
 //    along the hole less H (frictionless at rest, so exact: the soft-string balance that
 //    model::WeightOnBitFromHookLoad gives the applied WOB of today's cases).
-//  * The bottom placed for a transient's start (analyses/bit_bottom_start.hpp): at the equilibrium
+//  * The bottom placed for a transient's start (analyses/transient_start_places.hpp): at the equilibrium
 //    under the applied WOB the contact carries that WOB, and the moving model is in balance there
 //    (nothing jumps at t = 0).
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
-#include "analyses/bit_bottom_start.hpp"
+#include "analyses/transient_start_places.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
 #include "cms/reduction_cache.hpp"

@@ -12,8 +12,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analyses/block_start.hpp"
 #include "analyses/transient_analysis.hpp"
+#include "analyses/transient_start_places.hpp"
 #include "analyses_test_support.hpp"
 #include "cms/reduction_cache.hpp"
 
