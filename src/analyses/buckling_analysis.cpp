@@ -34,8 +34,8 @@ struct Equilibrium {
 // string in a well (no case supports) by the energy's minimum (analyses/static_minimum.hpp), each
 // from the equilibrium already found at the nearest multiplier (the first from the string resting on
 // the wall); any other string by Newton's method from the nearest equilibrium found (the first from
-// the reference placement). The path scales every load
-// (one model, load factor μ) or the WOB alone (one model per μ with WOB × μ, load factor 1).
+// the reference placement). The path scales every load (load factor μ) or the WOB alone (the
+// parameter block's WOB, μ × the case's): one model, the case's.
 class EquilibriumSolver {
  public:
   // In a well the string at rest (a rotating string's friction left out: it buckles as it lies).
@@ -50,8 +50,13 @@ class EquilibriumSolver {
   bool scale_wob() const { return scale_wob_; }
   const model::SystemModel& model() const { return built_.system; }
   // The model and its load parameters at multiplier μ (at rest: no friction).
-  const model::SystemModel& ModelAt(double multiplier) { return BuiltAt(multiplier).system; }
-  model::LoadParameters LoadsAt(double multiplier) const { return {scale_wob_ ? 1.0 : multiplier, 0.0}; }
+  const model::SystemModel& ModelAt(double /*multiplier*/) const { return built_.system; }
+  model::LoadParameters LoadsAt(double multiplier) const {
+    model::LoadParameters load(scale_wob_ ? 1.0 : multiplier, 0.0);
+    load.sliding_mode = model::SlidingMode::kVelocities;
+    if (scale_wob_) load.weight_on_bit = multiplier * input_.operation.weight_on_bit;
+    return load;
+  }
 
   Equilibrium At(double multiplier) {
     const model::SystemModel& model = ModelAt(multiplier);
@@ -67,7 +72,7 @@ class EquilibriumSolver {
     }
     Equilibrium result;
     if (!in_well_) {
-      model::StaticModelProblem problem(model, LoadsAt(multiplier).load_factor);
+      model::StaticModelProblem problem(model, LoadsAt(multiplier));
       solvers::NewtonOptions options = DefaultNewtonOptions();
       options.throw_on_failure = false;
       const VecX from = start != nullptr ? *start : model.ReferencePositions();
@@ -75,7 +80,7 @@ class EquilibriumSolver {
       result = {solved.q, solved.converged};
     } else {
       const StaticMinimum minimum =
-          SolveStaticMinimum(InputAt(multiplier), BuiltAt(multiplier), settings_, LoadsAt(multiplier).load_factor, start);
+          SolveStaticMinimum(input_, built_, settings_, LoadsAt(multiplier), start);
       result = {minimum.q, minimum.converged && !minimum.at_rest_only};
     }
     if (result.converged) found_.emplace_back(multiplier, result.q);
@@ -83,32 +88,18 @@ class EquilibriumSolver {
   }
 
  private:
-  model::ModelInput InputAt(double multiplier) const {
-    model::ModelInput scaled = input_;
-    if (scale_wob_) scaled.operation.weight_on_bit *= multiplier;
-    return scaled;
-  }
-  const model::BuiltModel& BuiltAt(double multiplier) {
-    if (!scale_wob_ || multiplier == 1.0) return built_;
-    auto [it, inserted] = models_.try_emplace(multiplier);
-    if (inserted) it->second = std::make_unique<model::BuiltModel>(model::BuildSystemModel(InputAt(multiplier), cache_));
-    return *it->second;
-  }
-
   model::ModelInput input_;
   const model::BuiltModel& built_;
   const StaticSettings& settings_;
   const bool scale_wob_;
   const bool in_well_;
   std::vector<std::pair<double, VecX>> found_;  // (μ, equilibrium) found so far
-  cms::ReductionCache cache_;
-  std::map<double, std::unique_ptr<model::BuiltModel>> models_;  // WOB × μ
 };
 
 // The largest axial compression along the string at q (N, ≥ 0).
-double MaxCompression(const model::SystemModel& model, const VecX& q, double load_factor) {
+double MaxCompression(const model::SystemModel& model, const VecX& q, const model::LoadParameters& load) {
   double compression = 0.0;
-  for (const StaticNodeResult& node : StaticNodeResults(model, q, load_factor)) {
+  for (const StaticNodeResult& node : StaticNodeResults(model, q, load)) {
     compression = std::max(compression, -node.axial_force);
   }
   return compression;
@@ -254,7 +245,7 @@ bool SampleLateralMode(EquilibriumSolver& solver, double multiplier, LateralSamp
     if (total <= 0.0 || split.lateral < 0.5 * total) continue;
     sample.multiplier = multiplier;
     sample.eigenvalue = modal.eigenvalues[i];
-    sample.compression = MaxCompression(model, equilibrium.q, solver.LoadsAt(multiplier).load_factor);
+    sample.compression = MaxCompression(model, equilibrium.q, solver.LoadsAt(multiplier));
     sample.q = equilibrium.q;
     sample.mode = modal.vectors.col(i);
     return true;

@@ -12,9 +12,9 @@
 namespace drillflex::analyses {
 namespace {
 
-SparseMat StaticTangent(const model::SystemModel& model, const VecX& q) {
+SparseMat StaticTangent(const model::SystemModel& model, const VecX& q, const model::LoadParameters& parameters) {
   const VecX zero = VecX::Zero(model.num_velocities());
-  const SparseMat tangent = model.IterationMatrix(0.0, q, zero, zero, 1.0, 1.0, 0.0, 0.0);
+  const SparseMat tangent = model.IterationMatrix(0.0, q, zero, zero, parameters, 1.0, 0.0, 0.0);
   return tangent;
 }
 
@@ -32,7 +32,8 @@ double LowestElasticEigenvalue(const model::SystemModel& model, const VecX& q) {
 
 }  // namespace
 
-RelaxationResult SolveByDynamicRelaxation(const model::SystemModel& model, const RelaxationOptions& options) {
+RelaxationResult SolveByDynamicRelaxation(const model::SystemModel& model, const RelaxationOptions& options,
+                                          const model::LoadParameters& parameters) {
   const int n = model.num_velocities();
   const VecX zero = VecX::Zero(n);
   RelaxationResult result;
@@ -44,9 +45,9 @@ RelaxationResult SolveByDynamicRelaxation(const model::SystemModel& model, const
   solvers::SparseLinearSolver solver;
   for (int step = 1; step <= options.max_steps; ++step) {
     const SparseMat mass = model.MassMatrix(result.q);
-    const VecX residual = model.Residual(0.0, result.q, zero, zero, 1.0);
+    const VecX residual = model.Residual(0.0, result.q, zero, zero, parameters);
     // (M/h + C + h K) v₁ = M v₀/h − R(q₀) with C = 2 ζ ω₁ M (header).
-    const SparseMat matrix = ((1.0 / h + damping) * mass + h * StaticTangent(model, result.q)).pruned();
+    const SparseMat matrix = ((1.0 / h + damping) * mass + h * StaticTangent(model, result.q, parameters)).pruned();
     solver.Factorize(matrix, solvers::MatrixSymmetry::kAuto);
     v = solver.Solve(VecX(mass * v / h - residual));
     result.q = model.Increment(result.q, h * v);
@@ -58,7 +59,7 @@ RelaxationResult SolveByDynamicRelaxation(const model::SystemModel& model, const
       break;
     }
   }
-  result.residual_norm = model.Residual(0.0, result.q, zero, zero, 1.0).norm();
+  result.residual_norm = model.Residual(0.0, result.q, zero, zero, parameters).norm();
   if (!result.converged) {
     throw SolverError(fmt::format(
         "dynamic relaxation did not converge in {} steps (last pseudo-kinetic energy {:.3g} J, |R| = {:.3g} N)",

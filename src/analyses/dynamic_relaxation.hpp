@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/types.hpp"
+#include "model/load_parameters.hpp"
 #include "model/system_model.hpp"
 
 namespace drillflex::analyses {
@@ -28,6 +29,7 @@ struct RelaxationResult {
 };
 
 // Throws SolverError when it does not converge within max_steps.
-RelaxationResult SolveByDynamicRelaxation(const model::SystemModel& model, const RelaxationOptions& options);
+RelaxationResult SolveByDynamicRelaxation(const model::SystemModel& model, const RelaxationOptions& options,
+                                          const model::LoadParameters& parameters = 1.0);
 
 }  // namespace drillflex::analyses

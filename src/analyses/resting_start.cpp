@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/profile.hpp"
 #include "core/so3.hpp"
 #include "model/spring_elements.hpp"
 #include "model/wall_contact.hpp"
@@ -365,6 +367,7 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
 }  // namespace
 
 VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built) {
+  const profile::Scope scope("static: resting start");
   if (!input.trajectory || input.hole.empty()) throw LogicError("RestingStart: the string is not in a hole");
   const model::SystemModel& system = built.system;
   std::vector<NodeStation> stations = Stations(input, system);
@@ -410,22 +413,30 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   return q;
 }
 
-void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& built, VecX& q) {
+void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& built, VecX& q,
+                      const model::LoadParameters& parameters) {
   const auto& bodies = built.system.bodies();
   // The torque each body carries: the torque on bit plus, when the string rotates, the wall
   // friction μ_t N R_c of the contacts below (N as they are at q).
   std::vector<double> friction_torque(bodies.size(), 0.0);
-  if (input.static_sliding && input.static_sliding->rotary_speed != 0.0) {
+  const bool as_built = parameters.sliding_mode == model::SlidingMode::kAsBuilt;
+  const std::optional<model::PrescribedSliding> sliding =
+      as_built ? input.static_sliding
+               : (parameters.sliding_mode == model::SlidingMode::kPrescribed ? std::optional(parameters.sliding)
+                                                                             : std::nullopt);
+  if (sliding && sliding->rotary_speed != 0.0) {
     const auto poses = built.system.Poses(q);
     const VecX rest = VecX::Zero(built.system.num_velocities());
     for (const int index : built.contact_elements) {
       const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
-      const model::WallContactResult state = contact.Result(built.system.StateOf(contact, poses, rest, 0.0, 1.0));
+      const model::WallContactResult state =
+          contact.Result(built.system.StateOf(contact, poses, rest, 0.0, parameters));
       const int body = built.system.IndexOf(contact.bodies()[0]);
       // A rotating pipe climbs the wall until the friction balances the lateral load, which then
       // splits into N and μN: N = F⊥/√(1 + μ²) of the frictionless N = F⊥.
-      const double mu = contact.parameters().tangential_friction;
-      friction_torque[body] += mu * state.normal_force / std::sqrt(1.0 + mu * mu) * contact.parameters().contact_radius;
+      const model::WallContactParameters effective = contact.EffectiveParameters(parameters);
+      const double mu = effective.tangential_friction;
+      friction_torque[body] += mu * state.normal_force / std::sqrt(1.0 + mu * mu) * effective.contact_radius;
     }
   }
   std::vector<double> torque(bodies.size(), 0.0);

@@ -40,7 +40,10 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
 // θ(s) = ∫_s^top T ds'/GJ, T the torque on bit plus, when the string rotates
 // (ModelInput::static_sliding), the wall friction torque μ_t N R_c of the contacts below s with
 // their normal forces N at q (e.g. of an equilibrium without friction; the friction changes them
-// little). `built` gives the contacts; its bodies are those of q.
-void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& built, VecX& q);
+// little). `built` gives the contacts; its bodies are those of q. Under `parameters`: the friction
+// coefficients and sliding of its block (model::WallContactElement::EffectiveParameters); the
+// torque on bit is the input's.
+void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& built, VecX& q,
+                      const model::LoadParameters& parameters = 1.0);
 
 }  // namespace drillflex::analyses

@@ -1,6 +1,6 @@
 // Static analysis (method.md §9.1): the equilibrium R(q) = 0 of the string under its loads
-// (weight, applied loads, supports), found by Newton's method with load stepping
-// (solvers::SolveStatic) from the reference placement, and the results along the string.
+// (weight, applied loads, supports), found by the chain of analyses/static_solve.hpp, and the
+// results along the string.
 #pragma once
 
 #include <optional>
@@ -81,10 +81,10 @@ struct StaticResult {
   std::vector<SupportReaction> reactions; // one per case support, in case order
   std::vector<ContactReport> contacts;     // wall contacts carrying force, from the bit upward
   std::optional<BitReport> bit;            // in a well, with a support at the bit
-  // How the equilibrium was found (results.json `static.method_used`): "newton" (load stepping),
-  // "energy-minimum" (the energy trust region from the resting start), "energy-minimum+friction"
-  // (then continued in the rotating friction), "coupling-stages" or "centreline-release" (the
-  // older paths, kept as fallbacks), "dynamic-relaxation".
+  // How the equilibrium was found (results.json `static.method_used`; analyses/static_solve.hpp):
+  // "newton" (load stepping), "energy-minimum" (the energy trust region from the resting start),
+  // "energy-minimum+friction" (then continued in the sliding friction), "continuation" (Newton from
+  // a neighbouring equilibrium), "dynamic-relaxation".
   std::string method;
   // What the engineer must know about the answer (a fallback that was needed, a rotating string
   // answered at rest), in words; also in results.json (`static.warnings`).
@@ -92,38 +92,41 @@ struct StaticResult {
   bool stable = false;  // the tangent stiffness has no negative eigenvalue (checked by the solver)
 };
 
-// The contacts carrying force and the bit report at a state (filled in by RunStatic).
-std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q);
+// The contacts carrying force and the bit report at a state (filled in by RunStatic), the model
+// evaluated under `parameters` (its friction, the bit's hold).
+std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q,
+                                          const model::LoadParameters& parameters = 1.0);
 std::optional<BitReport> ComputeBitReport(const model::BuiltModel& built, const StaticResult& result);
 
-// Solves the static equilibrium at load factor 1. Newton: at most min(max_iterations, 50)
-// iterations per load step. DynamicRelaxation: analyses/dynamic_relaxation.hpp, at most
-// max_iterations × 10 pseudo-time steps. With `start`, a state near the equilibrium at full load,
-// Newton runs at λ = 1 from it without load stepping. Throws SolverError when it does not converge.
-StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings,
-                       const VecX* start = nullptr);
+// The static equilibrium of a string on its case supports (or without a well): Newton with load
+// stepping from the reference placement (at most min(max_iterations, 50) iterations a load step),
+// or dynamic relaxation when the settings ask for it (at most max_iterations × 10 pseudo-time
+// steps). Throws SolverError, saying where and why, when it does not converge.
+StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings);
 
-// A string in a well on the default supports (model::DefaultWellSupports: the top free to lie on
-// the wall). Newton starts from the string resting on the wall (analyses/resting_start.hpp):
-// first with soft couplings and no torque on bit, then twisted by the torque on bit and solved at
-// the case's settings. Should that fail, the slower fallback starts from the centreline with the
-// top also held at the hole centre and releases it by a homotopy in the hold's stiffness. `input`
-// is what `built` was built from; the intermediate models reuse the reductions in `cache`.
-// Other cases: RunStatic.
+// The static equilibrium of `built` (made from `input`) under `parameters`, by the chain of
+// analyses/static_solve.hpp: a string in a well on the default supports by the energy's minimum
+// from the string resting on the wall, continued in the friction when it slides; other strings as
+// RunStatic. Throws SolverError, saying why, when no strategy converges.
 StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
-                             cms::ReductionCache& cache, const StaticSettings& settings);
+                             const StaticSettings& settings, const model::LoadParameters& parameters = 1.0);
 
-// The results along the string at a given state q (used by RunStatic, buckling and tests).
-// `load_factor` scales the dead loads used for the axial force inside bodies
+// The results along the string, the reactions, the contacts and the bit of a converged equilibrium
+// under `parameters` (CheckForcesResolved first).
+StaticResult WithResults(const model::BuiltModel& built, StaticResult result, const model::LoadParameters& parameters);
+
+// The results at a given state q (used by RunStatic, buckling and tests), the dead loads scaled by
+// `load` (model::NodalLoadElement::Scale) for the axial force inside bodies
 // (model/internal_forces.hpp). At a joint the internal forces are the coupling force (the section
 // between the two bodies; a point load at the joint acts on the upper body's node, above it).
 std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
-                                                double load_factor = 1.0);
+                                                const model::LoadParameters& load = 1.0);
 // The same at the listed stations only (indices into StringStations(model)), in that order: a
 // transient run's samples (the bit, the top, the probes) without the forces of the whole string.
-std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q, double load_factor,
-                                                std::span<const int> station_indices);
-std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q);
+std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
+                                                const model::LoadParameters& load, std::span<const int> station_indices);
+std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q,
+                                             const model::LoadParameters& parameters = 1.0);
 
 // A converged `result` that leaves more than 1 % of the model's force scale (its loads) unbalanced is
 // no equilibrium of them (a solver stops where the state no longer changes: with couplings so stiff

@@ -4,6 +4,7 @@
 
 #include "analyses/resting_start.hpp"
 #include "analyses/static_analysis.hpp"
+#include "core/profile.hpp"
 #include "model/static_problem.hpp"
 #include "solvers/energy_trust_region.hpp"
 
@@ -14,7 +15,7 @@ namespace {
 constexpr int kMaxTrustRegionIterations = 1000;
 // The first trust radius, m (a mass-weighted RMS move of the string): a tenth of a typical
 // clearance's few centimetres, over the part of the string that moves.
-constexpr double kInitialRadius = 1e-3;
+constexpr double kInitialRadius = 1e-2;
 // The friction continuation of a rotating string: the largest lateral move of a node in a Newton
 // step (m), the iterations of a step and of the whole continuation, its first and smallest step.
 constexpr double kWallStepLimit = 0.01;
@@ -25,16 +26,34 @@ constexpr double kSmallestFrictionStep = 1e-3;
 
 }  // namespace
 
+model::ModelInput EffectiveInput(const model::ModelInput& input, const model::LoadParameters& parameters) {
+  model::ModelInput effective = input;
+  const double load = parameters.load_factor;
+  effective.gravity *= load * parameters.weight_factor;
+  effective.operation.weight_on_bit = load * parameters.weight_on_bit.value_or(input.operation.weight_on_bit);
+  effective.operation.torque_on_bit = load * parameters.torque_on_bit.value_or(input.operation.torque_on_bit);
+  if (parameters.wall_friction) {
+    effective.settings.contact.friction = parameters.wall_friction->tangential;
+    effective.settings.contact.axial_friction = parameters.wall_friction->axial;
+  }
+  if (parameters.sliding_mode == model::SlidingMode::kVelocities) effective.static_sliding.reset();
+  if (parameters.sliding_mode == model::SlidingMode::kPrescribed) effective.static_sliding = parameters.sliding;
+  return effective;
+}
+
+bool Slides(const model::ModelInput& input, const model::LoadParameters& parameters) {
+  return parameters.sliding_mode == model::SlidingMode::kPrescribed ||
+         (parameters.sliding_mode == model::SlidingMode::kAsBuilt && input.static_sliding.has_value());
+}
+
 StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::BuiltModel& built,
-                                 const StaticSettings& settings, double load_scale, const VecX* start) {
-  // The string at rest: a rotating one's friction is switched off (friction factor 0) until the
-  // continuation below. The start knows the loads (scaled: the soft-string estimate of the string
-  // under load_scale × the case's weights, WOB and torque).
-  model::ModelInput still = input;
+                                 const StaticSettings& settings, const model::LoadParameters& parameters,
+                                 const VecX* start) {
+  // The string at rest: a moving one's friction is switched off (friction factor 0) until the
+  // continuation below. The start knows the loads (the soft-string estimate of the string under the
+  // block's weights, WOB and torque).
+  model::ModelInput still = EffectiveInput(input, parameters);
   still.static_sliding.reset();
-  still.gravity *= load_scale;
-  still.operation.weight_on_bit *= load_scale;
-  still.operation.torque_on_bit *= load_scale;
   VecX q;
   if (start) {
     q = *start;
@@ -46,9 +65,10 @@ StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::Bu
     settings.log(fmt::format("static: the energy's minimum from {} (c = {:g}{})",
                              start ? "the given state" : "the string resting on the wall",
                              input.settings.coupling_factor,
-                             load_scale == 1.0 ? std::string() : fmt::format(", loads × {:g}", load_scale)));
+                             parameters.load_factor == 1.0 ? std::string()
+                                                           : fmt::format(", loads × {:g}", parameters.load_factor)));
   }
-  model::StaticModelProblem problem(built.system, load_scale, model::StaticModelProblem::Ramp::kFriction);
+  model::StaticModelProblem problem(built.system, parameters, model::StaticModelProblem::Ramp::kFriction);
   problem.SetLoadFactor(0.0);
   const solvers::NewtonOptions newton = DefaultNewtonOptions();
   solvers::EnergyTrustRegionOptions options;
@@ -74,11 +94,28 @@ StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::Bu
                              solved.negative_curvature_steps, solved.second_order_corrections, solved.residual_norm,
                              solved.converged ? "" : ": " + solved.failure));
   }
-  if (!result.converged || !input.static_sliding) return result;
-  // Rotating: the friction acts around the string and has no potential. From the minimum at rest, a
-  // continuation in the friction factor 0 → 1 by Newton (static-solver.md §6), its steps cut to
-  // kWallStepLimit across the hole.
-  solvers::NewtonOptions continuation = newton;
+  if (!result.converged || !Slides(input, parameters)) return result;
+  const FrictionContinuation moving = ContinueInFriction(built, settings, parameters, result.q);
+  result.iterations += moving.iterations;
+  if (moving.converged) {
+    result.q = moving.q;
+    result.residual_norm = moving.residual_norm;
+  } else {
+    // The equilibrium at rest stands (result.q); the friction's own balance was not found.
+    result.at_rest_only = true;
+    result.failure = moving.failure;
+  }
+  return result;
+}
+
+FrictionContinuation ContinueInFriction(const model::BuiltModel& built, const StaticSettings& settings,
+                                        const model::LoadParameters& parameters, const VecX& at_rest) {
+  // The friction acts around (or along) the string and has no potential. From the equilibrium at
+  // rest, a continuation in the friction factor 0 → 1 by Newton (static-solver.md §6), its steps
+  // cut to kWallStepLimit across the hole.
+  const profile::Scope scope("static: friction continuation");
+  model::StaticModelProblem problem(built.system, parameters, model::StaticModelProblem::Ramp::kFriction);
+  solvers::NewtonOptions continuation = DefaultNewtonOptions();
   continuation.force_scale = built.force_scale;
   continuation.max_increment = kWallStepLimit;
   continuation.max_iterations = kContinuationStepIterations;
@@ -87,23 +124,22 @@ StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::Bu
   continuation.load_stepping.min_step = kSmallestFrictionStep;
   continuation.throw_on_failure = false;
   continuation.log = settings.log;
-  if (settings.log) settings.log("static: rotating, the friction from 0 to its value");
-  const solvers::StaticResult rotating = solvers::SolveStatic(problem, result.q, continuation);
-  result.iterations += rotating.iterations;
-  if (rotating.converged) {
-    result.q = rotating.q;
-    result.residual_norm = rotating.residual_norm;
-  } else {
-    // The equilibrium at rest stands (result.q); the friction's own balance was not found.
-    result.at_rest_only = true;
-    result.failure = fmt::format("with the friction of the rotating string acting around it no static balance was "
-                                 "found beyond {:.3g} of its value (|R| {:.4g} N): the contacts walk around the hole, "
-                                 "as a string that whirls",
-                                 rotating.load_factor, rotating.residual_norm);
-  }
+  if (settings.log) settings.log("static: sliding, the friction from 0 to its value");
+  const solvers::StaticResult moving = solvers::SolveStatic(problem, at_rest, continuation);
   if (settings.log) {
-    settings.log(fmt::format("static: friction continuation {} after {} Newton iterations in {} steps", 
-                             rotating.converged ? "converged" : "stopped", rotating.iterations, rotating.load_steps));
+    settings.log(fmt::format("static: friction continuation {} after {} Newton iterations in {} steps",
+                             moving.converged ? "converged" : "stopped", moving.iterations, moving.load_steps));
+  }
+  FrictionContinuation result;
+  result.converged = moving.converged;
+  result.q = moving.q;
+  result.iterations = moving.iterations;
+  result.residual_norm = moving.residual_norm;
+  if (!moving.converged) {
+    result.failure = fmt::format("with the friction of the sliding string acting no static balance was found beyond "
+                                 "{:.3g} of its value (|R| {:.4g} N): the contacts walk around the hole, as a string "
+                                 "that whirls",
+                                 moving.load_factor, moving.residual_norm);
   }
   return result;
 }

@@ -31,11 +31,34 @@ struct StaticMinimum {
   bool at_rest_only = false;
 };
 
-// `input` with a trajectory and a hole and no case supports; `built` made from it. The loads are
-// load_scale × the case's (the buckling analysis); `start`, if given, replaces the resting start (a
-// nearby equilibrium). Never throws on a failure to converge (see `failure`).
+// `input` with a trajectory and a hole; `built` made from it, evaluated under `parameters` (the loads
+// scaled or replaced: the buckling analysis's multiplier, the roadmap's WOB and friction; its
+// sliding says whether the string moves). `start`, if given, replaces the resting start (a nearby
+// equilibrium). Never throws on a failure to converge (see `failure`).
 StaticMinimum SolveStaticMinimum(const model::ModelInput& input, const model::BuiltModel& built,
-                                 const StaticSettings& settings, double load_scale = 1.0,
+                                 const StaticSettings& settings, const model::LoadParameters& parameters = 1.0,
                                  const VecX* start = nullptr);
+
+// A sliding string's equilibrium continued from its equilibrium at rest `at_rest` (the friction factor
+// from 0 to 1 by Newton, static-solver.md §6), under `parameters`. Never throws on a failure to
+// converge (see `failure`).
+struct FrictionContinuation {
+  VecX q;
+  bool converged = false;
+  int iterations = 0;
+  double residual_norm = 0.0;
+  std::string failure;
+};
+FrictionContinuation ContinueInFriction(const model::BuiltModel& built, const StaticSettings& settings,
+                                        const model::LoadParameters& parameters, const VecX& at_rest);
+
+// `input` with the values of `parameters` in it (the buoyed weight, WOB and torque on bit scaled or
+// replaced, the friction coefficients, the sliding), for what reads the input rather than the model:
+// the resting start's soft-string estimate and the twist under torque.
+model::ModelInput EffectiveInput(const model::ModelInput& input, const model::LoadParameters& parameters);
+
+// Whether the string moves against the wall under `parameters` (its friction has a prescribed
+// direction): the case's static_sliding, or the block's own.
+bool Slides(const model::ModelInput& input, const model::LoadParameters& parameters);
 
 }  // namespace drillflex::analyses

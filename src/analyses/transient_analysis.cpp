@@ -164,6 +164,7 @@ model::ModelInput TransientModelInput(const model::ModelInput& input, const Tran
   model::ModelInput transient = input;
   if (input.fluid) transient.transient_fluid_frequency = fluid_frequency;
   transient.static_sliding.reset();
+  transient.initial_loads.clear();  // they act in the start only
   transient.top_drive = settings.top_drive;
   transient.block = settings.block;
   // operation.hook_load is the hook's at the surface: the model's top carries it less the string
@@ -193,25 +194,19 @@ double TransientFluidFrequency(const model::ModelInput& input, const model::Buil
 }
 
 VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,
-                             cms::ReductionCache& cache, const TransientSettings& settings,
-                             const StaticSettings& static_settings) {
+                             const TransientSettings& settings, const StaticSettings& static_settings) {
   if (settings.start == TransientStart::Reference) return built.system.ReferencePositions();
-  if (settings.initial_loads.empty() && !input.static_sliding && !input.top_drive && !input.block &&
-      !input.bit_rock) {
-    return RunStaticInWell(input, built, cache, static_settings).q;
+  if (settings.initial_loads.size() != input.initial_loads.size()) {
+    throw LogicError("transient: the case's model does not carry the transient's initial loads");
   }
-  // The same string at rest with the initial loads added: the same bodies, so the same coordinates.
-  model::ModelInput loaded = input;
-  loaded.static_sliding.reset();
-  loaded.top_drive.reset();
-  loaded.block.reset();
-  loaded.bit_rock.reset();  // at rest on bottom under the case's WOB and TOB
-  loaded.loads.insert(loaded.loads.end(), settings.initial_loads.begin(), settings.initial_loads.end());
-  const model::BuiltModel start_model = model::BuildSystemModel(loaded, cache);
-  if (start_model.system.num_positions() != built.system.num_positions()) {
-    throw LogicError("transient: the model with the initial loads has other coordinates than the case's");
-  }
-  return RunStaticInWell(loaded, start_model, cache, static_settings).q;
+  // The string at rest (no sliding friction) on bottom under the case's WOB and TOB, with the
+  // initial loads switched on: the case's model under another parameter block.
+  model::LoadParameters start;
+  start.initial_load_factor = 1.0;
+  start.sliding_mode = model::SlidingMode::kVelocities;
+  model::ModelInput still = input;
+  still.static_sliding.reset();
+  return RunStaticInWell(still, built, static_settings, start).q;
 }
 
 TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, const TransientSettings& settings,

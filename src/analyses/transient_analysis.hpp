@@ -98,11 +98,11 @@ double TransientFluidFrequency(const model::ModelInput& input, const model::Buil
 
 // The start state q: the static equilibrium of the case's model at rest (without prescribed
 // sliding; the supports hold the top, the drives start from it) with `initial_loads` added (solved
-// by RunStaticInWell on a model built from `input` plus those loads, which has the same coordinates),
-// or the reference placement (start: reference). Throws SolverError when the statics fail.
+// by RunStaticInWell on the case's model with its initial-load group switched on: `input` must carry
+// them as its initial_loads, model/builder.hpp), or the reference placement (start: reference).
+// Throws SolverError when the statics fail.
 VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,
-                             cms::ReductionCache& cache, const TransientSettings& settings,
-                             const StaticSettings& static_settings);
+                             const TransientSettings& settings, const StaticSettings& static_settings);
 
 // Integrates `built` from (q0, v = 0) over settings.duration. Throws SolverError (with the time and
 // reason) when a step cannot be completed.

@@ -12,6 +12,7 @@
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "core/profile.hpp"
 #include "pipeline/case_files.hpp"
 #include "pipeline/case_run.hpp"
 #include "pipeline/summary.hpp"
@@ -59,6 +60,7 @@ class ProgressBar {
 
 int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& request, const char* command) {
   const auto start = std::chrono::steady_clock::now();
+  profile::Enable(options.profile);
   const io::Case c = io::ReadCase(options.case_path);
   const bool report = c.output.report && !options.no_report, vtk = c.output.vtk && !options.no_report;
   ProgressBar bar;
@@ -83,6 +85,7 @@ int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << fmt::format("results written to {} ({:.3g} s){}\n", files.directory(), seconds,
                            report ? fmt::format("; the report: {}/report.html", files.directory()) : "");
+  if (options.profile) std::cerr << profile::FormatReport(seconds);
   return kExitOk;
 }
 

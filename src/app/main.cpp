@@ -87,6 +87,8 @@ int main(int argc, char** argv) {
       sub->add_option("-o,--output", options.output_directory,
                       "Output directory (default: results/<case name>)");
       sub->add_flag("-v,--verbose", options.verbose, "Print the solvers' progress (stages, Newton iterations)");
+      sub->add_flag("--profile", options.profile,
+                    "Print where the solve spent its time (assembly, factorizations, solvers) on standard error");
       if (command.writes_report) {
         sub->add_flag("--no-report", options.no_report, "Write no report.html and no VTK files (batch runs)");
       }

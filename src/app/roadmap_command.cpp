@@ -9,12 +9,14 @@
 
 #include "app/batch_progress.hpp"
 #include "app/commands.hpp"
+#include "core/profile.hpp"
 #include "pipeline/roadmap.hpp"
 
 namespace drillflex::app {
 
 int RunRoadmapCommand(const CommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  profile::Enable(options.profile);
   io::Case c = io::ReadCase(options.case_path);
   // The command line's settings go through the case reader as the case's own would (units, checks).
   std::vector<io::CaseValue> values;
@@ -45,6 +47,7 @@ int RunRoadmapCommand(const CommandOptions& options) {
   std::cout << fmt::format("roadmap: {} points, {} failed; results in {}/roadmap.csv{} ({:.3g} s)\n", points.size(),
                            failed, directory, report ? fmt::format(", the plots in {}/report.html", directory) : "",
                            seconds);
+  if (options.profile) std::cerr << profile::FormatReport(seconds);
   return kExitOk;
 }
 

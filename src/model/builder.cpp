@@ -167,6 +167,48 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
   return bodies;
 }
 
+// The work-equivalent nodal forces and moments of a load along a body: the buoyed weight (a global
+// line load over every element) or one of the case's distributed loads (string frame, over the part
+// of each element inside [from, to]). True when the load reaches the body.
+struct LineLoad {
+  Vec3 global_per_length = Vec3::Zero();  // N/m, global (the weight)
+};
+bool AddDistributedLoad(const Body& body, const LineLoad& line, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
+  if (line.global_per_length.isZero(0.0)) return false;
+  const Mat3 frame = body.reference_orientation.toRotationMatrix();
+  auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
+  for (int k = 0; k + 1 < body.node_count(); ++k) {
+    AddUniformLineLoad(node_position(k), node_position(k + 1), line.global_per_length, forces[k], moments[k],
+                       forces[k + 1], moments[k + 1]);
+  }
+  return true;
+}
+
+bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
+  const Mat3 frame = body.reference_orientation.toRotationMatrix();
+  auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
+  auto node_s = [&](int k) { return body.s_start + body.reduced->node_positions[k].x(); };
+  bool any = false;
+  for (int k = 0; k + 1 < body.node_count(); ++k) {
+    const double a = std::max(load.from, node_s(k)), c = std::min(load.to, node_s(k + 1));
+    if (c <= a) continue;
+    any = true;
+    const Vec3 q = frame * load.force_per_length;
+    const Vec3 m = frame * load.moment_per_length;
+    const double h = node_s(k + 1) - node_s(k);
+    if (c - a >= h * (1.0 - 1e-12)) {
+      AddUniformLineLoad(node_position(k), node_position(k + 1), q, forces[k], moments[k], forces[k + 1], moments[k + 1]);
+    } else {  // a partly loaded element: the resultant shared by the lever rule
+      const double share = (0.5 * (a + c) - node_s(k)) / h;
+      forces[k] += (1.0 - share) * (c - a) * q;
+      forces[k + 1] += share * (c - a) * q;
+    }
+    moments[k] += 0.5 * (c - a) * m;
+    moments[k + 1] += 0.5 * (c - a) * m;
+  }
+  return any;
+}
+
 }  // namespace
 
 // Buoyed weight per length, N/m (method.md §7): g (ρ_s A − ρ_f A_o + ρ_f,i A_i).
@@ -345,8 +387,9 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     Vec6 stiffness = support.stiffness_scale * kSupportStiffnessFactor * SectionCouplingStiffness(body, factor);
     for (int d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
     support_elements.push_back(static_cast<int>(elements.size()));
+    const bool holds_bit = std::pair{b, node} == FindNodeAt(placed, 0.0);
     elements.push_back(std::make_unique<SupportElement>(&body, node, position, frame, stiffness,
-                                                        SpringDamping(stiffness, ElementInertia(body))));
+                                                        SpringDamping(stiffness, ElementInertia(body)), holds_bit));
   }
 
   int top_drive_element = -1, block_element = -1;
@@ -413,67 +456,69 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     }
   }
 
-  // Applied loads: gravity and the case's loads, gathered per body as nodal forces and moments.
+  // Applied loads, each group its own elements (LoadParameters scales or replaces each): the buoyed
+  // weight per body; the case's distributed loads per body and point loads; the transient's initial
+  // loads; the WOB and the torque on bit per unit of their value.
   double force_scale = 0.0;
   for (const Body& body : placed) {
-    const int nodes = body.node_count();
-    std::vector<Vec3> forces(nodes, Vec3::Zero()), moments(nodes, Vec3::Zero());
-    const Mat3 frame = body.reference_orientation.toRotationMatrix();
-    auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
-    auto node_s = [&](int k) { return body.s_start + body.reduced->node_positions[k].x(); };
-    const double weight = BuoyedWeightPerLength(body, input);
-    const Vec3 gravity_load = weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]);
-    for (int k = 0; k + 1 < nodes; ++k) {
-      if (weight != 0.0) {
-        AddUniformLineLoad(node_position(k), node_position(k + 1), gravity_load, forces[k], moments[k], forces[k + 1],
-                           moments[k + 1]);
-      }
-      for (const Load& load : input.loads) {
-        if (!load.distributed) continue;
-        const double a = std::max(load.from, node_s(k)), c = std::min(load.to, node_s(k + 1));
-        if (c <= a) continue;
-        const Vec3 q = frame * load.force_per_length;
-        const Vec3 m = frame * load.moment_per_length;
-        const double h = node_s(k + 1) - node_s(k);
-        if (c - a >= h * (1.0 - 1e-12)) {
-          AddUniformLineLoad(node_position(k), node_position(k + 1), q, forces[k], moments[k], forces[k + 1], moments[k + 1]);
-        } else {  // a partly loaded element: the resultant shared by the lever rule
-          const double share = (0.5 * (a + c) - node_s(k)) / h;
-          forces[k] += (1.0 - share) * (c - a) * q;
-          forces[k + 1] += share * (c - a) * q;
-        }
-        moments[k] += 0.5 * (c - a) * m;
-        moments[k + 1] += 0.5 * (c - a) * m;
-      }
-    }
-    for (int k = 0; k < nodes; ++k) force_scale += forces[k].norm();
-    elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
-  }
-  // Point loads on the nearest node (at a joint, the upper body's start node). The formation
-  // pushes the bit up-hole with the WOB and resists its rotation with the torque on bit.
-  // A bit-rock law gives the rock's reaction from the bit's motion instead (model/bit_rock.hpp):
-  // the torque on bit, and under Detournay's law the WOB too.
-  std::vector<Load> point_loads = input.loads;
-  const bool rock_wob = input.bit_rock && (input.bit_rock->law == BitRockLaw::Detournay || input.bit_rock->bottom);
-  const double wob = rock_wob ? 0.0 : input.operation.weight_on_bit;
-  const double tob = input.bit_rock && input.bit_rock->law != BitRockLaw::None ? 0.0 : input.operation.torque_on_bit;
-  if (wob != 0.0 || tob != 0.0) {
-    Load bit;
-    bit.at = 0.0;
-    bit.force = Vec3(wob, 0.0, 0.0);
-    bit.moment = Vec3(tob, 0.0, 0.0);
-    point_loads.push_back(bit);
-  }
-  for (const Load& load : point_loads) {
-    if (load.distributed) continue;
-    const auto [b, node] = FindNodeAt(placed, load.at);
-    const Body& body = placed[b];
-    const Mat3 frame = body.reference_orientation.toRotationMatrix();
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
-    forces[node] = frame * load.force;
-    moments[node] = frame * load.moment;
-    force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
-    elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments)));
+    const double weight = BuoyedWeightPerLength(body, input);
+    AddDistributedLoad(body, {weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2])}, forces,
+                       moments);
+    for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
+    elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kWeight));
+  }
+  for (const auto& [loads, group] : {std::pair{&input.loads, LoadGroup::kCaseLoads},
+                                     std::pair{&input.initial_loads, LoadGroup::kInitialLoads}}) {
+    for (const Body& body : placed) {
+      std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
+      bool any = false;
+      for (const Load& load : *loads) {
+        if (load.distributed) any = AddDistributedLoad(body, load, forces, moments) || any;
+      }
+      if (!any) continue;
+      if (group == LoadGroup::kCaseLoads) {
+        for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
+      }
+      elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments), group));
+    }
+    for (const Load& load : *loads) {
+      if (load.distributed) continue;
+      const auto [b, node] = FindNodeAt(placed, load.at);
+      const Body& body = placed[b];
+      const Mat3 frame = body.reference_orientation.toRotationMatrix();
+      std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
+      forces[node] = frame * load.force;
+      moments[node] = frame * load.moment;
+      if (group == LoadGroup::kCaseLoads) force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
+      elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments), group));
+    }
+  }
+  // The formation pushes the bit up-hole with the WOB and resists its rotation with the torque on
+  // bit: per newton and per N·m, their values the case's (or the parameter block's). A bit-rock law
+  // gives the rock's reaction from the bit's motion instead (model/bit_rock.hpp): the torque on bit,
+  // and under Detournay's law or with a bottom contact the WOB too.
+  const bool rock_wob = input.bit_rock && (input.bit_rock->law == BitRockLaw::Detournay || input.bit_rock->bottom);
+  const bool rock_tob = input.bit_rock && input.bit_rock->law != BitRockLaw::None;
+  {
+    const auto [b, node] = FindNodeAt(placed, 0.0);
+    const Body& body = placed[b];
+    const Vec3 axis = body.reference_orientation.toRotationMatrix().col(0);
+    const double wob = input.operation.weight_on_bit, tob = input.operation.torque_on_bit;
+    if (!rock_wob) {
+      std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
+      forces[node] = axis;
+      force_scale += std::abs(wob);
+      elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments),
+                                                            LoadGroup::kWeightOnBit, wob));
+    }
+    if (!rock_tob) {
+      std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
+      moments[node] = axis;
+      force_scale += std::abs(tob) / std::max(length, 1e-3);
+      elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments),
+                                                            LoadGroup::kTorqueOnBit, tob));
+    }
   }
   int bit_rock_element = -1, bit_bottom_element = -1, bit_side_element = -1;
   if (input.bit_rock && input.bit_rock->law != BitRockLaw::None) {

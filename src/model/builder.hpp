@@ -27,6 +27,9 @@ struct ModelInput {
   std::map<std::string, fe::Material> materials;
   std::vector<Support> supports;
   std::vector<Load> loads;
+  // Loads (as `loads`) that act only where the parameter block's initial_load_factor says (a
+  // transient's start equilibrium: its initial_loads); 0 in every analysis by default.
+  std::vector<Load> initial_loads;
   double gravity = 0.0;              // m/s², along global +z
   std::optional<FluidConfig> fluid;
   // The well the string lies in (bit at bit_md); none: straight along +x from the origin.

@@ -103,12 +103,12 @@ void TopDriveElement::DoEvaluate(const ElementState& state, bool with_matrices, 
   const BodyPose& pose = *state.poses[0];
   const NodeMotion motion = ComputeNodeMotion(body, pose, node_, state.velocity);
   // Clockwise looking down-hole: about −x of the string frame.
-  const Vec3 moment = -state.load_factor * drive_.setting.Value(state.time) * (frame_ * Vec3::UnitX());
+  const Vec3 moment = -state.parameters.load_factor * drive_.setting.Value(state.time) * (frame_ * Vec3::UnitX());
   AddNodeForce(body, pose, node_, motion, Vec3::Zero(), moment, nullptr, with_matrices, out);
 }
 
 double TopDriveElement::Torque(const ElementState& state) const {
-  if (drive_.mode == TopDriveMode::Torque) return state.load_factor * drive_.setting.Value(state.time);
+  if (drive_.mode == TopDriveMode::Torque) return state.parameters.load_factor * drive_.setting.Value(state.time);
   const Twist k = Kinematics(state);
   return stiffness_ * k.strain + damping_ * k.rate;
 }
@@ -144,7 +144,7 @@ void BlockElement::DoEvaluate(const ElementState& state, bool with_matrices, Ele
   const BodyPose& pose = *state.poses[0];
   const NodeMotion motion = ComputeNodeMotion(body, pose, node_, state.velocity);
   if (drive_.mode == BlockMode::HookLoad) {
-    const Vec3 force = state.load_factor * drive_.setting.Value(state.time) * axis_;
+    const Vec3 force = state.parameters.load_factor * drive_.setting.Value(state.time) * axis_;
     AddNodeForce(body, pose, node_, motion, force, Vec3::Zero(), nullptr, with_matrices, out);
     return;
   }
@@ -157,7 +157,7 @@ void BlockElement::DoEvaluate(const ElementState& state, bool with_matrices, Ele
 }
 
 double BlockElement::HookLoad(const ElementState& state) const {
-  if (drive_.mode == BlockMode::HookLoad) return state.load_factor * drive_.setting.Value(state.time);
+  if (drive_.mode == BlockMode::HookLoad) return state.parameters.load_factor * drive_.setting.Value(state.time);
   return -SpringForce(ComputeNodeMotion(*bodies()[0], *state.poses[0], node_, state.velocity), state.time);
 }
 
@@ -171,7 +171,7 @@ double BlockElement::DoPotentialEnergy(const ElementState& state) const {
   const Body& body = *bodies()[0];
   const Vec3 position = state.poses[0]->NodePosition(body, node_);
   if (drive_.mode == BlockMode::HookLoad) {
-    return -state.load_factor * drive_.setting.Value(state.time) * axis_.dot(position - position_);
+    return -state.parameters.load_factor * drive_.setting.Value(state.time) * axis_.dot(position - position_);
   }
   const double strain = axis_.dot(position - position_) - drive_.setting.Integral(state.time);
   return 0.5 * stiffness_ * strain * strain + preload_ * strain;

@@ -28,12 +28,7 @@ class DynamicModelProblem final : public solvers::Problem {
     model_.TurnCoordinates(dv, x, inverse);
   }
   // The bodies, numbered along the string (each coupled only to its neighbours).
-  std::vector<Eigen::Index> CoordinateBlocks() const override {
-    std::vector<Eigen::Index> starts;
-    for (const Body& body : model_.bodies()) starts.push_back(body.v_offset);
-    starts.push_back(model_.num_velocities());
-    return starts;
-  }
+  std::vector<Eigen::Index> CoordinateBlocks() const override { return model_.BodyCoordinateBlocks(); }
 
  private:
   const SystemModel& model_;

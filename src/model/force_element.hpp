@@ -11,26 +11,15 @@
 #include <vector>
 
 #include "model/body.hpp"
+#include "model/load_parameters.hpp"
 
 namespace drillflex::model {
-
-// What a static solve varies through a built model instead of rebuilding it (static-solver.md): the
-// load factor scales the applied loads (load stepping, buckling), the friction factor the wall
-// friction coefficients (the continuation from a string at rest to a rotating one). A bare number
-// is a load factor.
-struct LoadParameters {
-  LoadParameters(double load = 1.0) : load_factor(load) {}  // NOLINT(google-explicit-constructor)
-  LoadParameters(double load, double friction) : load_factor(load), friction_factor(friction) {}
-  double load_factor = 1.0;
-  double friction_factor = 1.0;
-};
 
 struct ElementState {
   std::vector<const BodyPose*> poses;  // of the element's bodies, in order
   VecX velocity;                       // concatenated velocities of the element's bodies
   double time = 0.0;
-  double load_factor = 1.0;            // scales applied loads (load stepping, buckling)
-  double friction_factor = 1.0;        // scales the wall friction coefficients
+  LoadParameters parameters;           // the loads, friction and stiffness factors (model/load_parameters.hpp)
 };
 
 struct ElementContribution {

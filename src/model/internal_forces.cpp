@@ -113,7 +113,7 @@ std::vector<SectionForces> ForcesOfBody(const Body& body, const ElementMatrices&
 
 // Dead axial nodal loads of every body (body frame x, N) from its NodalLoadElements.
 std::vector<std::vector<double>> AxialNodalLoads(const SystemModel& model, const std::vector<BodyPose>& poses,
-                                                 double load_factor) {
+                                                 const LoadParameters& load) {
   std::vector<std::vector<double>> loads(model.bodies().size());
   for (std::size_t b = 0; b < loads.size(); ++b) loads[b].assign(model.bodies()[b].node_count(), 0.0);
   for (const auto& element : model.elements()) {
@@ -122,7 +122,8 @@ std::vector<std::vector<double>> AxialNodalLoads(const SystemModel& model, const
     const int b = model.IndexOf(nodal->bodies()[0]);
     const Vec3 axis = poses[b].A.col(0);
     const auto& forces = nodal->forces();
-    for (std::size_t k = 0; k < forces.size(); ++k) loads[b][k] += load_factor * axis.dot(forces[k]);
+    const double scale = nodal->Scale(load);
+    for (std::size_t k = 0; k < forces.size(); ++k) loads[b][k] += scale * axis.dot(forces[k]);
   }
   return loads;
 }
@@ -148,16 +149,16 @@ std::vector<SectionForces> BodyInternalForces(const Body& body, const VecX& eta,
 }
 
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
-                                                              double load_factor) {
+                                                              const LoadParameters& load) {
   std::vector<int> all(model.bodies().size());
   for (std::size_t b = 0; b < all.size(); ++b) all[b] = static_cast<int>(b);
-  return ComputeInternalForces(model, q, load_factor, all);
+  return ComputeInternalForces(model, q, load, all);
 }
 
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
-                                                              double load_factor, std::span<const int> bodies) {
+                                                              const LoadParameters& load, std::span<const int> bodies) {
   const std::vector<BodyPose> poses = model.Poses(q);
-  const auto axial_loads = AxialNodalLoads(model, poses, load_factor);
+  const auto axial_loads = AxialNodalLoads(model, poses, load);
   ElementMatrixCache cache;
   std::vector<std::vector<SectionForces>> result(model.bodies().size());
   for (const int b : bodies) {

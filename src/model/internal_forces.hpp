@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/load_parameters.hpp"
 #include "model/system_model.hpp"
 
 namespace drillflex::model {
@@ -43,8 +44,8 @@ struct SectionForces {
   double bending_moment() const { return moment.tail<2>().norm(); }  // N·m
 };
 
-// Internal forces at every node of every body: result[b][k] for node k of body b. `load_factor`
-// scales the dead nodal loads (NodalLoadElement) used for the axial force inside a body (below).
+// Internal forces at every node of every body: result[b][k] for node k of body b. `load` scales
+// the dead nodal loads (NodalLoadElement::Scale) used for the axial force inside a body (below).
 //
 // Axial force inside a body. (1) The mean: N̄ = BodyAxialForce, the membrane force
 // rowᵀη + (EA/L) ½ ηᵀ K_G,ff η (elongation of the end nodes plus the foreshortening of bending;
@@ -57,11 +58,11 @@ struct SectionForces {
 // for a uniform bar: linear elements are nodally exact). Axial loads of other elements (contact
 // friction, fluid) and axial inertia inside a body are not resolved this way.
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
-                                                              double load_factor = 1.0);
+                                                              const LoadParameters& load = 1.0);
 // The same for the listed bodies only (result[b] empty for the others): what a transient run reads
 // at its output times (the bit, the top, the probes) without the whole string.
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
-                                                              double load_factor, std::span<const int> bodies);
+                                                              const LoadParameters& load, std::span<const int> bodies);
 
 // The internal forces of one body from its modal coordinates η (body frame); `axial_loads` are
 // the dead axial nodal loads a_j (N, along the body axis), one per node, or empty.

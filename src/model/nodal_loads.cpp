@@ -9,8 +9,9 @@ namespace drillflex::model {
 
 using so3::Skew;
 
-NodalLoadElement::NodalLoadElement(const Body* body, std::vector<Vec3> forces, std::vector<Vec3> moments)
-    : ForceElement({body}), forces_(std::move(forces)), moments_(std::move(moments)) {
+NodalLoadElement::NodalLoadElement(const Body* body, std::vector<Vec3> forces, std::vector<Vec3> moments,
+                                   LoadGroup group, double value)
+    : ForceElement({body}), forces_(std::move(forces)), moments_(std::move(moments)), group_(group), value_(value) {
   if (static_cast<int>(forces_.size()) != body->node_count() ||
       static_cast<int>(moments_.size()) != body->node_count()) {
     throw LogicError("NodalLoadElement: one force and one moment per node expected");
@@ -63,6 +64,17 @@ NodalLoadElement::NodalLoadElement(const Body* body, std::vector<Vec3> forces, s
   }
 }
 
+double NodalLoadElement::Scale(const LoadParameters& load) const {
+  switch (group_) {
+    case LoadGroup::kWeight: return load.load_factor * load.weight_factor;
+    case LoadGroup::kCaseLoads: return load.load_factor * load.case_load_factor;
+    case LoadGroup::kInitialLoads: return load.load_factor * load.initial_load_factor;
+    case LoadGroup::kWeightOnBit: return load.load_factor * load.weight_on_bit.value_or(value_);
+    case LoadGroup::kTorqueOnBit: return load.load_factor * load.torque_on_bit.value_or(value_);
+  }
+  return 0.0;
+}
+
 double NodalLoadElement::GradientEnergy(const BodyPose& pose, double load_factor) const {
   if (gradient_by_axis_.empty()) return 0.0;
   const Vec3 axis = pose.A.col(0);
@@ -112,7 +124,7 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
   const cms::ReducedBody& reduced = *body.reduced;
   const int nf = body.flexible_count;
   const int nodes = body.node_count();
-  const double lambda = state.load_factor;
+  const double lambda = Scale(state.parameters);
   // Per node, in the body frame, F̂_k = AᵀF_k and M̂_k = AᵀM_k. The residual carries −f_ext:
   //   −λ (Σ F_k;  Σ u_k × F̂_k + M̂_k;  Σ Φ_kᵀ F̂_k + Ψ_kᵀ M̂_k),
   // the modal sum one product Uᵀ (F̂_k, M̂_k)_k with the mode shapes (6 rows a node). With
@@ -174,9 +186,9 @@ double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {
   double energy = 0.0;
   for (int k = 0; k < body.node_count(); ++k) {
     const Vec3 rest = body.reference_position + reference * body.reduced->node_positions[k];
-    energy -= state.load_factor * forces_[k].dot(pose.NodePosition(body, k) - rest);
+    energy -= Scale(state.parameters) * forces_[k].dot(pose.NodePosition(body, k) - rest);
   }
-  return energy + GradientEnergy(pose, state.load_factor);
+  return energy + GradientEnergy(pose, Scale(state.parameters));
 }
 
 double NodalLoadElement::DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
@@ -187,8 +199,8 @@ double NodalLoadElement::DoPotentialEnergyChange(const ElementState& from, const
     const NodeMove move = NodeMoveBetween(body, *from.poses[0], *to.poses[0], k);
     change -= forces_[k].dot(move.translation) + moments_[k].dot(move.rotation);
   }
-  return to.load_factor * change + GradientEnergy(*to.poses[0], to.load_factor) -
-         GradientEnergy(*from.poses[0], to.load_factor);
+  const double scale = Scale(to.parameters);
+  return scale * change + GradientEnergy(*to.poses[0], scale) - GradientEnergy(*from.poses[0], scale);
 }
 
 void AddUniformLineLoad(const Vec3& start, const Vec3& end, const Vec3& load_per_length, Vec3& force_start,

@@ -23,11 +23,26 @@
 
 namespace drillflex::model {
 
+// The load group an element's loads belong to (LoadParameters): what scales them.
+enum class LoadGroup {
+  kWeight,       // the buoyed weight: load_factor × weight_factor
+  kCaseLoads,    // the case's point and distributed loads: load_factor × case_load_factor
+  kInitialLoads, // a transient's initial loads: load_factor × initial_load_factor
+  kWeightOnBit,  // per newton of WOB: load_factor × (weight_on_bit, or the element's value)
+  kTorqueOnBit,  // per N·m of torque on bit: load_factor × (torque_on_bit, or the element's value)
+};
+
 class NodalLoadElement : public ForceElement {
  public:
-  NodalLoadElement(const Body* body, std::vector<Vec3> forces, std::vector<Vec3> moments);
+  // `value`: the WOB (N) or torque on bit (N·m) the case gives, for the groups whose loads are per
+  // unit of it (kWeightOnBit, kTorqueOnBit); ignored by the others.
+  NodalLoadElement(const Body* body, std::vector<Vec3> forces, std::vector<Vec3> moments,
+                   LoadGroup group = LoadGroup::kCaseLoads, double value = 1.0);
   std::string Describe() const override;
   const std::vector<Vec3>& forces() const { return forces_; }
+  LoadGroup group() const { return group_; }
+  // What the element's forces and moments are multiplied by under `load`.
+  double Scale(const LoadParameters& load) const;
 
  protected:
   void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;
@@ -41,6 +56,8 @@ class NodalLoadElement : public ForceElement {
  private:
   std::vector<Vec3> forces_;   // N, global, per node
   std::vector<Vec3> moments_;  // N·m, global, per node
+  LoadGroup group_;
+  double value_;  // kWeightOnBit, kTorqueOnBit: the case's value
   // The residual without the node loop (a string's residual evaluates every body's loads each
   // Newton iteration): the loads are fixed in the global frame, so with a = A's nine entries and
   // u_k = x_k + Φ_k η every sum is linear in a or bilinear in a and η:

@@ -1,5 +1,8 @@
 #include "model/spring_elements.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "core/so3.hpp"
@@ -14,6 +17,7 @@ namespace {
 // in transients.
 void SpringContribution(const CouplingKinematics& k, const Vec6& stiffness, const Vec6& damping,
                         const VecX& velocity, bool with_matrices, ElementContribution& out) {
+  if (stiffness.isZero(0.0) && damping.isZero(0.0)) return;
   const Vec6 rate = k.jacobian * velocity;
   const Vec6 force = stiffness.cwiseProduct(k.strain) + damping.cwiseProduct(rate);
   out.force.noalias() += k.jacobian.transpose() * force;
@@ -26,6 +30,15 @@ void SpringContribution(const CouplingKinematics& k, const Vec6& stiffness, cons
   out.stiffness += CouplingJacobianDerivative(k, force);
   weighted.noalias() = damping.asDiagonal() * k.jacobian;
   out.damping.noalias() += k.jacobian.transpose().lazyProduct(weighted);
+}
+
+// A stiffness scaled by `factor` and its damping by √factor (the same damping ratio).
+struct ScaledSpring {
+  Vec6 stiffness, damping;
+};
+ScaledSpring Scaled(const Vec6& stiffness, const Vec6& damping, double factor) {
+  if (factor == 1.0) return {stiffness, damping};
+  return {factor * stiffness, std::sqrt(std::max(factor, 0.0)) * damping};
 }
 
 }  // namespace
@@ -45,27 +58,29 @@ CouplingKinematics CouplingElement::Kinematics(const ElementState& state) const 
   const CouplingEnd upper{bodies()[1], upper_node_, *state.poses[1]};
   const Mat3 rest = placement_kink_.isZero(0.0)
                         ? built_in_rotation_
-                        : Mat3(built_in_rotation_ * so3::ExpMap((1.0 - state.load_factor) * placement_kink_));
+                        : Mat3(built_in_rotation_ * so3::ExpMap((1.0 - state.parameters.load_factor) * placement_kink_));
   return ComputeCouplingKinematics(lower, upper, rest);
 }
 
 void CouplingElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
-  SpringContribution(Kinematics(state), stiffness_, damping_, state.velocity, with_matrices, out);
+  const ScaledSpring spring = Scaled(stiffness_, damping_, state.parameters.coupling_factor);
+  SpringContribution(Kinematics(state), spring.stiffness, spring.damping, state.velocity, with_matrices, out);
 }
 
 Vec6 CouplingElement::Force(const ElementState& state) const {
   const CouplingKinematics k = Kinematics(state);
-  return stiffness_.cwiseProduct(k.strain) + damping_.cwiseProduct(k.jacobian * state.velocity);
+  const ScaledSpring spring = Scaled(stiffness_, damping_, state.parameters.coupling_factor);
+  return spring.stiffness.cwiseProduct(k.strain) + spring.damping.cwiseProduct(k.jacobian * state.velocity);
 }
 
 double CouplingElement::DoPotentialEnergy(const ElementState& state) const {
   const Vec6 strain = Kinematics(state).strain;
-  return 0.5 * strain.dot(stiffness_.cwiseProduct(strain));
+  return 0.5 * state.parameters.coupling_factor * strain.dot(stiffness_.cwiseProduct(strain));
 }
 
 SupportElement::SupportElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
-                               const Vec6& stiffness, const Vec6& damping)
-    : ForceElement({body}), node_(node), stiffness_(stiffness), damping_(damping) {
+                               const Vec6& stiffness, const Vec6& damping, bool holds_bit)
+    : ForceElement({body}), node_(node), stiffness_(stiffness), damping_(damping), holds_bit_(holds_bit) {
   ground_.r = ground_.reference = position;
   ground_.A = frame;
   // The body's node frame at rest is the body's reference frame; the support's rotational strain
@@ -84,17 +99,19 @@ CouplingKinematics SupportElement::Kinematics(const ElementState& state) const {
 }
 
 void SupportElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {
-  SpringContribution(Kinematics(state), stiffness_, damping_, state.velocity, with_matrices, out);
+  const ScaledSpring spring = Scaled(stiffness_, damping_, Factor(state));
+  SpringContribution(Kinematics(state), spring.stiffness, spring.damping, state.velocity, with_matrices, out);
 }
 
 Vec6 SupportElement::Reaction(const ElementState& state) const {
   const CouplingKinematics k = Kinematics(state);
-  return -(stiffness_.cwiseProduct(k.strain) + damping_.cwiseProduct(k.jacobian * state.velocity));
+  const ScaledSpring spring = Scaled(stiffness_, damping_, Factor(state));
+  return -(spring.stiffness.cwiseProduct(k.strain) + spring.damping.cwiseProduct(k.jacobian * state.velocity));
 }
 
 double SupportElement::DoPotentialEnergy(const ElementState& state) const {
   const Vec6 strain = Kinematics(state).strain;
-  return 0.5 * strain.dot(stiffness_.cwiseProduct(strain));
+  return 0.5 * Factor(state) * strain.dot(stiffness_.cwiseProduct(strain));
 }
 
 }  // namespace drillflex::model

@@ -3,7 +3,9 @@
 //  * SupportElement holds a node to its reference place and orientation in chosen directions of the
 //    string frame (a penalty support: `supports` of the case).
 // Force f = K e + C ė with diagonal K, C in side 1's frame (axial x, lateral y, z, torsion,
-// bending y, z); generalized force Bᵀ f; tangent Bᵀ K B + H(f), damping Bᵀ C B.
+// bending y, z); generalized force Bᵀ f; tangent Bᵀ K B + H(f), damping Bᵀ C B. The parameter
+// block scales K by a factor s and C by √s, keeping the damping ratio (LoadParameters: the
+// couplings' coupling_factor, the bit's supports' bit_support_factor).
 #pragma once
 
 #include "model/coupling_kinematics.hpp"
@@ -21,7 +23,7 @@ class CouplingElement : public ForceElement {
                   const Vec6& damping, const Mat3& built_in_rotation = Mat3::Identity(),
                   const Vec3& placement_kink = Vec3::Zero());
   std::string Describe() const override;
-  const Vec6& stiffness() const { return stiffness_; }
+  const Vec6& stiffness() const { return stiffness_; }  // as built (factor 1)
   // The force f = K e + C ė (side-1 frame) at a state.
   Vec6 Force(const ElementState& state) const;
 
@@ -41,13 +43,15 @@ class SupportElement : public ForceElement {
  public:
   // Holds `node` of `body` at `position` with the string frame `frame` (columns x, y, z);
   // stiffness and damping 0 in the free directions.
+  // `holds_bit`: the node is the bit's (LoadParameters::bit_support_factor scales it).
   SupportElement(const Body* body, int node, const Vec3& position, const Mat3& frame, const Vec6& stiffness,
-                 const Vec6& damping);
+                 const Vec6& damping, bool holds_bit = false);
   std::string Describe() const override;
   // The reaction the support exerts on the string, in the string frame (force N, moment N·m).
   Vec6 Reaction(const ElementState& state) const;
   int node() const { return node_; }
-  const Vec6& stiffness() const { return stiffness_; }
+  const Vec6& stiffness() const { return stiffness_; }  // as built (factor 1)
+  bool holds_bit() const { return holds_bit_; }
 
  protected:
   void DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const override;
@@ -55,9 +59,11 @@ class SupportElement : public ForceElement {
 
  private:
   CouplingKinematics Kinematics(const ElementState& state) const;
+  double Factor(const ElementState& state) const { return holds_bit_ ? state.parameters.bit_support_factor : 1.0; }
   int node_;
   BodyPose ground_;
   Vec6 stiffness_, damping_;
+  bool holds_bit_ = false;
 };
 
 }  // namespace drillflex::model

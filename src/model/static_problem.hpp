@@ -1,7 +1,8 @@
-// The model as a problem for the static Newton solver (solvers/newton.hpp): v = a = 0, the load
-// factor scales every applied load (gravity, point and distributed loads, WOB). With a
-// `load_scale`, the model's loads are load_scale × the solver's load factor, so that the solver's
-// load stepping from 0 to 1 ramps the loads to load_scale times the case's (buckling analysis).
+// The model as a problem for the static Newton solver (solvers/newton.hpp): v = a = 0, the model
+// evaluated under a parameter block (model/load_parameters.hpp: the loads, the friction, the
+// sliding, the supports' stiffness) whose load factor (or friction factor) the solver's load
+// factor λ multiplies: its load stepping from 0 to 1 ramps the loads to the block's (e.g.
+// load_factor = μ: μ times the case's, the buckling analysis).
 #pragma once
 
 #include <cmath>
@@ -13,13 +14,14 @@ namespace drillflex::model {
 
 class StaticModelProblem : public solvers::StaticProblem {
  public:
-  // What the solver's load factor λ (SetLoadFactor) ramps: the applied loads (load_scale × λ), or,
-  // with the loads at load_scale, the wall friction coefficients (friction factor λ: the string
-  // from at rest to rotating, static-solver.md §6).
+  // What the solver's load factor λ (SetLoadFactor) ramps: the applied loads (the block's load
+  // factor × λ), or, with the loads at the block's, the wall friction (its friction factor × λ: the
+  // string from at rest to moving, static-solver.md §6).
   enum class Ramp { kLoads, kFriction };
 
-  explicit StaticModelProblem(const SystemModel& model, double load_scale = 1.0, Ramp ramp = Ramp::kLoads)
-      : model_(model), load_scale_(load_scale), load_factor_(load_scale), ramp_(ramp) {}
+  explicit StaticModelProblem(const SystemModel& model, const LoadParameters& parameters = 1.0,
+                              Ramp ramp = Ramp::kLoads)
+      : model_(model), base_(parameters), load_(parameters), ramp_(ramp) {}
 
   int num_positions() const override { return model_.num_positions(); }
   int num_velocities() const override { return model_.num_velocities(); }
@@ -34,12 +36,12 @@ class StaticModelProblem : public solvers::StaticProblem {
   }
   void SetLoadFactor(double load_factor) override {
     if (ramp_ == Ramp::kLoads) {
-      load_factor_ = load_scale_ * load_factor;
+      load_.load_factor = base_.load_factor * load_factor;
     } else {
-      friction_factor_ = load_factor;
+      load_.friction_factor = base_.friction_factor * load_factor;
     }
   }
-  double ForceScale() const override { return std::abs(load_scale_) * model_.force_scale(); }
+  double ForceScale() const override { return std::abs(base_.load_factor) * model_.force_scale(); }
   bool IsIterationMatrixSymmetric() const override { return false; }
   // How far the increment moves the farthest node across the string (m): the trust radius then
   // limits how fast contacts close, and leaves the twist and the axial stretch free.
@@ -54,15 +56,18 @@ class StaticModelProblem : public solvers::StaticProblem {
   std::vector<solvers::PenaltyTerm> PenaltyTerms(const VecX& q) const override {
     return model_.PenaltyTerms(q, Load());
   }
-  double load_factor() const { return load_factor_; }
+  // The bodies, numbered along the string (each coupled only to its neighbours).
+  std::vector<Eigen::Index> CoordinateBlocks() const override { return model_.BodyCoordinateBlocks(); }
+  double load_factor() const { return load_.load_factor; }
+  // The block the model is evaluated under now (the base with the solver's λ applied).
+  const LoadParameters& parameters() const { return load_; }
 
  private:
-  LoadParameters Load() const { return {load_factor_, friction_factor_}; }
+  const LoadParameters& Load() const { return load_; }
 
   const SystemModel& model_;
-  double load_scale_ = 1.0;
-  double load_factor_ = 1.0;  // the model's load factor: load_scale × the solver's (Ramp::kLoads)
-  double friction_factor_ = 1.0;  // the solver's load factor with Ramp::kFriction
+  LoadParameters base_;  // at λ = 1
+  LoadParameters load_;  // at the present λ
   Ramp ramp_ = Ramp::kLoads;
 };
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/profile.hpp"
 #include "core/so3.hpp"
 #include "model/body_dynamics.hpp"
 #include "model/body_inertia_jacobian.hpp"
@@ -66,6 +67,14 @@ VecX SystemModel::ReferencePositions() const {
   VecX q = VecX::Zero(num_positions_);
   for (const Body& body : bodies_) SetReferencePose(body, q);
   return q;
+}
+
+std::vector<Eigen::Index> SystemModel::BodyCoordinateBlocks() const {
+  std::vector<Eigen::Index> starts;
+  starts.reserve(bodies_.size() + 1);
+  for (const Body& body : bodies_) starts.push_back(body.v_offset);
+  starts.push_back(num_velocities_);
+  return starts;
 }
 
 VecX SystemModel::Increment(const VecX& q, const VecX& dv) const {
@@ -171,8 +180,7 @@ ElementState SystemModel::StateOf(const ForceElement& element, const std::vector
 void SystemModel::FillState(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v, double t,
                             LoadParameters load, ElementState& state) const {
   state.time = t;
-  state.load_factor = load.load_factor;
-  state.friction_factor = load.friction_factor;
+  state.parameters = load;
   state.poses.clear();
   state.velocity.resize(element.local_size());
   int offset = 0;
@@ -229,6 +237,7 @@ void ForEachIndex(std::size_t count, bool parallel, const Task& task) {
 // of one body are evaluated by the thread that owns it, into per-thread scratch (no allocation once
 // warm); those of several bodies (couplings) beforehand, each once, and stored.
 VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load) const {
+  const profile::Scope scope("model: residual");
   VecX residual = VecX::Zero(num_velocities_);
   const auto poses = Poses(q);
   const bool moving = !v.isZero(0.0);
@@ -273,6 +282,7 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
 
 SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load,
                                        double cK, double cD, double cM) const {
+  const profile::Scope scope("model: iteration matrix");
   const auto poses = Poses(q);
   const bool parallel = bodies_.size() >= kParallelBodies;
   // cK ∂f/∂q + cD ∂f/∂v of an element, into contribution.stiffness.
@@ -356,6 +366,7 @@ Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, LoadParamete
 }
 
 double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, LoadParameters load) const {
+  const profile::Scope scope("model: energy change");
   const auto before = Poses(from);
   const auto after = Poses(to);
   const bool parallel = bodies_.size() >= kParallelBodies;
@@ -377,6 +388,7 @@ double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, Load
 }
 
 std::vector<solvers::PenaltyTerm> SystemModel::PenaltyTerms(const VecX& q, LoadParameters load) const {
+  const profile::Scope scope("model: penalty terms");
   const auto poses = Poses(q);
   const VecX rest = VecX::Zero(num_velocities_);
   std::vector<solvers::PenaltyTerm> terms;

@@ -35,6 +35,9 @@ class SystemModel {
   double length() const { return length_; }  // of the string, m
 
   VecX ReferencePositions() const;
+  // The first velocity coordinate of each body, then num_velocities(): the blocks of a
+  // block-tridiagonal factorization (each body is coupled only to its neighbours along the string).
+  std::vector<Eigen::Index> BodyCoordinateBlocks() const;
   VecX Increment(const VecX& q, const VecX& dv) const;
   // The same to first order (the same derivative at dv = 0, so the same tangent matrices), but a
   // body's turn φ about its own axis (the x part of its frame rotation δθ) moves none of its points:

@@ -262,13 +262,23 @@ std::string WallContactElement::Describe() const {
   return fmt::format("wall contact at {:.4g} m from the bit", body.s_start + body.reduced->node_positions[node_].x());
 }
 
+WallContactParameters WallContactElement::EffectiveParameters(const LoadParameters& load) const {
+  WallContactParameters p = parameters_;
+  if (load.wall_friction) {
+    p.axial_friction = load.wall_friction->axial;
+    p.tangential_friction = load.wall_friction->tangential;
+  }
+  p.axial_friction *= load.friction_factor;
+  p.tangential_friction *= load.friction_factor;
+  if (load.sliding_mode == SlidingMode::kVelocities) p.prescribed_sliding.reset();
+  if (load.sliding_mode == SlidingMode::kPrescribed) p.prescribed_sliding = load.sliding;
+  return p;
+}
+
 namespace {
-// The parameters with the friction coefficients scaled by the state's friction factor.
-WallContactParameters WithFrictionFactor(const WallContactParameters& p, double factor) {
-  WallContactParameters scaled = p;
-  scaled.axial_friction *= factor;
-  scaled.tangential_friction *= factor;
-  return scaled;
+// The parameters as built are the effective ones (no copy needed).
+bool AsBuilt(const LoadParameters& load) {
+  return load.friction_factor == 1.0 && !load.wall_friction && load.sliding_mode == SlidingMode::kAsBuilt;
 }
 }  // namespace
 
@@ -280,9 +290,9 @@ void WallContactElement::DoEvaluate(const ElementState& state, bool with_matrice
                                       parameters_.contact_radius);
   md_hint_.store(g.path_md, std::memory_order_relaxed);
   const ContactForce c =
-      state.friction_factor == 1.0
+      AsBuilt(state.parameters)
           ? ComputeContactForce(g, motion, parameters_, with_matrices)
-          : ComputeContactForce(g, motion, WithFrictionFactor(parameters_, state.friction_factor), with_matrices);
+          : ComputeContactForce(g, motion, EffectiveParameters(state.parameters), with_matrices);
   if (!c.active) return;
   // The force acts at the contact point x + R_c n: moment R_c n × F about the node.
   AddPointForce(body, pose, node_, motion, c.force, parameters_.contact_radius * g.normal, &c.jacobian,
@@ -299,7 +309,8 @@ double WallContactElement::DoPotentialEnergy(const ElementState& state) const {
 
 double WallContactElement::DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
   const double elastic = DoPotentialEnergy(to) - DoPotentialEnergy(from);
-  if (parameters_.tangential_friction == 0.0 && parameters_.axial_friction == 0.0) return elastic;
+  const WallContactParameters effective = EffectiveParameters(to.parameters);
+  if (effective.tangential_friction == 0.0 && effective.axial_friction == 0.0) return elastic;
   const WallContactResult before = Result(from), after = Result(to);
   if (!before.in_contact && !after.in_contact) return elastic;
   const NodeMove move = NodeMoveBetween(*bodies()[0], *from.poses[0], *to.poses[0], node_);
@@ -334,7 +345,7 @@ WallContactResult WallContactElement::Result(const ElementState& state) const {
   const NodeMotion motion = ComputeNodeMotion(body, *state.poses[0], node_, state.velocity);
   const HoleGeometry g = LocateInHole(*wellbore_, motion.position, md_hint_.load(std::memory_order_relaxed),
                                       parameters_.contact_radius);
-  const ContactForce c = ComputeContactForce(g, motion, WithFrictionFactor(parameters_, state.friction_factor), false);
+  const ContactForce c = ComputeContactForce(g, motion, EffectiveParameters(state.parameters), false);
   WallContactResult r;
   r.in_contact = c.active;
   r.md = g.md;

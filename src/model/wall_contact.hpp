@@ -60,12 +60,6 @@ struct Wellbore {
   well::HoleProfile hole;
 };
 
-// A prescribed motion of the string for the friction direction of a static torque-and-drag run.
-struct PrescribedSliding {
-  double axial_speed = 0.0;   // m/s along the string axis; > 0 up-hole (pulling out), < 0 running in
-  double rotary_speed = 0.0;  // rad/s about the down-hole tangent t; > 0 clockwise looking down-hole
-};
-
 struct WallContactParameters {
   double contact_radius = 0.0;        // R_c, m (half the contact diameter: body, tool joint, blade)
   double normal_stiffness = 0.0;      // k_n, N/m (> 0)
@@ -107,7 +101,9 @@ class WallContactElement : public ForceElement {
 
   std::string Describe() const override;
   int node() const { return node_; }
-  const WallContactParameters& parameters() const { return parameters_; }
+  const WallContactParameters& parameters() const { return parameters_; }  // as built
+  // The parameters under a parameter block: its friction coefficients, factor and sliding.
+  WallContactParameters EffectiveParameters(const LoadParameters& load) const;
   const Wellbore& wellbore() const { return *wellbore_; }
 
   // Normal force, friction, contact MD and high-side angle at a state (thread-safe).

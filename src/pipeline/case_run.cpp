@@ -4,6 +4,7 @@
 
 #include "analyses/transient_start_places.hpp"
 #include "core/error.hpp"
+#include "core/profile.hpp"
 #include "pipeline/summary.hpp"
 
 namespace drillflex::pipeline {
@@ -57,7 +58,11 @@ AnalysisRequest CaseAnalyses(const io::Case& c) {
 }
 
 CaseModel BuildCaseModel(const io::Case& c) {
+  const profile::Scope scope("pipeline: build the model");
   model::ModelInput input = c.input;
+  // A transient's initial loads are a load group of the case's model, off but in its start
+  // (analyses::TransientStartPositions).
+  if (c.analyses.transient) input.initial_loads = c.analyses.transient->initial_loads;
   auto cache = std::make_unique<cms::ReductionCache>();
   model::BuiltModel built = model::BuildSystemModel(input, *cache);
   return CaseModel{std::move(input), std::move(cache), std::move(built)};
@@ -79,7 +84,7 @@ TransientSetup PrepareTransient(const io::Case& c, CaseModel& case_model, const 
   const bool reuse_equilibrium = equilibrium && settings.start == analyses::TransientStart::Equilibrium &&
                                  settings.initial_loads.empty() && !input.static_sliding;
   VecX start = reuse_equilibrium ? equilibrium->q
-                                 : analyses::TransientStartPositions(input, case_model.built, *case_model.cache, settings,
+                                 : analyses::TransientStartPositions(input, case_model.built, settings,
                                                                      CaseStaticSettings(c, options.observer));
   // The model in motion: with the drives, the friction following the motion (same coordinates), a
   // bottom contact where the bit rests at the start. The fluid moves with the bodies, its annulus
@@ -97,8 +102,7 @@ TransientSetup PrepareTransient(const io::Case& c, CaseModel& case_model, const 
 }
 
 analyses::StaticResult RunCaseStatic(const io::Case& c, CaseModel& case_model, const RunObserver& observer) {
-  return analyses::RunStaticInWell(case_model.input, case_model.built, *case_model.cache,
-                                   CaseStaticSettings(c, observer));
+  return analyses::RunStaticInWell(case_model.input, case_model.built, CaseStaticSettings(c, observer));
 }
 
 analyses::ModesResult RunCaseModes(const io::Case& c, const CaseModel& case_model, const VecX& equilibrium) {

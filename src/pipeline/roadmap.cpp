@@ -9,8 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
-#include "pipeline/case_run.hpp"
-#include "pipeline/sweep_outcome.hpp"
+#include "pipeline/roadmap_runs.hpp"
 #include "pipeline/sweep_run.hpp"
 
 namespace drillflex::pipeline {
@@ -40,69 +39,6 @@ double ShallowestDepth(const io::Case& c) {
   if (components.empty()) return 0.0;
   const model::Component& top = components.back();
   return LengthBelowTop(c.input.string) + (top.count == 1 ? 0.01 : 1.0) * top.length;
-}
-
-// One static run: the tension and the torque at the surface. Off bottom the case's supports are the
-// hook's alone (axial and the spin, as model::DefaultWellSupports holds the top), found by the
-// energy's minimum: the bit hangs free and lies on the wall like the rest, where the default supports
-// would hold it at the hole's centre and take its share of the string's weight off the wall, and the
-// drag with it (6 % of μ W sin I on tests/pipeline/roadmap_test.cpp's 297 m). The pipe above the model
-// to the surface hangs along the hole without friction (model::StringAboveWeight): less than a joint.
-SurfaceLoads RunStaticAtSurface(io::Case c, bool off_bottom) {
-  if (off_bottom) {
-    model::Support hook;
-    hook.at = model::StringLength(c.input.string);
-    hook.fixed[model::kX] = hook.fixed[model::kRx] = true;
-    c.input.supports = {hook};
-    analyses::StaticSettings settings = c.analyses.static_analysis.value_or(analyses::StaticSettings{});
-    settings.energy_minimum_on_case_supports = true;
-    c.analyses.static_analysis = settings;
-  }
-  const CaseResults results = RunCase(c, AnalysisRequest::Only(Analysis::Static));
-  SurfaceLoads loads = ComputeSurfaceLoads(results);
-  if (off_bottom) loads.hook_load += model::StringAboveWeight(results.model.input);
-  return loads;
-}
-
-// The case with one friction factor (axial and around the string), a WOB and TOB, and the string's
-// motion: axial (pulling out > 0) or turning.
-io::Case WithOperation(io::Case c, double friction, double wob, double tob, model::PrescribedSliding sliding) {
-  c.input.settings.contact.friction = friction;
-  c.input.settings.contact.axial_friction.reset();
-  c.input.operation.weight_on_bit = wob;
-  c.input.operation.torque_on_bit = tob;
-  c.input.operation.rotary_speed = sliding.rotary_speed;
-  c.input.operation.hook_load.reset();
-  c.input.static_sliding = sliding;
-  return c;
-}
-
-RoadmapPoint FailedPoint(double md, double friction, const std::string& message) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  return {md, friction, nan, nan, nan, nan, nan, message};
-}
-
-RoadmapPoint RunRoadmapPoint(const io::Case& c, const analyses::RoadmapSettings& settings, double md, double friction) {
-  const io::Case at = CaseAtDepth(c, md);
-  RoadmapPoint point{md, friction, 0.0, 0.0, 0.0, 0.0, 0.0, ""};
-  const double rpm = settings.rotary_speed;
-  try {
-    point.pick_up =
-        RunStaticAtSurface(WithOperation(at, friction, 0.0, 0.0, {settings.trip_speed, 0.0}), true).hook_load;
-    point.slack_off =
-        RunStaticAtSurface(WithOperation(at, friction, 0.0, 0.0, {-settings.trip_speed, 0.0}), true).hook_load;
-    const SurfaceLoads off_bottom = RunStaticAtSurface(WithOperation(at, friction, 0.0, 0.0, {0.0, rpm}), true);
-    point.rotating = off_bottom.hook_load;
-    point.off_bottom_torque = off_bottom.surface_torque;
-    const io::Case drilling =
-        WithOperation(at, friction, c.input.operation.weight_on_bit, c.input.operation.torque_on_bit, {0.0, rpm});
-    point.on_bottom_torque = RunStaticAtSurface(drilling, false).surface_torque;
-  } catch (const SolverError& error) {
-    return FailedPoint(md, friction, error.what());
-  } catch (const InputError& error) {  // the model at this depth (as a sweep's run: pipeline/sweep_run.hpp)
-    return FailedPoint(md, friction, error.what());
-  }
-  return point;
 }
 
 }  // namespace
@@ -180,28 +116,29 @@ std::vector<double> RoadmapDepths(const io::Case& c, const analyses::RoadmapSett
 
 std::vector<RoadmapPoint> RunRoadmap(const io::Case& c, const analyses::RoadmapSettings& settings,
                                      const RoadmapOptions& options) {
-  struct Task {
-    double md;
-    double friction;
-  };
-  std::vector<Task> tasks;
-  for (const double md : RoadmapDepths(c, settings)) {
-    for (const double friction : settings.friction) tasks.push_back({md, friction});
-  }
-  std::vector<RoadmapPoint> points(tasks.size());
+  // One task a depth: its model built once, its runs continued from one another
+  // (pipeline/roadmap_runs.hpp). The deepest first, so that the longest tasks do not come last.
+  const std::vector<double> depths = RoadmapDepths(c, settings);
+  std::vector<std::size_t> order(depths.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = order.size() - 1 - k;
+  const std::size_t frictions = settings.friction.size();
+  std::vector<RoadmapPoint> points(depths.size() * frictions);
   const auto start = std::chrono::steady_clock::now();
   std::mutex progress_mutex;
   int done = 0, failed = 0;
   double depth_total = 0.0, depth_done = 0.0;
-  for (const Task& task : tasks) depth_total += task.md;
-  RunTasksOnThreads(options.jobs, tasks.size(), [&](std::size_t k) {
-    points[k] = RunRoadmapPoint(c, settings, tasks[k].md, tasks[k].friction);
+  for (const double md : depths) depth_total += md * static_cast<double>(frictions);
+  RunTasksOnThreads(options.jobs, depths.size(), [&](std::size_t task) {
+    const std::size_t d = order[task];
+    const std::vector<RoadmapPoint> at_depth = RunRoadmapDepth(c, settings, depths[d]);
+    std::copy(at_depth.begin(), at_depth.end(), points.begin() + static_cast<std::ptrdiff_t>(d * frictions));
     if (!options.progress) return;
     const std::lock_guard<std::mutex> lock(progress_mutex);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    failed += points[k].message.empty() ? 0 : 1;
-    depth_done += tasks[k].md;
-    options.progress(++done, static_cast<int>(tasks.size()), failed, elapsed * (depth_total - depth_done) / depth_done);
+    for (const RoadmapPoint& point : at_depth) failed += point.message.empty() ? 0 : 1;
+    done += static_cast<int>(frictions);
+    depth_done += depths[d] * static_cast<double>(frictions);
+    options.progress(done, static_cast<int>(points.size()), failed, elapsed * (depth_total - depth_done) / depth_done);
   });
   return points;
 }

@@ -15,7 +15,8 @@
 namespace drillflex::pipeline {
 
 // One depth and friction factor. Hook loads in N (tension at the surface), torques in N·m (positive
-// clockwise looking down-hole: the rig's); NaN with a `message` when one of its runs failed.
+// clockwise looking down-hole: the rig's). A run that failed leaves its own quantities NaN and says
+// why in `message` (the runs' reasons joined by "; "); the others stand.
 struct RoadmapPoint {
   double bit_md = 0.0;
   double friction = 0.0;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/profile.hpp"
 
 namespace drillflex::solvers {
 
@@ -42,6 +43,7 @@ bool IterationMatrixLu::FactorizeBlocks(const SparseMat& matrix) {
 }
 
 void IterationMatrixLu::Factorize(const SparseMat& matrix) {
+  const profile::Scope scope("solver: LU factorization");
   method_ = Method::kNone;
   if (matrix.rows() <= options_.dense_limit) {
     dense_.compute(MatX(matrix));
@@ -69,6 +71,7 @@ void IterationMatrixLu::Factorize(const SparseMat& matrix) {
 }
 
 void IterationMatrixLu::SolveInPlace(VecX& x) {
+  const profile::Scope scope("solver: LU solve");
   switch (method_) {
     case Method::kDense:
       x = dense_.solve(x);

@@ -10,7 +10,8 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
-#include "solvers/linear_solver.hpp"
+#include "core/profile.hpp"
+#include "solvers/iteration_matrix_lu.hpp"
 
 namespace drillflex::solvers {
 namespace {
@@ -42,8 +43,9 @@ class NewtonStepper {
         options_(options),
         tolerance_(tolerance),
         zero_(VecX::Zero(problem.num_velocities())),
-        symmetry_(problem.IsIterationMatrixSymmetric() ? MatrixSymmetry::kAuto
-                                                       : MatrixSymmetry::kUnsymmetric) {}
+        factorized_(false) {
+    linear_solver_.SetBlocks(problem.CoordinateBlocks());
+  }
 
   StepOutcome Run(const VecX& q_start);
 
@@ -74,8 +76,17 @@ class NewtonStepper {
   const NewtonOptions& options_;
   const double tolerance_;
   const VecX zero_;
-  const MatrixSymmetry symmetry_;
-  SparseLinearSolver linear_solver_;
+  bool stale_ = false;  // the factorization held is to be renewed (NewtonOptions::reuse_contraction)
+  // The LU of K + σM: block tridiagonal on the problem's coordinate blocks where the matrix has that
+  // shape (a string's bodies), else banded or sparse (solvers/iteration_matrix_lu.hpp).
+  IterationMatrixLu linear_solver_;
+  bool factorized_ = false;
+  VecX Solve(const VecX& rhs) {
+    VecX x = rhs;
+    linear_solver_.SolveInPlace(x);
+    if (!x.allFinite()) throw SolverError("the solution of the linearized equations is not finite");
+    return x;
+  }
   double shift_scale_ = 0.0;  // max K_ii / max M_ii, once a shift is needed
   int extra_iterations_ = 0;  // look-ahead solves of ShiftedStep (each counts as an iteration)
 };
@@ -83,7 +94,9 @@ class NewtonStepper {
 std::string NewtonStepper::Factorize(const VecX& q, double shift) {
   try {
     const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, shift);
-    linear_solver_.Factorize(k, symmetry_);
+    factorized_ = false;
+    linear_solver_.Factorize(k);
+    factorized_ = true;
   } catch (const SolverError& error) {
     return fmt::format("the iteration matrix cannot be factorized ({})", error.what());
   }
@@ -125,7 +138,7 @@ StepOutcome NewtonStepper::EndGame(const VecX& q, const VecX& residual) {
     if (!Factorize(out.q).empty()) return out;
     VecX dv;
     try {
-      dv = -linear_solver_.Solve(current);
+      dv = -Solve(current);
     } catch (const SolverError&) {
       return out;
     }
@@ -193,7 +206,7 @@ std::optional<LineSearchResult> NewtonStepper::ShiftedStep(const VecX& q, const 
   if (short_enough && result.residual.allFinite()) {
     if (std::string failed = Factorize(result.q, shift); failed.empty()) {
       try {
-        const VecX second = -linear_solver_.Solve(result.residual);
+        const VecX second = -Solve(result.residual);
         const double second_length = problem_.StepLength(result.q, second);
         LineSearchResult look_ahead;
         look_ahead.step = 1.0;
@@ -235,7 +248,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
   StepOutcome out;
   out.q = q_start;
   VecX residual = problem_.Residual(options_.time, out.q, zero_, zero_);
-  const bool reuse = problem_.CanReuseIterationMatrix();
+  const bool reuse = problem_.CanReuseIterationMatrix() || options_.reuse_contraction > 0.0;
   double end_game_below = options_.end_game_residual;  // |R| at or below which the end game is tried
   bool fresh = false;  // the factorization belongs to the current q
   double first_norm = -1.0;
@@ -264,7 +277,8 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
       out.reason = fmt::format("diverging (|R| grew {:.3g} times)", norm / first_norm);
       return out;
     }
-    if (options_.mass_shift || !reuse || !linear_solver_.has_factorization() || out.iterations == 0) {
+    if (options_.mass_shift || !reuse || !factorized_ || out.iterations == 0 || stale_) {
+      stale_ = false;
       if (std::string failure = Factorize(out.q, shift); !failure.empty()) {
         out.reason = std::move(failure);
         return out;
@@ -273,7 +287,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
     }
     VecX dv;
     try {
-      dv = -linear_solver_.Solve(residual);
+      dv = -Solve(residual);
     } catch (const SolverError& error) {
       out.reason = fmt::format("the Newton correction cannot be computed ({})", error.what());
       return out;
@@ -331,6 +345,8 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
     fresh = false;
     out.q = std::move(search.q);
     residual = std::move(search.residual);
+    // A kept factorization that no longer contracts well enough is renewed.
+    if (options_.reuse_contraction > 0.0 && !(residual.norm() <= options_.reuse_contraction * norm)) stale_ = true;
     if (options_.mass_shift && residual.allFinite() && residual.norm() <= end_game_below) {
       end_game_below = 0.5 * residual.norm();
       StepOutcome finished = EndGame(out.q, residual);
@@ -426,6 +442,7 @@ std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place
 
 StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
                          const NewtonOptions& options) {
+  const profile::Scope scope("static: Newton");
   CheckArguments(problem, q_start, options);
   StaticResult result;
   result.force_scale = DetermineForceScale(problem, q_start, options);

@@ -64,6 +64,12 @@ struct NewtonOptions {
   // can cycle near the solution (σ lowered, a step that overshoots along a direction K barely
   // resists, σ raised again) where Newton itself converges in a few steps.
   double end_game_residual = 0.0;
+  // Modified Newton: > 0 keeps the factorization of the iteration matrix from one iteration to the
+  // next while each step lowers |R| to at most this fraction of what it was, and factorizes anew after
+  // a step that does not (a solve from a nearby equilibrium: one factorization, then residuals and
+  // back-substitutions). 0: a new factorization every iteration (unless the problem's matrix is
+  // reusable, StaticProblem::CanReuseIterationMatrix).
+  double reuse_contraction = 0.0;
   int max_iterations = 25;           // per load step
   // Over all load steps: the solve stops (fails) once it has used more (0 = no limit), so that a
   // hopeless continuation ends with a message instead of running for minutes.

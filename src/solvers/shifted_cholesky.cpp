@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/profile.hpp"
 #include "solvers/linear_solver.hpp"
 
 // LAPACK's banded Cholesky (Fortran interface; liblapack comes with libsuitesparse-dev).
@@ -23,8 +24,8 @@ struct ShiftedCholesky::Factors {
   Eigen::SimplicialLLT<SparseMat, Eigen::Lower, Eigen::AMDOrdering<int>> amd;
 };
 
-ShiftedCholesky::ShiftedCholesky(const SparseMat& stiffness, const SparseMat& metric)
-    : metric_given_(metric), factors_(std::make_unique<Factors>()) {
+ShiftedCholesky::ShiftedCholesky(const SparseMat& stiffness, const SparseMat& metric, std::vector<Eigen::Index> blocks)
+    : metric_given_(metric), factors_(std::make_unique<Factors>()), blocks_(std::move(blocks)) {
   if (stiffness.rows() != stiffness.cols() || metric.rows() != metric.cols() || stiffness.rows() != metric.rows()) {
     throw LogicError(fmt::format("ShiftedCholesky: H is {}x{}, M {}x{}", stiffness.rows(), stiffness.cols(),
                                  metric.rows(), metric.cols()));
@@ -73,8 +74,11 @@ void ShiftedCholesky::Build(const SparseMat& stiffness) {
       from_transposed_[static_cast<std::size_t>(k)] = EntryIndex(first, j, i);
     }
   }
-  banded_ = FactorizeInOwnOrder(stiffness_);
-  if (banded_) {
+  by_blocks_ = !blocks_.empty() && block_factors_.Analyze(stiffness_, blocks_);
+  banded_ = !by_blocks_ && FactorizeInOwnOrder(stiffness_);
+  if (by_blocks_) {
+    // factorized from stiffness_ and metric_ directly
+  } else if (banded_) {
     half_bandwidth_ = static_cast<int>(HalfBandwidth(stiffness_));
     band_.resize(static_cast<std::size_t>(half_bandwidth_ + 1) * static_cast<std::size_t>(stiffness_.rows()));
   } else {
@@ -85,6 +89,7 @@ void ShiftedCholesky::Build(const SparseMat& stiffness) {
 }
 
 void ShiftedCholesky::SetStiffness(const SparseMat& stiffness) {
+  const profile::Scope scope("solver: Cholesky setup");
   if (!SamePattern(stiffness, first_outer_, first_inner_)) {
     Build(stiffness);
     return;
@@ -104,6 +109,7 @@ ShiftedCholesky::ShiftedCholesky(ShiftedCholesky&&) noexcept = default;
 ShiftedCholesky& ShiftedCholesky::operator=(ShiftedCholesky&&) noexcept = default;
 
 bool ShiftedCholesky::Factorize(double shift) {
+  const profile::Scope scope("solver: Cholesky factorization");
   ++count_;
   const double* h = stiffness_.valuePtr();
   const double* m = metric_.valuePtr();
@@ -111,7 +117,9 @@ bool ShiftedCholesky::Factorize(double shift) {
   const int* inner = stiffness_.innerIndexPtr();
   const int n = static_cast<int>(stiffness_.rows());
   bool ok = false;
-  if (banded_) {
+  if (by_blocks_) {
+    ok = block_factors_.Factorize(h, m, shift);
+  } else if (banded_) {
     // Lower band storage: ab(i − j, j) = A(i, j) for j ≤ i ≤ j + kd (0-based, ldab = kd + 1).
     const int ldab = half_bandwidth_ + 1;
     std::fill(band_.begin(), band_.end(), 0.0);
@@ -137,7 +145,13 @@ bool ShiftedCholesky::Factorize(double shift) {
 }
 
 VecX ShiftedCholesky::Solve(const VecX& rhs) const {
+  const profile::Scope scope("solver: Cholesky solve");
   if (!factorized_) throw LogicError("ShiftedCholesky::Solve: no positive definite factorization held");
+  if (by_blocks_) {
+    VecX x = rhs;
+    block_factors_.SolveInPlace(x);
+    return x;
+  }
   if (!banded_) return factors_->amd.solve(rhs);
   VecX x = rhs;
   const int n = static_cast<int>(x.size()), ldab = half_bandwidth_ + 1, one = 1;

@@ -9,20 +9,24 @@
 // Guide §5.3.2): no permutation or symbolic step per factorization, which in Eigen's simplicial
 // Cholesky took more time than the factorization itself (profiled on a vertical-hole robustness
 // case: its copies and permutations ~20 % of the solve, the numeric factorization 5 %). Any other
-// goes to Eigen::SimplicialLLT with AMD.
+// goes to Eigen::SimplicialLLT with AMD. Given coordinate blocks that the matrix couples only to
+// their neighbours (a string's bodies), it is factorized by blocks instead
+// (solvers/block_tridiagonal_cholesky.hpp), which skips the band's zeros.
 #pragma once
 
 #include <memory>
 #include <vector>
 
 #include "core/types.hpp"
+#include "solvers/block_tridiagonal_cholesky.hpp"
 
 namespace drillflex::solvers {
 
 class ShiftedCholesky {
  public:
-  // H is symmetrized here ((H + Hᵀ)/2); H and M square, of one size, finite.
-  ShiftedCholesky(const SparseMat& stiffness, const SparseMat& metric);
+  // H is symmetrized here ((H + Hᵀ)/2); H and M square, of one size, finite. `blocks`: the first
+  // coordinate of each block and then n (solvers::Problem::CoordinateBlocks), or empty.
+  ShiftedCholesky(const SparseMat& stiffness, const SparseMat& metric, std::vector<Eigen::Index> blocks = {});
   // A new H with the metric kept: where H has the pattern of the first one (a model's tangent has a
   // fixed pattern), its symmetric part is formed entry by entry through maps set up once, without
   // the sparse sums and transposes (which took two thirds of a solve when done each iteration).
@@ -59,6 +63,9 @@ class ShiftedCholesky {
   std::vector<int> first_outer_, first_inner_;
   std::vector<int> from_entry_, from_transposed_;
   std::unique_ptr<Factors> factors_;
+  std::vector<Eigen::Index> blocks_;
+  bool by_blocks_ = false;
+  BlockTridiagonalCholesky block_factors_;
   bool banded_ = false;
   int half_bandwidth_ = 0;
   std::vector<double> band_;  // H + σM's lower band, LAPACK storage (ldab = half_bandwidth + 1)

@@ -54,7 +54,7 @@ BitReport SolveBit(std::optional<double> toolface) {
   const model::ModelInput input = BentMotorInput(toolface);
   cms::ReductionCache cache;
   const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const StaticResult result = RunStaticInWell(input, built, cache, StaticSettings{});
+  const StaticResult result = RunStaticInWell(input, built, StaticSettings{});
   EXPECT_TRUE(result.converged);
   EXPECT_TRUE(result.bit.has_value());
   const BitReport bit = result.bit.value_or(BitReport{});

@@ -47,7 +47,7 @@ TEST(BitBottomStatic, HookLoadLessContactForceIsTheBuoyedWeight) {
   input.block = block;
   cms::ReductionCache cache;
   const model::BuiltModel built = model::BuildSystemModel(input, cache);
-  const StaticResult result = RunStaticInWell(input, built, cache, StaticSettings{});
+  const StaticResult result = RunStaticInWell(input, built, StaticSettings{});
   ASSERT_TRUE(result.converged);
   const double contact = ContactForce(built, result.q);
   std::printf("buoyed weight %.6g N, hook load %.6g N, contact force %.6g N (WOB from the hook load %.6g N)\n", weight,
@@ -63,7 +63,7 @@ TEST(BitBottomStatic, TransientStartsOnBottomInBalance) {
   const model::BuiltModel start = model::BuildSystemModel(input, cache);
   TransientSettings settings;
   settings.bit_rock = BottomOnly();
-  const VecX q0 = TransientStartPositions(input, start, cache, settings, StaticSettings{});
+  const VecX q0 = TransientStartPositions(input, start, settings, StaticSettings{});
   const double fluid_frequency = TransientFluidFrequency(input, start, q0, settings);
   const model::ModelInput moving_input =
       PlaceBottomAtStart(TransientModelInput(input, settings, fluid_frequency), start, q0);

@@ -26,11 +26,20 @@ model::ModelInput Cantilever() {
   return input;
 }
 
-// The cantilever built, with its reductions.
-struct BuiltCantilever {
+// The cantilever built, with its reductions; the initial loads a transient releases it from, if
+// any, in its model as their load group (model::ModelInput::initial_loads).
+model::ModelInput CantileverWith(std::vector<model::Load> initial_loads) {
   model::ModelInput input = Cantilever();
+  input.initial_loads = std::move(initial_loads);
+  return input;
+}
+
+struct BuiltCantilever {
+  explicit BuiltCantilever(std::vector<model::Load> initial_loads = {})
+      : input(CantileverWith(std::move(initial_loads))), built(model::BuildSystemModel(input, cache)) {}
+  model::ModelInput input;
   cms::ReductionCache cache;
-  model::BuiltModel built = model::BuildSystemModel(input, cache);
+  model::BuiltModel built;
 };
 
 double TipDeflection(double force) {
@@ -38,7 +47,8 @@ double TipDeflection(double force) {
 }
 
 TEST(TransientAnalysis, ReleasedCantileverSwingsThroughZeroWithItsEnergy) {
-  BuiltCantilever cantilever;
+  const std::vector<model::Load> initial = {PointLoad(testing::kRodLength, Vec3(0.0, 100.0, 0.0))};  // toward +y
+  BuiltCantilever cantilever(initial);
   const model::BuiltModel& built = cantilever.built;
   TransientSettings settings;
   settings.duration = 0.25;  // about half a period of 1/2.1434 Hz
@@ -47,8 +57,8 @@ TEST(TransientAnalysis, ReleasedCantileverSwingsThroughZeroWithItsEnergy) {
   settings.rho_infinity = 1.0;
   settings.tolerance = 1e-8;
   settings.probes = {testing::kRodLength, 0.0};
-  settings.initial_loads = {PointLoad(testing::kRodLength, Vec3(0.0, 100.0, 0.0))};  // toward +y, right
-  const VecX start = TransientStartPositions(cantilever.input, built, cantilever.cache, settings, StaticSettings{});
+  settings.initial_loads = initial;  // toward +y, right
+  const VecX start = TransientStartPositions(cantilever.input, built, settings, StaticSettings{});
   const TransientResult result = RunTransient(built, start, settings);
   ASSERT_EQ(result.samples.size(), 26u);
   EXPECT_NEAR(result.samples.back().time, 0.25, 1e-12);
@@ -83,7 +93,7 @@ TEST(TransientAnalysis, RestAtTheEquilibriumStaysAtRest) {
   settings.output_interval = 0.02;  // samples at 0, 0.02, 0.04 and the duration 0.05
   settings.start = TransientStart::Reference;
   settings.probes = {2.0};
-  const VecX start = TransientStartPositions(cantilever.input, built, cantilever.cache, settings, StaticSettings{});
+  const VecX start = TransientStartPositions(cantilever.input, built, settings, StaticSettings{});
   const TransientResult result = RunTransient(built, start, settings);
   ASSERT_EQ(result.samples.size(), 4u);
   EXPECT_NEAR(result.samples.back().time, 0.05, 1e-15);
@@ -97,15 +107,16 @@ TEST(TransientAnalysis, RestAtTheEquilibriumStaysAtRest) {
 // TransientSettings::state_frames: the whole state at every k-th output sample from t = 0 and at the
 // end, at most that many; the run otherwise the same to the bit.
 TEST(TransientAnalysis, StateFramesKeepEveryKthSampleFromTheStartAndTheEndWithoutChangingTheRun) {
-  BuiltCantilever cantilever;
+  const std::vector<model::Load> initial = {PointLoad(testing::kRodLength, Vec3(0.0, 100.0, 0.0))};
+  BuiltCantilever cantilever(initial);
   const model::BuiltModel& built = cantilever.built;
   TransientSettings settings;
   settings.duration = 0.1;
   settings.output_interval = 0.01;  // 11 samples
   settings.time_step = 5e-4;
   settings.probes = {testing::kRodLength};
-  settings.initial_loads = {PointLoad(testing::kRodLength, Vec3(0.0, 100.0, 0.0))};
-  const VecX start = TransientStartPositions(cantilever.input, built, cantilever.cache, settings, StaticSettings{});
+  settings.initial_loads = initial;
+  const VecX start = TransientStartPositions(cantilever.input, built, settings, StaticSettings{});
   const TransientResult plain = RunTransient(built, start, settings);
   EXPECT_TRUE(plain.frame_times.empty());  // state_frames = 0 by default: no frames kept
   EXPECT_TRUE(plain.frame_q.empty());

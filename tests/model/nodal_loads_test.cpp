@@ -128,7 +128,7 @@ TEST(NodalLoadElement, AxialGradientEnergyIsTheWorkThroughTheShortening) {
     ElementState state;
     state.poses = {&poses[0]};
     state.velocity = VecX::Zero(body.velocity_count());
-    state.load_factor = 1.0;
+    state.parameters.load_factor = 1.0;
     // PotentialEnergy = −F·(r_k − r_k,ref) of the linear modes plus the gradient's energy.
     const Vec3 rest = body.reference_position + reduced.node_positions[k];
     const double linear = -forces[k].dot(pose.NodePosition(body, k) - rest);

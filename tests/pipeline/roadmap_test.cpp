@@ -60,11 +60,19 @@ TEST(Roadmap, TheTopComponentReachesTheSurface) {
   EXPECT_THROW(CaseAtDepth(StraightHole(0.0), 30.0), InputError);
 }
 
+// Off bottom the string hangs straight: pick-up, slack-off and rotating all read the buoyed weight. On
+// bottom the 40 kN WOB puts the lower pipe (above 27 m of collars weighing 30 kN) in compression,
+// which in a vertical hole buckles it with no low side to lie on; with the torque on bit the energy's
+// minimum is not found there (the buckled spans' azimuth is free and the dead torque keeps releasing
+// work as they turn), so the on-bottom run fails with its reason and leaves only its torque NaN. (The
+// fallback paths removed in issue 32 reported the straight, unstable string instead: the torque on
+// bit alone, 2 kN·m.)
 TEST(Roadmap, AVerticalHoleHangsItsBuoyedWeightWhateverTheMotion) {
   const std::vector<RoadmapPoint> points = Roadmap(StraightHole(0.0), {207.0, 45.0, {0.2, 0.4}});
   ASSERT_EQ(points.size(), 6u);  // 207, 252 and 297 m, two friction factors each
   for (const RoadmapPoint& point : points) {
-    ASSERT_TRUE(point.message.empty()) << point.message;
+    EXPECT_TRUE(std::isnan(point.on_bottom_torque)) << point.bit_md << " m: " << point.on_bottom_torque;
+    EXPECT_EQ(point.message.rfind("on bottom: ", 0), 0u) << point.message;
     const double weight = BuoyedWeight(point.bit_md);
     for (const double hook : {point.pick_up, point.slack_off, point.rotating}) {
       EXPECT_NEAR(hook, weight, 1e-3 * weight) << point.bit_md << " m, mu " << point.friction;

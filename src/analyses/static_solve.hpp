@@ -1,0 +1,53 @@
+// The static equilibrium of a built model under a parameter block (model/load_parameters.hpp): one
+// chain of strategies, each returning its outcome (none throws to say it did not converge):
+//
+//   1. From a nearby equilibrium, when the caller has one (a roadmap's neighbouring run: the same
+//      depth at another friction factor or motion, the previous depth shifted along the hole):
+//      Newton at the full parameters, its steps cut to kWallStepLimit across the hole, the
+//      factorization kept while the residual contracts (solvers/newton.hpp).
+//   2. A string in a well (on the default supports, or on the case's with
+//      StaticSettings::energy_minimum_on_case_supports): the stable minimum of the energy at rest
+//      from the string resting on the wall (analyses/static_minimum.hpp), then, for a string that
+//      slides against the wall, Newton continued in the friction from 0 to its value.
+//   3. Any other string (on its case supports, without a well): Newton with load stepping from the
+//      reference placement.
+//   4. `method: relaxation` in the case: dynamic relaxation (analyses/dynamic_relaxation.hpp).
+//
+// A strategy that fails hands over to the next with its reason kept; the outcome says which one
+// found the equilibrium (results.json `static.method_used`).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analyses/analysis_settings.hpp"
+#include "core/types.hpp"
+#include "model/builder.hpp"
+
+namespace drillflex::analyses {
+
+struct StaticOutcome {
+  bool converged = false;
+  VecX q;                      // the equilibrium, or where the last strategy stopped
+  int iterations = 0;          // Newton / trust-region iterations, or relaxation steps, of every strategy tried
+  int load_steps = 0;
+  double residual_norm = 0.0;  // |R|₂ at q, N
+  bool stable = false;         // checked by the energy minimum: no direction of negative curvature
+  // "continuation" (1), "energy-minimum" or "energy-minimum+friction" (2), "newton" (3),
+  // "dynamic-relaxation" (4).
+  std::string method;
+  std::string failure;                 // why no strategy converged (empty when one did)
+  std::vector<std::string> warnings;   // what the engineer must know about the answer
+};
+
+// The chain above. `input` is what `built` was built from; `start` a nearby equilibrium of the same
+// model, or null.
+StaticOutcome SolveStaticEquilibrium(const model::ModelInput& input, const model::BuiltModel& built,
+                                     const StaticSettings& settings, const model::LoadParameters& parameters = 1.0,
+                                     const VecX* start = nullptr);
+
+// Strategy 1 alone: Newton at the full parameters from `start`, at most `max_iterations` iterations.
+StaticOutcome SolveFromNeighbour(const model::BuiltModel& built, const StaticSettings& settings,
+                                 const model::LoadParameters& parameters, const VecX& start, int max_iterations);
+
+}  // namespace drillflex::analyses
