@@ -128,6 +128,10 @@ struct TransientSettings {
   std::optional<double> fluid_frequency;
 };
 
+// Which model a roadmap runs: the stiff string (the case's bodies, contacts and buckling), the soft
+// string (Johancsik: analyses/soft_string.hpp, the engineer's familiar cross-check), or both.
+enum class RoadmapModel { Stiff, Soft, Both };
+
 // The torque-and-drag roadmap (`drillflex roadmap`, pipeline/roadmap.hpp): bit depths from `from_md`
 // down to the case's bit MD at `step`, each friction factor at each depth. A zero or empty member
 // takes its default (pipeline::CompleteRoadmapSettings).
@@ -139,6 +143,7 @@ struct RoadmapSettings {
   double rotary_speed = 0.0;      // rad/s off and on bottom; 0: the case's rpm, else 60 rpm
   double trip_speed = 0.3048;     // m/s pulling out and running in (> 0; the friction is Coulomb, so
                                   // above its regularization velocity only its sign counts)
+  RoadmapModel model = RoadmapModel::Stiff;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

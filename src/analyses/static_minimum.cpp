@@ -15,7 +15,7 @@ namespace {
 constexpr int kMaxTrustRegionIterations = 1000;
 // The first trust radius, m (a mass-weighted RMS move of the string): a tenth of a typical
 // clearance's few centimetres, over the part of the string that moves.
-constexpr double kInitialRadius = 1e-2;
+constexpr double kInitialRadius = 1e-3;
 // The friction continuation of a rotating string: the largest lateral move of a node in a Newton
 // step (m), the iterations of a step and of the whole continuation, its first and smallest step.
 constexpr double kWallStepLimit = 0.01;

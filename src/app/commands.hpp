@@ -29,6 +29,7 @@ struct CommandOptions {
   std::string roadmap_from;
   std::string roadmap_step;
   std::string roadmap_friction;
+  std::string roadmap_model;  // stiff, soft or both
   // `stability` only (a sweep's VALUES); `jobs`, `resume` and `keep_runs` too:
   std::string stability_rpm_values;
   std::string stability_wob_values;

@@ -102,6 +102,8 @@ int main(int argc, char** argv) {
       sub->add_option("--from", options.roadmap_from, "First bit MD, with or without a unit (default: the case's roadmap.from)");
       sub->add_option("--step", options.roadmap_step, "Depth step (default: ten depths to the case's bit MD)");
       sub->add_option("--friction", options.roadmap_friction, "Friction factors, a list: 0.2,0.3,0.4");
+      sub->add_option("--model", options.roadmap_model,
+                      "stiff (the case's string, default), soft (Johancsik's soft string) or both (drawn together)");
     }
     if (name == "stability") {
       sub->add_option("--rpm", options.stability_rpm_values, "Top-drive speeds: a list (60,120) or FROM:TO:STEP (40:200:20 rpm)")

@@ -22,6 +22,7 @@ int RunRoadmapCommand(const CommandOptions& options) {
   std::vector<io::CaseValue> values;
   if (!options.roadmap_from.empty()) values.push_back({"analyses.roadmap.from", options.roadmap_from});
   if (!options.roadmap_step.empty()) values.push_back({"analyses.roadmap.step", options.roadmap_step});
+  if (!options.roadmap_model.empty()) values.push_back({"analyses.roadmap.model", options.roadmap_model});
   if (!options.roadmap_friction.empty()) {
     values.push_back({"analyses.roadmap.friction", "[" + options.roadmap_friction + "]"});
   }
@@ -29,19 +30,28 @@ int RunRoadmapCommand(const CommandOptions& options) {
   const analyses::RoadmapSettings settings =
       pipeline::CompleteRoadmapSettings(c, c.analyses.roadmap.value_or(analyses::RoadmapSettings{}));
   const std::size_t depths = pipeline::RoadmapDepths(c, settings).size();
-  std::cout << fmt::format("roadmap: {} depths × {} friction factors of {}, 4 statics each, on {} job{}\n", depths,
-                           settings.friction.size(), c.name, options.jobs, options.jobs == 1 ? "" : "s");
+  const bool soft_only = settings.model == analyses::RoadmapModel::Soft;
+  std::cout << fmt::format("roadmap: {} depths × {} friction factors of {}, 4 {} each, on {} job{}\n", depths,
+                           settings.friction.size(), c.name,
+                           soft_only ? "soft-string runs" : settings.model == analyses::RoadmapModel::Both
+                                                                ? "statics and 4 soft-string runs"
+                                                                : "statics",
+                           options.jobs, options.jobs == 1 ? "" : "s");
   pipeline::RoadmapOptions run;
   run.jobs = options.jobs;
   run.progress = [](int done, int total, int failed, double seconds_left) {
     ShowBatchProgress("roadmap", done, total, failed, seconds_left);
   };
-  const std::vector<pipeline::RoadmapPoint> points = pipeline::RunRoadmap(c, settings, run);
+  const std::vector<pipeline::RoadmapPoint> points =
+      soft_only ? pipeline::RunSoftRoadmap(c, settings) : pipeline::RunRoadmap(c, settings, run);
+  const std::vector<pipeline::RoadmapPoint> soft_points =
+      settings.model == analyses::RoadmapModel::Both ? pipeline::RunSoftRoadmap(c, settings)
+                                                      : std::vector<pipeline::RoadmapPoint>{};
   const std::string directory =
       options.output_directory.empty() ? io::DefaultOutputDirectory(c) + "-roadmap" : options.output_directory;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool report = c.output.report && !options.no_report;
-  pipeline::ComposeRoadmapFiles(c, settings, points, directory, report, seconds).Commit();
+  pipeline::ComposeRoadmapFiles(c, settings, points, directory, report, seconds, soft_points).Commit();
   int failed = 0;
   for (const pipeline::RoadmapPoint& point : points) failed += point.message.empty() ? 0 : 1;
   std::cout << fmt::format("roadmap: {} points, {} failed; results in {}/roadmap.csv{} ({:.3g} s)\n", points.size(),

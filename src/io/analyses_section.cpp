@@ -205,8 +205,8 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
 
 // `roadmap: {from, step, friction, rpm, trip_speed}`: the settings of `drillflex roadmap`.
 analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
-  node.ExpectMap("the roadmap settings {from, step, friction, rpm, trip_speed}");
-  node.AllowOnlyKeys({"from", "step", "friction", "rpm", "trip_speed"});
+  node.ExpectMap("the roadmap settings {from, step, friction, rpm, trip_speed, model}");
+  node.AllowOnlyKeys({"from", "step", "friction", "rpm", "trip_speed", "model"});
   analyses::RoadmapSettings settings;
   settings.from_md = node.OptionalPositive("from", Quantity::Length).value_or(0.0);
   settings.step = node.OptionalPositive("step", Quantity::Length).value_or(0.0);
@@ -221,6 +221,13 @@ analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
   }
   settings.rotary_speed = node.OptionalPositive("rpm", Quantity::RotarySpeed).value_or(0.0);
   settings.trip_speed = node.OptionalPositive("trip_speed", Quantity::Velocity).value_or(settings.trip_speed);
+  if (const auto model = node.OptionalChild("model")) {
+    const std::string name = model->AsString();
+    if (name == "stiff") settings.model = analyses::RoadmapModel::Stiff;
+    else if (name == "soft") settings.model = analyses::RoadmapModel::Soft;
+    else if (name == "both") settings.model = analyses::RoadmapModel::Both;
+    else model->Fail(fmt::format("expected 'stiff', 'soft' or 'both', got '{}'", name));
+  }
   return settings;
 }
 

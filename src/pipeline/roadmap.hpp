@@ -48,15 +48,26 @@ struct RoadmapOptions {
   std::function<void(int done, int total, int failed, double seconds_left)> progress;
 };
 
-// The roadmap (settings complete: CompleteRoadmapSettings), depth by depth, each friction factor at
-// each depth, in that order.
+// The stiff-string roadmap (settings complete: CompleteRoadmapSettings), depth by depth, each
+// friction factor at each depth, in that order (settings.model is not read: RunSoftRoadmap is the
+// soft string's).
 std::vector<RoadmapPoint> RunRoadmap(const io::Case& c, const analyses::RoadmapSettings& settings,
                                      const RoadmapOptions& options = {});
 
+// The same points by the soft-string model (analyses/soft_string.hpp: Johancsik), each depth's
+// string continued to the surface as CaseAtDepth does; milliseconds for a whole roadmap.
+std::vector<RoadmapPoint> RunSoftRoadmap(const io::Case& c, const analyses::RoadmapSettings& settings);
+
+// "stiff", "soft" or "both".
+const char* RoadmapModelName(analyses::RoadmapModel model);
+
 // roadmap.csv (one row a depth and friction factor, the case's output units) and roadmap.json (the
-// same with the settings), and report.html with the roadmap's plots when `report`.
+// same with the settings), and report.html with the roadmap's plots when `report`. `points` are the
+// settings' model's (the stiff string's for both); with both, `soft_points` go to roadmap-soft.csv and
+// roadmap.json's `soft_points`, and the report draws them beside the stiff string's.
 io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSettings& settings,
                                     const std::vector<RoadmapPoint>& points, const std::string& directory,
-                                    bool report, double run_seconds);
+                                    bool report, double run_seconds,
+                                    const std::vector<RoadmapPoint>& soft_points = {});
 
 }  // namespace drillflex::pipeline

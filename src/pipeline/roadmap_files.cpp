@@ -29,13 +29,13 @@ std::string UnitOf(Quantity quantity, units::System system) {
   return quantity == Quantity::Dimensionless ? "-" : std::string(units::DefaultUnit(quantity, system));
 }
 
-}  // namespace
+// The points as a CSV table (the case's output units, a row a point) and as roadmap.json's rows.
+struct RoadmapTables {
+  std::string csv;
+  nlohmann::json rows = nlohmann::json::array();
+};
 
-io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSettings& settings,
-                                    const std::vector<RoadmapPoint>& points, const std::string& directory,
-                                    bool report, double run_seconds) {
-  io::ResultFiles files(directory, "roadmap.json");
-  const units::System system = c.output_units;
+RoadmapTables Tabulate(const std::vector<RoadmapPoint>& points, units::System system) {
   auto out = [system](double si, Quantity quantity) { return units::FromSI(si, quantity, system); };
   std::vector<std::string> columns, units_row;
   for (const RoadmapColumn& column : kColumns) {
@@ -45,7 +45,7 @@ io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSe
   columns.push_back("message");
   units_row.push_back("-");
   io::CsvTable table(columns, units_row);
-  nlohmann::json rows = nlohmann::json::array();
+  RoadmapTables tables;
   for (const RoadmapPoint& point : points) {
     std::vector<std::string> cells;
     nlohmann::json row = nlohmann::json::object();
@@ -57,9 +57,28 @@ io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSe
     cells.push_back(io::CsvTable::Text(point.message));
     row["message"] = point.message;
     table.AddCells(std::move(cells));
-    rows.push_back(std::move(row));
+    tables.rows.push_back(std::move(row));
   }
-  files.Add("roadmap.csv", table.ToString());
+  tables.csv = table.ToString();
+  return tables;
+}
+
+}  // namespace
+
+io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSettings& settings,
+                                    const std::vector<RoadmapPoint>& points, const std::string& directory,
+                                    bool report, double run_seconds, const std::vector<RoadmapPoint>& soft_points) {
+  io::ResultFiles files(directory, "roadmap.json");
+  const units::System system = c.output_units;
+  auto out = [system](double si, Quantity quantity) { return units::FromSI(si, quantity, system); };
+  RoadmapTables main = Tabulate(points, system);
+  files.Add("roadmap.csv", main.csv);
+  const bool both = settings.model == analyses::RoadmapModel::Both;
+  RoadmapTables soft;
+  if (both) {
+    soft = Tabulate(soft_points, system);
+    files.Add("roadmap-soft.csv", soft.csv);
+  }
   nlohmann::json units_json = nlohmann::json::object();
   for (const RoadmapColumn& column : kColumns) units_json[column.name] = UnitOf(column.quantity, system);
   nlohmann::json& json = files.json();
@@ -74,9 +93,11 @@ io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSe
       {"trip_speed", out(settings.trip_speed, Quantity::Velocity)},
       {"weight_on_bit", out(c.input.operation.weight_on_bit, Quantity::WeightOnBit)},
       {"torque_on_bit", out(c.input.operation.torque_on_bit, Quantity::Moment)},
+      {"model", RoadmapModelName(settings.model)},
       {"units", units_json},
-      {"points", rows},
+      {"points", std::move(main.rows)},
   };
+  if (both) json["roadmap"]["soft_points"] = std::move(soft.rows);
   if (report) {
     files.Add("report.html", io::ComposeReportHtml(json, io::ReportData{}, {"roadmap", run_seconds}));
   }

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/profile.hpp"
 #include "solvers/iteration_matrix_lu.hpp"
+#include "solvers/linear_solver.hpp"
 
 namespace drillflex::solvers {
 namespace {
@@ -80,8 +81,11 @@ class NewtonStepper {
   // The LU of K + σM: block tridiagonal on the problem's coordinate blocks where the matrix has that
   // shape (a string's bodies), else banded or sparse (solvers/iteration_matrix_lu.hpp).
   IterationMatrixLu linear_solver_;
+  SparseLinearSolver sparse_;   // when linear_solver_ refuses a nearly singular matrix
+  bool by_sparse_lu_ = false;
   bool factorized_ = false;
   VecX Solve(const VecX& rhs) {
+    if (by_sparse_lu_) return sparse_.Solve(rhs);
     VecX x = rhs;
     linear_solver_.SolveInPlace(x);
     if (!x.allFinite()) throw SolverError("the solution of the linearized equations is not finite");
@@ -92,11 +96,24 @@ class NewtonStepper {
 };
 
 std::string NewtonStepper::Factorize(const VecX& q, double shift) {
+  factorized_ = false;
+  SparseMat k;
   try {
-    const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, shift);
-    factorized_ = false;
+    k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, shift);
     linear_solver_.Factorize(k);
     factorized_ = true;
+    by_sparse_lu_ = false;
+    return {};
+  } catch (const SolverError&) {
+    // A nearly singular matrix (a string not yet held by its loads at a small load factor: its
+    // lateral motion free but for round-off) that the block and band LUs refuse by their pivot
+    // threshold: the sparse LU with partial pivoting takes it, as the solver did before them, and the
+    // trust radius cuts the long step along the free direction.
+  }
+  try {
+    sparse_.Factorize(k, MatrixSymmetry::kUnsymmetric);
+    factorized_ = true;
+    by_sparse_lu_ = true;
   } catch (const SolverError& error) {
     return fmt::format("the iteration matrix cannot be factorized ({})", error.what());
   }

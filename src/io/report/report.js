@@ -701,6 +701,8 @@
     const s = section('roadmap', 'Torque-and-drag roadmap');
     nav.appendChild(el('a', {href: '#roadmap', text: 'roadmap'}));
     facts(s, [
+      ['model', r.model === 'soft' ? 'soft string (Johancsik)' : r.model === 'both'
+        ? 'stiff string (markers) and soft string (Johancsik: thin lines)' : 'stiff string'],
       ['bit depths', `${num(r.from, 6)} to ${num(r.bit_md, 6)} ${ru.bit_md}, every ${num(r.step, 5)} ${ru.bit_md}`],
       ['friction factors', r.friction.map((f) => num(f, 3)).join(', ')],
       ['motion', `tripping at ${num(r.trip_speed, 3)} ${U.length}/s; rotating at ${num(r.rpm, 4)} ${U.rpm}; on bottom WOB ${num(r.weight_on_bit, 4)} ${U.wob}, torque on bit ${num(r.torque_on_bit, 5)} ${ru.on_bottom_torque}`],
@@ -722,6 +724,14 @@
       hook.push({label: `rotating, ${m}`, x: column(rows, 'rotating'), y: depth, color: color, dash: [2, 3], width: 1.5});
       torque.push({label: `off bottom, ${m}`, x: column(rows, 'off_bottom_torque'), y: depth, color: color, points: true, width: 2});
       torque.push({label: `on bottom, ${m}`, x: column(rows, 'on_bottom_torque'), y: depth, color: color, dash: [7, 4], points: true, width: 2});
+      // With `--model both` the soft string (Johancsik) beside it, thin lines without markers.
+      if (r.soft_points) {
+        const soft = r.soft_points.filter((p) => p.friction === mu), sd = column(soft, 'bit_md');
+        hook.push({label: `soft pick-up, ${m}`, x: column(soft, 'pick_up'), y: sd, color: color, width: 0.8});
+        hook.push({label: `soft slack-off, ${m}`, x: column(soft, 'slack_off'), y: sd, color: color, dash: [7, 4], width: 0.8});
+        torque.push({label: `soft off bottom, ${m}`, x: column(soft, 'off_bottom_torque'), y: sd, color: color, width: 0.8});
+        torque.push({label: `soft on bottom, ${m}`, x: column(soft, 'on_bottom_torque'), y: sd, color: color, dash: [7, 4], width: 0.8});
+      }
     });
     plot(grid, {title: 'Hook load: pick-up (solid), slack-off (dashed), rotating off bottom (dotted)', x: `hook load (${ru.pick_up})`,
       y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true, series: hook});
