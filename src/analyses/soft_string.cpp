@@ -52,7 +52,7 @@ void CheckOperation(const SoftStringOperation& operation) {
 
 // The element ends' MDs from the bit up to the surface (the trajectory's start MD): the bit, every
 // component boundary and every survey station between, the surface.
-std::vector<double> CutMds(const model::ModelInput& input) {
+std::vector<double> CutMds(const model::ModelInput& input, double max_element_length) {
   const double surface = input.trajectory->start_md();
   const double bit = input.bit_md;
   const auto inside = [&](double md) { return md > surface + kCutMergeLength && md < bit - kCutMergeLength; };
@@ -71,7 +71,15 @@ std::vector<double> CutMds(const model::ModelInput& input) {
     if (cuts.back() - cut > kCutMergeLength) cuts.push_back(cut);
   }
   cuts.push_back(surface);
-  return cuts;
+  if (!(max_element_length > 0.0)) return cuts;
+  std::vector<double> split{cuts.front()};
+  for (std::size_t i = 1; i < cuts.size(); ++i) {
+    const double length = cuts[i - 1] - cuts[i];
+    const int pieces = std::max(1, static_cast<int>(std::ceil(length / max_element_length - 1e-9)));
+    for (int k = 1; k < pieces; ++k) split.push_back(cuts[i - 1] - length * k / pieces);
+    split.push_back(cuts[i]);
+  }
+  return split;
 }
 
 // The component at a distance s (m) from the bit (an element's middle, never on a boundary); above
@@ -137,7 +145,7 @@ SoftStringResult ComputeSoftString(const model::ModelInput& input, const SoftStr
   CheckWellAndString(input);
   CheckOperation(operation);
   const well::Trajectory& trajectory = *input.trajectory;
-  const std::vector<double> cuts = CutMds(input);
+  const std::vector<double> cuts = CutMds(input, operation.max_element_length);
   SoftStringResult result;
   result.stations.reserve(cuts.size());
   // At the bit the rock pushes up with the WOB and resists the rotation with the TOB.

@@ -63,6 +63,11 @@ struct SoftStringOperation {
   double tangential_friction = 0.0;  // μ_t around the string (rotating: torque), ≥ 0
   double weight_on_bit = 0.0;        // N, compression at the bit (0 off bottom; < 0 pulls the bit)
   double torque_on_bit = 0.0;        // N·m, the torque at the bit (carried in every motion)
+  // > 0: the elements between the cuts are further split evenly into pieces no longer than this (m),
+  // so that the result does not depend on how far apart the survey's stations are (the scheme takes
+  // each element's lower-end tension and mean inclination: first order in its length). 0: the
+  // cuts alone, Johancsik's own elements.
+  double max_element_length = 0.0;
 };
 
 // One element end, from the bit upward.

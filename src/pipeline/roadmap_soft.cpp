@@ -8,8 +8,16 @@
 namespace drillflex::pipeline {
 namespace {
 
+// Elements of at most a joint (30 ft): the result no longer depends on the survey's spacing (a
+// 500 m build surveyed at its ends read 1-2 % off in the mean inclination of one element).
+constexpr double kElementLength = model::kDefaultJointSpacing;
+
+analyses::SoftStringOperation Operation(analyses::SoftStringMotion motion, double friction, double wob, double tob) {
+  return {motion, friction, friction, wob, tob, kElementLength};
+}
+
 double HookLoad(const model::ModelInput& input, analyses::SoftStringMotion motion, double friction) {
-  return analyses::ComputeSoftString(input, {motion, friction, friction, 0.0, 0.0}).hook_load;
+  return analyses::ComputeSoftString(input, Operation(motion, friction, 0.0, 0.0)).hook_load;
 }
 
 RoadmapPoint SoftPoint(const model::ModelInput& input, double bit_md, double friction) {
@@ -18,13 +26,13 @@ RoadmapPoint SoftPoint(const model::ModelInput& input, double bit_md, double fri
   point.pick_up = HookLoad(input, SoftStringMotion::PickUp, friction);
   point.slack_off = HookLoad(input, SoftStringMotion::SlackOff, friction);
   const analyses::SoftStringResult rotating =
-      analyses::ComputeSoftString(input, {SoftStringMotion::Rotating, friction, friction, 0.0, 0.0});
+      analyses::ComputeSoftString(input, Operation(SoftStringMotion::Rotating, friction, 0.0, 0.0));
   point.rotating = rotating.hook_load;
   point.off_bottom_torque = rotating.surface_torque;
-  point.on_bottom_torque = analyses::ComputeSoftString(input, {SoftStringMotion::Rotating, friction, friction,
-                                                                input.operation.weight_on_bit,
-                                                                input.operation.torque_on_bit})
-                               .surface_torque;
+  point.on_bottom_torque =
+      analyses::ComputeSoftString(input, Operation(SoftStringMotion::Rotating, friction, input.operation.weight_on_bit,
+                                                   input.operation.torque_on_bit))
+          .surface_torque;
   return point;
 }
 

@@ -108,5 +108,57 @@ TEST(Roadmap, AStraightInclinedHoleDragsMuWSinI) {
   }
 }
 
+// The soft string (RunSoftRoadmap, Johancsik) in the straight 30° hole: exactly W cos I ± μ W sin I
+// and W cos I, and the torque μ w sin I r summed, without the stiff string's climb (N = w sin I).
+TEST(Roadmap, TheSoftStringIsJohancsiksClosedFormInAStraightHole) {
+  const double inclination = 30.0 * kPi / 180.0;
+  const io::Case c = StraightHole(30.0);
+  const std::vector<RoadmapPoint> points = RunSoftRoadmap(c, CompleteRoadmapSettings(c, {297.0, 45.0, {0.2}}));
+  ASSERT_EQ(points.size(), 1u);
+  const RoadmapPoint& point = points.front();
+  const double weight = BuoyedWeight(297.0), along = weight * std::cos(inclination);
+  const double drag = 0.2 * weight * std::sin(inclination);
+  EXPECT_NEAR(point.pick_up, along + drag, 1e-9 * weight);
+  EXPECT_NEAR(point.slack_off, along - drag, 1e-9 * weight);
+  EXPECT_NEAR(point.rotating, along, 1e-9 * weight);
+  const double torque = 0.2 * std::sin(inclination) *
+                        (TubeWeight(0.1715, 0.0714) * 27.0 * 0.08575 + TubeWeight(0.127, 0.1086) * 270.0 * 0.0635);
+  EXPECT_NEAR(point.off_bottom_torque, torque, 1e-9 * torque);
+  EXPECT_NEAR(point.on_bottom_torque, torque + 2e3, 1e-9 * torque);  // TOB 2 kN·m; WOB changes no N here
+}
+
+// A gentle 3-D well (a 500 m build to 40° while turning 30°, then a hold) with 1 100 m of plain 5 in
+// pipe: the string lies on the wall all along, its bending stiffness carries next to nothing through
+// 2.4°/30 m, and the stiff string's hook loads are the soft string's. Its torque is the soft string's
+// times 1/√(1 + μ²): the rotating pipe climbs the wall until N and μN carry the lateral load (V7).
+TEST(Roadmap, TheStiffStringMeetsTheSoftStringWhereBendingCarriesNothing) {
+  const io::Case c = io::ParseCase(R"(name: gentle
+units: SI
+well:
+  survey: [[0, 0, 0], [300, 0, 0], [800, 40, 30], [1200, 40, 30]]
+  hole: [{diameter: 0.2159}]
+  bit_md: 1100
+fluid: {density: 1200}
+string:
+  - {type: pipe, od: 0.127, id: 0.1086, length: 9, count: 122}
+model: {body_length: 9, elements_per_body: 6, modes_per_body: 6}
+operation: {rpm: 60}
+)",
+                                   "gentle.yaml");
+  const analyses::RoadmapSettings settings = CompleteRoadmapSettings(c, {1100.0, 100.0, {0.3}});
+  const RoadmapPoint stiff = RunRoadmap(c, settings).front();
+  const RoadmapPoint soft = RunSoftRoadmap(c, settings).front();
+  ASSERT_TRUE(stiff.message.empty()) << stiff.message;
+  EXPECT_NEAR(stiff.pick_up, soft.pick_up, 5e-4 * soft.pick_up);
+  EXPECT_NEAR(stiff.slack_off, soft.slack_off, 5e-4 * soft.slack_off);
+  EXPECT_NEAR(stiff.rotating, soft.rotating, 5e-4 * soft.rotating);
+  const double climbing = soft.off_bottom_torque / std::sqrt(1.0 + 0.3 * 0.3);
+  EXPECT_NEAR(stiff.off_bottom_torque, climbing, 0.01 * climbing);
+  std::printf("gentle 3-D well, mu 0.3: stiff / soft pick-up %+.4f %%, slack-off %+.4f %%, rotating %+.4f %%, "
+              "torque against soft/sqrt(1+mu^2) %+.3f %%\n",
+              100.0 * (stiff.pick_up / soft.pick_up - 1.0), 100.0 * (stiff.slack_off / soft.slack_off - 1.0),
+              100.0 * (stiff.rotating / soft.rotating - 1.0), 100.0 * (stiff.off_bottom_torque / climbing - 1.0));
+}
+
 }  // namespace
 }  // namespace drillflex::pipeline
