@@ -52,7 +52,7 @@ void Point(benchmark::State& state, const char* case_path, double bit_md_ft, con
   for (auto _ : state) {
     const std::vector<pipeline::RoadmapPoint> points = pipeline::RunRoadmap(c, settings);
     point = points.front();
-    if (!point.message.empty()) {
+    if (point.failed()) {
       state.SkipWithError(point.message.c_str());
       break;
     }
@@ -78,7 +78,7 @@ void BM_BundledRoadmap(benchmark::State& state) {
     pipeline::RoadmapOptions options;
     options.jobs = 2;
     failed = 0;
-    for (const pipeline::RoadmapPoint& point : pipeline::RunRoadmap(c, settings, options)) failed += !point.message.empty();
+    for (const pipeline::RoadmapPoint& point : pipeline::RunRoadmap(c, settings, options)) failed += point.failed();
   }
   state.counters["failed_points"] = failed;
   state.counters["peak_MB"] = PeakMemoryMb();

@@ -53,7 +53,7 @@ int RunRoadmapCommand(const CommandOptions& options) {
   const bool report = c.output.report && !options.no_report;
   pipeline::ComposeRoadmapFiles(c, settings, points, directory, report, seconds, soft_points).Commit();
   int failed = 0;
-  for (const pipeline::RoadmapPoint& point : points) failed += point.message.empty() ? 0 : 1;
+  for (const pipeline::RoadmapPoint& point : points) failed += point.failed() ? 1 : 0;
   std::cout << fmt::format("roadmap: {} points, {} failed; results in {}/roadmap.csv{} ({:.3g} s)\n", points.size(),
                            failed, directory, report ? fmt::format(", the plots in {}/report.html", directory) : "",
                            seconds);

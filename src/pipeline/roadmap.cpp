@@ -43,6 +43,13 @@ double ShallowestDepth(const io::Case& c) {
 
 }  // namespace
 
+bool RoadmapPoint::failed() const {
+  for (const double value : {pick_up, slack_off, rotating, off_bottom_torque, on_bottom_torque}) {
+    if (!std::isfinite(value)) return true;
+  }
+  return false;
+}
+
 io::Case CaseAtDepth(const io::Case& c, double bit_md) {
   if (!c.well) throw InputError({c.file, 0, 0}, "well", "a roadmap needs a well");
   io::Case at = c;
@@ -135,7 +142,7 @@ std::vector<RoadmapPoint> RunRoadmap(const io::Case& c, const analyses::RoadmapS
     if (!options.progress) return;
     const std::lock_guard<std::mutex> lock(progress_mutex);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (const RoadmapPoint& point : at_depth) failed += point.message.empty() ? 0 : 1;
+    for (const RoadmapPoint& point : at_depth) failed += point.failed() ? 1 : 0;
     done += static_cast<int>(frictions);
     depth_done += depths[d] * static_cast<double>(frictions);
     options.progress(done, static_cast<int>(points.size()), failed, elapsed * (depth_total - depth_done) / depth_done);

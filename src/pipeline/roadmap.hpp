@@ -16,7 +16,9 @@ namespace drillflex::pipeline {
 
 // One depth and friction factor. Hook loads in N (tension at the surface), torques in N·m (positive
 // clockwise looking down-hole: the rig's). A run that failed leaves its own quantities NaN and says
-// why in `message` (the runs' reasons joined by "; "); the others stand.
+// why in `message` (the runs' reasons joined by "; "); the others stand. A run answered with a
+// warning (a rotating string's equilibrium at rest where its friction found no static balance) keeps
+// its values and adds the warning to `message`.
 struct RoadmapPoint {
   double bit_md = 0.0;
   double friction = 0.0;
@@ -26,6 +28,8 @@ struct RoadmapPoint {
   double off_bottom_torque = 0.0;
   double on_bottom_torque = 0.0;  // at the case's WOB and TOB
   std::string message;
+  // A run of the point failed: one of its values is NaN (a warning alone leaves them whole).
+  bool failed() const;
 };
 
 // The case at `bit_md`: its well's bit MD moved there and the string's top component continued to the

@@ -89,6 +89,7 @@ class DepthRuns {
   RoadmapPoint Point(double bit_md, double friction) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     RoadmapPoint point{bit_md, friction, nan, nan, nan, nan, nan, ""};
+    notes_.clear();
     const double trip = settings_.trip_speed, rpm = settings_.rotary_speed;
     auto run = [&](auto&& solve) {
       try {
@@ -119,19 +120,31 @@ class DepthRuns {
       // minimum was not found is not solved again at every friction factor.
       if (!on_bottom_ && !on_bottom_failure_.empty()) throw SolverError(on_bottom_failure_);
       const model::LoadParameters drilling = Sliding(OnBottom(friction), 0.0, rpm);
+      // Answered at rest at the friction before (its friction walks the contacts around the hole):
+      // the equilibrium at rest does not depend on the friction, and neither does the answer.
+      if (!on_bottom_at_rest_.empty()) {
+        notes_.push_back(on_bottom_at_rest_);
+        point.on_bottom_torque = ReadSurface(model_, *on_bottom_, drilling).surface_torque;
+        return;
+      }
+      const std::size_t noted = notes_.size();
       on_bottom_ = on_bottom_ ? Solve(drilling, &*on_bottom_, "on bottom") : OnBottomFromRest(drilling);
+      if (notes_.size() > noted) on_bottom_at_rest_ = notes_.back();
       point.on_bottom_torque = ReadSurface(model_, *on_bottom_, drilling).surface_torque;
     });
+    for (const std::string& note : notes_) point.message += (point.message.empty() ? "" : "; ") + note;
     return point;
   }
 
  private:
   // The run under `parameters` from `start` (or the whole chain without one); SolverError when it fails.
+  // A warning (a sliding string answered at rest: its friction found no static balance, as a string
+  // that whirls) is kept for the point's message; the run's values stand, as the static's do.
   VecX Solve(const model::LoadParameters& parameters, const VecX* start, const char* run) {
     const analyses::StaticOutcome outcome =
         analyses::SolveStaticEquilibrium(model_.input, model_.built, static_settings_, parameters, start);
     if (!outcome.converged) throw SolverError(fmt::format("{}: {}", run, outcome.failure));
-    if (!outcome.warnings.empty()) throw SolverError(fmt::format("{}: {}", run, outcome.warnings.front()));
+    for (const std::string& warning : outcome.warnings) notes_.push_back(fmt::format("{}: {}", run, warning));
     return outcome.q;
   }
 
@@ -173,6 +186,8 @@ class DepthRuns {
   analyses::StaticSettings static_settings_;
   std::optional<VecX> rest_, pick_up_, slack_off_, rotating_, on_bottom_;
   std::string on_bottom_failure_;  // why the first on-bottom run failed at this depth
+  std::vector<std::string> notes_;  // the warnings of the point's runs
+  std::string on_bottom_at_rest_;   // the warning of an on-bottom run answered at rest
 };
 
 RoadmapPoint FailedPoint(double md, double friction, const std::string& message) {

@@ -707,11 +707,14 @@
       ['friction factors', r.friction.map((f) => num(f, 3)).join(', ')],
       ['motion', `tripping at ${num(r.trip_speed, 3)} ${U.length}/s; rotating at ${num(r.rpm, 4)} ${U.rpm}; on bottom WOB ${num(r.weight_on_bit, 4)} ${U.wob}, torque on bit ${num(r.torque_on_bit, 5)} ${ru.on_bottom_torque}`],
     ]);
-    const failed = r.points.filter((p) => p.message);
-    if (failed.length) {
+    // A point whose message leaves its values whole carries a warning; one with an empty value failed.
+    const values = ['pick_up', 'slack_off', 'rotating', 'off_bottom_torque', 'on_bottom_torque'];
+    const noted = r.points.filter((p) => p.message);
+    const failed = noted.filter((p) => values.some((v) => p[v] === null)).length;
+    if (noted.length) {
       const list = el('ul', {class: 'warnings'});
-      for (const p of failed) list.appendChild(el('li', {text: `${num(p.bit_md, 6)} ${ru.bit_md}, friction ${num(p.friction, 3)}: ${p.message}`}));
-      s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: `${failed.length} of ${r.points.length} points failed`}), list]));
+      for (const p of noted) list.appendChild(el('li', {text: `${num(p.bit_md, 6)} ${ru.bit_md}, friction ${num(p.friction, 3)}: ${p.message}`}));
+      s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: `${failed} of ${r.points.length} points failed, ${noted.length - failed} answered with a warning`}), list]));
     }
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
