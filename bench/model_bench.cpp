@@ -13,12 +13,12 @@
 // far below the wanted ω² = 0.008…0.8, so ν = 1/(ω² − σ) are clustered (2034 operator
 // applications; 53 with σ = 0).
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
+#include "bench_support.hpp"
 #include "fe/material.hpp"
 #include "model/body_inertia_jacobian.hpp"
 #include "model/builder.hpp"
@@ -29,12 +29,7 @@
 namespace {
 
 using namespace drillflex;
-
-double PeakMemoryMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kB on Linux
-}
+using bench::PeakMemoryMb;
 
 void ReportMemory(benchmark::State& state) { state.counters["peak_MB"] = PeakMemoryMb(); }
 

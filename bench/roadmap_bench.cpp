@@ -8,13 +8,12 @@
 //   build/bench/roadmap_bench --benchmark_filter=Point7400
 // peak_MB is the process's peak resident size so far (getrusage ru_maxrss).
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <exception>
-#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "io/case.hpp"
 #include "pipeline/case_run.hpp"
 #include "pipeline/roadmap.hpp"
@@ -23,14 +22,8 @@
 namespace {
 
 using namespace drillflex;
-
-double PeakMemoryMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
-std::string SourcePath(const char* relative) { return (std::filesystem::path(DRILLFLEX_SOURCE_DIR) / relative).string(); }
+using bench::PeakMemoryMb;
+using bench::SourcePath;
 
 // The point drillflex gave before issue 32 (4aebbde, `drillflex roadmap CASE --from MD --friction
 // 0.25`): hook loads in lbf, torques in ft·lbf.

@@ -8,28 +8,21 @@
 // with tool joints, 965 bodies, 17 370 coordinates) under 5 s: on bottom before the rotary starts
 // (three-km-3d-not-rotating.yaml) and rotating at 120 rpm (three-km-3d.yaml). peak_MB is the process's peak
 // resident size so far (getrusage ru_maxrss).
-#include <filesystem>
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <exception>
 #include <string>
 #include <utility>
 
+#include "bench_support.hpp"
 #include "io/case.hpp"
 #include "pipeline/case_run.hpp"
 
 namespace {
 
 using namespace drillflex;
-
-double PeakMemoryMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kB on Linux
-}
-
-std::string SourcePath(const char* relative) { return (std::filesystem::path(DRILLFLEX_SOURCE_DIR) / relative).string(); }
+using bench::PeakMemoryMb;
+using bench::SourcePath;
 
 // Read, build and solve one case, as the command line does (without writing files).
 analyses::StaticResult SolveCase(const std::string& path, int& bodies, int& coordinates) {

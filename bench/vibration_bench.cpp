@@ -12,13 +12,12 @@
 // viscous (frequency-dependent annulus). The default
 // method is the reduced sweep (solvers/projected_harmonic.hpp); BM_Example_Sweep_Direct times the
 // full sparse solve at every frequency on the same case. OMP_NUM_THREADS sets the threads.
-#include <filesystem>
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <exception>
 #include <string>
 
+#include "bench_support.hpp"
 #include "io/case.hpp"
 #include "pipeline/case_run.hpp"
 #include "vibration_sweep.hpp"
@@ -26,14 +25,8 @@
 namespace {
 
 using namespace drillflex;
-
-double PeakMemoryMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
-std::string SourcePath(const char* relative) { return (std::filesystem::path(DRILLFLEX_SOURCE_DIR) / relative).string(); }
+using bench::PeakMemoryMb;
+using bench::SourcePath;
 
 void Sweep(benchmark::State& state, const std::string& path, bool static_equilibrium,
            analyses::VibrationMethod method = analyses::VibrationMethod::Reduced) {

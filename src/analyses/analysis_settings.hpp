@@ -17,10 +17,6 @@ enum class StaticMethod { Newton, DynamicRelaxation };
 struct StaticSettings {
   StaticMethod method = StaticMethod::Newton;
   int max_iterations = 200;
-  // A string in a well on the case's own supports found by the energy's minimum too (as one on the
-  // default supports is), not by Newton's load stepping: the roadmap's off-bottom runs, whose bit
-  // hangs free under a prescribed sliding (pipeline/roadmap.hpp).
-  bool energy_minimum_on_case_supports = false;
   // Where the solver's progress goes (one line per stage and Newton iteration); none when empty.
   std::function<void(const std::string&)> log;
 };

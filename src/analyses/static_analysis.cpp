@@ -214,9 +214,7 @@ void CheckForcesResolved(const model::BuiltModel& built, StaticResult& result) {
 }
 
 StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& settings) {
-  // Without a well or on case supports: the chain's load stepping (or relaxation), whatever the input.
-  model::ModelInput none;
-  return ToStaticResult(built, SolveStaticEquilibrium(none, built, settings), 1.0);
+  return ToStaticResult(built, SolveOnSupports(built, settings), 1.0);
 }
 
 StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,

@@ -105,9 +105,8 @@ StaticOutcome SolveByEnergyMinimum(const model::ModelInput& input, const model::
   return outcome;
 }
 
-bool InWell(const model::ModelInput& input, const StaticSettings& settings) {
-  return input.trajectory && !input.hole.empty() &&
-         (input.supports.empty() || settings.energy_minimum_on_case_supports);
+bool InWell(const model::ModelInput& input) {
+  return input.trajectory && !input.hole.empty() && input.supports.empty();
 }
 
 }  // namespace
@@ -138,6 +137,12 @@ StaticOutcome SolveFromNeighbour(const model::BuiltModel& built, const StaticSet
   return outcome;
 }
 
+StaticOutcome SolveOnSupports(const model::BuiltModel& built, const StaticSettings& settings,
+                              const model::LoadParameters& parameters) {
+  return settings.method == StaticMethod::DynamicRelaxation ? SolveByRelaxation(built, settings, parameters)
+                                                            : SolveByLoadStepping(built, settings, parameters);
+}
+
 StaticOutcome SolveStaticEquilibrium(const model::ModelInput& input, const model::BuiltModel& built,
                                      const StaticSettings& settings, const model::LoadParameters& parameters,
                                      const VecX* start) {
@@ -151,8 +156,8 @@ StaticOutcome SolveStaticEquilibrium(const model::ModelInput& input, const model
     spent += neighbour.iterations;
     tried = neighbour.failure + "; ";
   }
-  StaticOutcome outcome = InWell(input, settings) ? SolveByEnergyMinimum(input, built, settings, parameters)
-                                                  : SolveByLoadStepping(built, settings, parameters);
+  StaticOutcome outcome = InWell(input) ? SolveByEnergyMinimum(input, built, settings, parameters)
+                                       : SolveByLoadStepping(built, settings, parameters);
   outcome.iterations += spent;
   if (!outcome.converged) outcome.failure = tried + outcome.failure;
   return outcome;

@@ -5,8 +5,7 @@
 //      depth at another friction factor or motion, the previous depth shifted along the hole):
 //      Newton at the full parameters, its steps cut to kWallStepLimit across the hole, the
 //      factorization kept while the residual contracts (solvers/newton.hpp).
-//   2. A string in a well (on the default supports, or on the case's with
-//      StaticSettings::energy_minimum_on_case_supports): the stable minimum of the energy at rest
+//   2. A string in a well on the default supports: the stable minimum of the energy at rest
 //      from the string resting on the wall (analyses/static_minimum.hpp), then, for a string that
 //      slides against the wall, Newton continued in the friction from 0 to its value.
 //   3. Any other string (on its case supports, without a well): Newton with load stepping from the
@@ -45,6 +44,10 @@ struct StaticOutcome {
 StaticOutcome SolveStaticEquilibrium(const model::ModelInput& input, const model::BuiltModel& built,
                                      const StaticSettings& settings, const model::LoadParameters& parameters = 1.0,
                                      const VecX* start = nullptr);
+
+// Strategies 3 and 4 alone: a string on its case supports (or without a well), whatever its input.
+StaticOutcome SolveOnSupports(const model::BuiltModel& built, const StaticSettings& settings,
+                              const model::LoadParameters& parameters = 1.0);
 
 // Strategy 1 alone: Newton at the full parameters from `start`, at most `max_iterations` iterations.
 StaticOutcome SolveFromNeighbour(const model::BuiltModel& built, const StaticSettings& settings,

@@ -204,9 +204,7 @@ VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltM
   model::LoadParameters start;
   start.initial_load_factor = 1.0;
   start.sliding_mode = model::SlidingMode::kVelocities;
-  model::ModelInput still = input;
-  still.static_sliding.reset();
-  return RunStaticInWell(still, built, static_settings, start).q;
+  return RunStaticInWell(input, built, static_settings, start).q;
 }
 
 TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, const TransientSettings& settings,

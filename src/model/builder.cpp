@@ -167,23 +167,19 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
   return bodies;
 }
 
-// The work-equivalent nodal forces and moments of a load along a body: the buoyed weight (a global
-// line load over every element) or one of the case's distributed loads (string frame, over the part
-// of each element inside [from, to]). True when the load reaches the body.
-struct LineLoad {
-  Vec3 global_per_length = Vec3::Zero();  // N/m, global (the weight)
-};
-bool AddDistributedLoad(const Body& body, const LineLoad& line, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
-  if (line.global_per_length.isZero(0.0)) return false;
+// The work-equivalent nodal forces and moments of a uniform global line load over every element of
+// a body (the buoyed weight, N/m).
+void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
   for (int k = 0; k + 1 < body.node_count(); ++k) {
-    AddUniformLineLoad(node_position(k), node_position(k + 1), line.global_per_length, forces[k], moments[k],
-                       forces[k + 1], moments[k + 1]);
+    AddUniformLineLoad(node_position(k), node_position(k + 1), per_length, forces[k], moments[k], forces[k + 1],
+                       moments[k + 1]);
   }
-  return true;
 }
 
+// The same of one of the case's distributed loads (string frame, over the part of each element inside
+// [from, to]). True when the load reaches the body.
 bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
@@ -463,8 +459,9 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   for (const Body& body : placed) {
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
     const double weight = BuoyedWeightPerLength(body, input);
-    AddDistributedLoad(body, {weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2])}, forces,
-                       moments);
+    if (weight != 0.0) {
+      AddLineLoad(body, weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]), forces, moments);
+    }
     for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
     elements.push_back(std::make_unique<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kWeight));
   }

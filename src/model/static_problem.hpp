@@ -42,7 +42,6 @@ class StaticModelProblem : public solvers::StaticProblem {
     }
   }
   double ForceScale() const override { return std::abs(base_.load_factor) * model_.force_scale(); }
-  bool IsIterationMatrixSymmetric() const override { return false; }
   // How far the increment moves the farthest node across the string (m): the trust radius then
   // limits how fast contacts close, and leaves the twist and the axial stretch free.
   double StepLength(const VecX& q, const VecX& dv) const override {
@@ -59,8 +58,6 @@ class StaticModelProblem : public solvers::StaticProblem {
   // The bodies, numbered along the string (each coupled only to its neighbours).
   std::vector<Eigen::Index> CoordinateBlocks() const override { return model_.BodyCoordinateBlocks(); }
   double load_factor() const { return load_.load_factor; }
-  // The block the model is evaluated under now (the base with the solver's λ applied).
-  const LoadParameters& parameters() const { return load_; }
 
  private:
   const LoadParameters& Load() const { return load_; }

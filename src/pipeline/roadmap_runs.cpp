@@ -73,7 +73,6 @@ class DepthRuns {
   DepthRuns(const io::Case& at, const analyses::RoadmapSettings& settings)
       : model_(BuildCaseModel(at)), settings_(settings),
         static_settings_(at.analyses.static_analysis.value_or(analyses::StaticSettings{})) {
-    static_settings_.energy_minimum_on_case_supports = false;
     static_settings_.log = nullptr;
   }
 
@@ -128,7 +127,7 @@ class DepthRuns {
         return;
       }
       const std::size_t noted = notes_.size();
-      on_bottom_ = on_bottom_ ? Solve(drilling, &*on_bottom_, "on bottom") : OnBottomFromRest(drilling);
+      on_bottom_ = on_bottom_ ? Solve(drilling, &*on_bottom_, "on bottom") : OnBottomCold(drilling);
       if (notes_.size() > noted) on_bottom_at_rest_ = notes_.back();
       point.on_bottom_torque = ReadSurface(model_, *on_bottom_, drilling).surface_torque;
     });
@@ -148,31 +147,27 @@ class DepthRuns {
     return outcome.q;
   }
 
-  // The first rotating run, from the string at rest (Rotated).
-  VecX FromRest(const model::LoadParameters& parameters) { return Rotated(*rest_, parameters, "rotating off bottom"); }
-
-  // From `at_rest`, the equilibrium of the same run without friction: twisted by the friction torque
-  // the string will carry, Newton at the full friction; else the friction continued from rest, else
-  // the whole chain.
-  VecX Rotated(const VecX& at_rest, const model::LoadParameters& parameters, const char* run) {
+  // The first rotating run: from the string at rest twisted by the friction torque it will carry,
+  // Newton at the full friction; else the friction continued from rest, else the whole chain.
+  VecX FromRest(const model::LoadParameters& parameters) {
     model::ModelInput no_torque = model_.input;
     no_torque.operation.torque_on_bit = 0.0;
-    VecX twisted = at_rest;
+    VecX twisted = *rest_;
     analyses::TwistUnderTorque(no_torque, model_.built, twisted, parameters);
     const analyses::StaticOutcome direct =
         analyses::SolveFromNeighbour(model_.built, static_settings_, parameters, twisted, kDirectIterations);
     if (direct.converged) return direct.q;
     const analyses::FrictionContinuation moving =
-        analyses::ContinueInFriction(model_.built, static_settings_, parameters, at_rest);
+        analyses::ContinueInFriction(model_.built, static_settings_, parameters, *rest_);
     if (moving.converged) return moving.q;
-    return Solve(parameters, nullptr, run);
+    return Solve(parameters, nullptr, "rotating off bottom");
   }
 
   // The first run on bottom: the whole chain, from the string resting on the wall under the WOB. (From
   // the string off bottom, the bit centred and the WOB applied at once, the string slides down the
   // hole by its change of stretch, ~0.4 m over 7 400 ft, and the BHA's contacts all change: Newton
   // thrashed and the energy's minimum took 35 iterations where the cold solve takes 7.)
-  VecX OnBottomFromRest(const model::LoadParameters& parameters) {
+  VecX OnBottomCold(const model::LoadParameters& parameters) {
     try {
       return Solve(parameters, nullptr, "on bottom");
     } catch (const SolverError& error) {

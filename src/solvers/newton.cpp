@@ -43,8 +43,7 @@ class NewtonStepper {
       : problem_(problem),
         options_(options),
         tolerance_(tolerance),
-        zero_(VecX::Zero(problem.num_velocities())),
-        factorized_(false) {
+        zero_(VecX::Zero(problem.num_velocities())) {
     linear_solver_.SetBlocks(problem.CoordinateBlocks());
   }
 

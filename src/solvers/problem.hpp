@@ -81,10 +81,6 @@ class StaticProblem : public Problem {
   // state at full load.
   virtual double ForceScale() const { return 0.0; }
 
-  // False when the iteration matrix is known to be unsymmetric (e.g. with friction): the
-  // solver then goes straight to an LU factorization.
-  virtual bool IsIterationMatrixSymmetric() const { return true; }
-
   // The length of an increment dv at q for the trust radius NewtonOptions::max_increment.
   // Default |dv|∞; a model may measure what matters to it (e.g. how far a node moves).
   virtual double StepLength(const VecX& /*q*/, const VecX& dv) const { return dv.lpNorm<Eigen::Infinity>(); }

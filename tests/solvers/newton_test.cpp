@@ -292,9 +292,11 @@ TEST(SolveStatic, IncrementToleranceStopsAtRoundOff) {
 }
 
 // A spring chain that counts its iteration matrices and allows their reuse.
+// A spring chain that counts its iteration matrices and says whether they may be reused.
 class ReusableChain final : public StaticProblem {
  public:
-  ReusableChain(int n, double k, double k3, double load) : chain_(n, k, k3, load) {}
+  ReusableChain(int n, double k, double k3, double load, bool reusable = true)
+      : chain_(n, k, k3, load), reusable_(reusable) {}
   int num_positions() const override { return chain_.num_positions(); }
   int num_velocities() const override { return chain_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return chain_.Increment(q, dv); }
@@ -306,12 +308,13 @@ class ReusableChain final : public StaticProblem {
     ++matrices;
     return chain_.IterationMatrix(t, q, v, a, cK, cD, cM);
   }
-  bool CanReuseIterationMatrix() const override { return true; }
+  bool CanReuseIterationMatrix() const override { return reusable_; }
   void SetLoadFactor(double load_factor) override { chain_.SetLoadFactor(load_factor); }
   mutable int matrices = 0;
 
  private:
   SpringChain chain_;
+  bool reusable_;
 };
 
 TEST(SolveStatic, ReusesTheIterationMatrixWhenAllowed) {
@@ -334,6 +337,28 @@ TEST(SolveStatic, ReusesTheIterationMatrixWhenAllowed) {
   // Linear convergence stops just below |R| ≤ 1e-8 × 110 N; the position error is then bounded
   // by |K⁻¹| |R| ≤ (8/k)(1.1e-6 N) ≈ 9e-9 m.
   EXPECT_LT((result.q - ChainEquilibrium(8, elongation)).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+// NewtonOptions::reuse_contraction on a problem whose matrix is not reusable by itself: from a start
+// near the equilibrium (a neighbour's), the factorization is kept while each step contracts |R| to a
+// quarter or less, so fewer matrices than iterations; without it, one a step. Both reach the chain's
+// exact equilibrium.
+TEST(SolveStatic, KeepsTheFactorizationWhileTheResidualContracts) {
+  const int n = 8;
+  const double k = 1.0e3, k3 = 1.0e4, elongation = 0.1;
+  const VecX start = ChainEquilibrium(n, 0.97 * elongation);  // 3 % short of the equilibrium
+  NewtonOptions options = PlainNewton();
+  options.max_iterations = 40;
+  ReusableChain plain(n, k, k3, k * elongation + k3 * std::pow(elongation, 3), false);
+  const StaticResult full = SolveStatic(plain, start, options);
+  ASSERT_TRUE(full.converged);
+  EXPECT_EQ(plain.matrices, full.iterations);
+  options.reuse_contraction = 0.25;
+  ReusableChain kept(n, k, k3, k * elongation + k3 * std::pow(elongation, 3), false);
+  const StaticResult modified = SolveStatic(kept, start, options);
+  ASSERT_TRUE(modified.converged);
+  EXPECT_LT(kept.matrices, modified.iterations);
+  EXPECT_LT((modified.q - ChainEquilibrium(n, elongation)).cwiseAbs().maxCoeff(), 1e-8);
 }
 
 TEST(SolveStatic, RejectsAStartOfTheWrongSize) {
