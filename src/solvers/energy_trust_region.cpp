@@ -325,7 +325,7 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
     auto consider = [&](double t) {
       if (t <= 0.0) return;
       const double value = value_at(t);
-      if (value < best || (t == 1.0 && best == kInfinity)) {
+      if (value < best) {
         best = value;
         best_t = t;
       }
