@@ -1,15 +1,18 @@
 // Torque and drag at field speed (issue 32): a roadmap point (pick-up, slack-off, rotating off
 // bottom and on bottom at one friction factor) of the bundled example at 7 400 ft and of the same
-// BHA and pipe at 10 000 ft (bench/cases/ten-thousand-ft.yaml), the bundled roadmap (10 depths × 3
-// friction factors on two jobs), the soft-string roadmap, and the bundled BHA's static for the ratios
+// BHA and pipe at 10 000 ft (bench/cases/ten-thousand-ft.yaml), the case's string stiff and the pipe
+// above by the soft string (the default), the 7 400 ft point with the whole string stiff besides, the
+// bundled roadmap (10 depths × 3 friction factors on two jobs), the soft-string roadmap, and the
+// bundled BHA's static for the ratios
 // docs/validation.md quotes. Each point reports its hook loads and torques against the figures
-// drillflex gave before the issue (commit 4aebbde, the same case; `change_*_pct`), so that a speed
+// drillflex gave before the issue (commit 4aebbde, the whole string stiff; `change_*_pct`), so that a speed
 // figure comes with the accuracy it was bought at. Never a timed test: Release, one filter at a time,
 //   build/bench/roadmap_bench --benchmark_filter=Point7400
 // peak_MB is the process's peak resident size so far (getrusage ru_maxrss).
 #include <benchmark/benchmark.h>
 
 #include <exception>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,10 +40,15 @@ double Percent(double si, units::Quantity quantity, double field) {
   return 100.0 * (units::FromSI(si, quantity, units::System::Field) / field - 1.0);
 }
 
-void Point(benchmark::State& state, const char* case_path, double bit_md_ft, const Reference& reference) {
+// `stiff_length` 0: the case's string stiff, the pipe above by the soft string (the default);
+// infinity: the whole string stiff, as before issue 32's hybrid.
+void Point(benchmark::State& state, const char* case_path, double bit_md_ft, const Reference& reference,
+           double stiff_length = 0.0) {
   const io::Case c = io::ReadCase(SourcePath(case_path));
   const double md = units::ToSI(bit_md_ft, units::Quantity::Length, units::System::Field);
-  const analyses::RoadmapSettings settings = pipeline::CompleteRoadmapSettings(c, {md, 0.0, {0.25}});
+  analyses::RoadmapSettings request{md, 0.0, {0.25}};
+  request.stiff_length = stiff_length;
+  const analyses::RoadmapSettings settings = pipeline::CompleteRoadmapSettings(c, request);
   pipeline::RoadmapPoint point;
   for (auto _ : state) {
     const std::vector<pipeline::RoadmapPoint> points = pipeline::RunRoadmap(c, settings);
@@ -61,6 +69,9 @@ void Point(benchmark::State& state, const char* case_path, double bit_md_ft, con
 
 void BM_Point7400(benchmark::State& state) { Point(state, "examples/rotary-bha-build/case.yaml", 7400.0, kAt7400); }
 void BM_Point10000(benchmark::State& state) { Point(state, "bench/cases/ten-thousand-ft.yaml", 10000.0, kAt10000); }
+void BM_Point7400WholeStringStiff(benchmark::State& state) {
+  Point(state, "examples/rotary-bha-build/case.yaml", 7400.0, kAt7400, std::numeric_limits<double>::infinity());
+}
 
 // The bundled roadmap as `drillflex roadmap examples/rotary-bha-build/case.yaml --jobs 2` runs it.
 void BM_BundledRoadmap(benchmark::State& state) {
@@ -95,6 +106,7 @@ void BM_BundledStatic(benchmark::State& state) {
 BENCHMARK(BM_BundledStatic)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_Point7400)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Point10000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Point7400WholeStringStiff)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_BundledRoadmap)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_BundledSoftRoadmap)->Unit(benchmark::kMillisecond);
 

@@ -140,6 +140,11 @@ struct RoadmapSettings {
   double trip_speed = 0.3048;     // m/s pulling out and running in (> 0; the friction is Coulomb, so
                                   // above its regularization velocity only its sign counts)
   RoadmapModel model = RoadmapModel::Stiff;
+  // The stiff model's length of string from the bit, m: the case's string cut to it, or its top
+  // component repeated up to it; the pipe above, to the surface, by the soft string (Johancsik, the
+  // rotating string climbing the wall) from the stiff part's top tension and torque. 0: the case's
+  // own string (what the case models stiff); infinity (`surface` in the case): the whole string.
+  double stiff_length = 0.0;
 };
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.

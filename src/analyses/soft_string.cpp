@@ -157,7 +157,10 @@ SoftStringResult ComputeSoftString(const model::ModelInput& input, const SoftStr
     const double length = cuts[k - 1] - cuts[k];
     const model::Component& component = ComponentAtMiddle(input.string, input.bit_md - 0.5 * (cuts[k - 1] + cuts[k]));
     const double weight = model::BuoyedWeightPerLength(component, input) * length;  // W = w L
-    const double normal_force = ComputeElementNormalForce(below.axial_force, weight, lower, upper);
+    double normal_force = ComputeElementNormalForce(below.axial_force, weight, lower, upper);
+    if (operation.wall_climb && operation.motion == SoftStringMotion::Rotating) {
+      normal_force /= std::hypot(1.0, operation.tangential_friction);  // N √(1 + μ_t²) = L
+    }
     const double mean_inclination = 0.5 * (lower.inclination + upper.inclination);
     SoftStringStation station;
     station.s = input.bit_md - cuts[k];

@@ -68,6 +68,11 @@ struct SoftStringOperation {
   // each element's lower-end tension and mean inclination: first order in its length). 0: the
   // cuts alone, Johancsik's own elements.
   double max_element_length = 0.0;
+  // Rotating: the string climbs the wall until the friction carries part of its lateral load L, so
+  // that the wall's normal and friction forces together balance it, N √(1 + μ_t²) = L, and the
+  // torque is μ_t L r / √(1 + μ_t²) (the stiff string's static has the climb; docs/validation.md V7).
+  // False: Johancsik's N = L.
+  bool wall_climb = false;
 };
 
 // One element end, from the bit upward.

@@ -30,6 +30,7 @@ struct CommandOptions {
   std::string roadmap_step;
   std::string roadmap_friction;
   std::string roadmap_model;  // stiff, soft or both
+  std::string roadmap_stiff_length;  // a length or "surface"
   // `stability` only (a sweep's VALUES); `jobs`, `resume` and `keep_runs` too:
   std::string stability_rpm_values;
   std::string stability_wob_values;

@@ -104,6 +104,9 @@ int main(int argc, char** argv) {
       sub->add_option("--friction", options.roadmap_friction, "Friction factors, a list: 0.2,0.3,0.4");
       sub->add_option("--model", options.roadmap_model,
                       "stiff (the case's string, default), soft (Johancsik's soft string) or both (drawn together)");
+      sub->add_option("--stiff-length", options.roadmap_stiff_length,
+                      "String from the bit modelled stiff, with or without a unit, or 'surface' (default: the case's "
+                      "string; the pipe above by the soft string)");
     }
     if (name == "stability") {
       sub->add_option("--rpm", options.stability_rpm_values, "Top-drive speeds: a list (60,120) or FROM:TO:STEP (40:200:20 rpm)")

@@ -23,6 +23,9 @@ int RunRoadmapCommand(const CommandOptions& options) {
   if (!options.roadmap_from.empty()) values.push_back({"analyses.roadmap.from", options.roadmap_from});
   if (!options.roadmap_step.empty()) values.push_back({"analyses.roadmap.step", options.roadmap_step});
   if (!options.roadmap_model.empty()) values.push_back({"analyses.roadmap.model", options.roadmap_model});
+  if (!options.roadmap_stiff_length.empty()) {
+    values.push_back({"analyses.roadmap.stiff_length", options.roadmap_stiff_length});
+  }
   if (!options.roadmap_friction.empty()) {
     values.push_back({"analyses.roadmap.friction", "[" + options.roadmap_friction + "]"});
   }
@@ -42,6 +45,7 @@ int RunRoadmapCommand(const CommandOptions& options) {
   run.progress = [](int done, int total, int failed, double seconds_left) {
     ShowBatchProgress("roadmap", done, total, failed, seconds_left);
   };
+  if (options.verbose) run.log = [](const std::string& line) { std::cerr << line << '\n'; };
   const std::vector<pipeline::RoadmapPoint> points =
       soft_only ? pipeline::RunSoftRoadmap(c, settings) : pipeline::RunRoadmap(c, settings, run);
   const std::vector<pipeline::RoadmapPoint> soft_points =

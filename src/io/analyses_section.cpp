@@ -1,4 +1,7 @@
 // Reads `analyses:`: which analyses a plain `run` performs, with their settings.
+#include <cmath>
+#include <limits>
+
 #include <fmt/format.h>
 
 #include "io/case_sections.hpp"
@@ -203,10 +206,10 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
   return settings;
 }
 
-// `roadmap: {from, step, friction, rpm, trip_speed}`: the settings of `drillflex roadmap`.
+// `roadmap: {from, step, friction, rpm, trip_speed, model, stiff_length}`: the settings of `drillflex roadmap`.
 analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
-  node.ExpectMap("the roadmap settings {from, step, friction, rpm, trip_speed, model}");
-  node.AllowOnlyKeys({"from", "step", "friction", "rpm", "trip_speed", "model"});
+  node.ExpectMap("the roadmap settings {from, step, friction, rpm, trip_speed, model, stiff_length}");
+  node.AllowOnlyKeys({"from", "step", "friction", "rpm", "trip_speed", "model", "stiff_length"});
   analyses::RoadmapSettings settings;
   settings.from_md = node.OptionalPositive("from", Quantity::Length).value_or(0.0);
   settings.step = node.OptionalPositive("step", Quantity::Length).value_or(0.0);
@@ -227,6 +230,17 @@ analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
     else if (name == "soft") settings.model = analyses::RoadmapModel::Soft;
     else if (name == "both") settings.model = analyses::RoadmapModel::Both;
     else model->Fail(fmt::format("expected 'stiff', 'soft' or 'both', got '{}'", name));
+  }
+  if (const auto stiff = node.OptionalChild("stiff_length")) {
+    if (stiff->IsScalar() && stiff->AsString() == "surface") {
+      settings.stiff_length = std::numeric_limits<double>::infinity();
+    } else {
+      const double length = stiff->AsQuantity(Quantity::Length);
+      if (!(length > 0.0 && std::isfinite(length))) {
+        stiff->Fail("expected a positive length of string from the bit, or 'surface'");
+      }
+      settings.stiff_length = length;
+    }
   }
   return settings;
 }

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/soft_string.hpp"
 #include "core/error.hpp"
 #include "pipeline/roadmap_runs.hpp"
 #include "pipeline/sweep_run.hpp"
@@ -18,6 +19,9 @@ namespace {
 constexpr double kDefaultRoadmapRpm = 60.0 * kPi / 30.0;  // rad/s
 constexpr int kDefaultDepths = 10;
 constexpr std::size_t kMaxPoints = 2000;
+// m: the stiff model's top at least this far above the string's highest point in compression (a stand
+// of three joints).
+constexpr double kStandAboveCompression = 3.0 * model::kDefaultJointSpacing;
 
 InputError RoadmapError(const io::Case& c, const std::string& key, const std::string& message) {
   return InputError({c.file, 0, 0}, "analyses.roadmap." + key, message);
@@ -50,7 +54,10 @@ bool RoadmapPoint::failed() const {
   return false;
 }
 
-io::Case CaseAtDepth(const io::Case& c, double bit_md) {
+namespace {
+
+// The case at `bit_md` with its top component repeated or cut to make the string `length` long.
+io::Case CaseWithStringLength(const io::Case& c, double bit_md, double length) {
   if (!c.well) throw InputError({c.file, 0, 0}, "well", "a roadmap needs a well");
   io::Case at = c;
   at.well->bit_md = bit_md;
@@ -59,7 +66,7 @@ io::Case CaseAtDepth(const io::Case& c, double bit_md) {
   if (components.empty()) throw InputError({c.file, 0, 0}, "string", "the string has no components");
   const double below = LengthBelowTop(at.input.string);
   model::Component& top = components.back();
-  const double room = bit_md - below;
+  const double room = length - below;
   const int count = static_cast<int>(std::floor(room / top.length + 1e-9));
   if (top.count == 1 ? room <= 0.0 : count < 1) {
     throw InputError({c.file, 0, 0}, "string",
@@ -73,6 +80,40 @@ io::Case CaseAtDepth(const io::Case& c, double bit_md) {
     top.count = count;
   }
   return at;
+}
+
+}  // namespace
+
+io::Case CaseAtDepth(const io::Case& c, double bit_md) { return CaseWithStringLength(c, bit_md, bit_md); }
+
+io::Case StiffCaseAtDepth(const io::Case& c, double bit_md, const analyses::RoadmapSettings& settings) {
+  if (!std::isfinite(settings.stiff_length)) return CaseAtDepth(c, bit_md);
+  double length = settings.stiff_length > 0.0 ? settings.stiff_length : model::StringLength(c.input.string);
+  // The hook's support holds the stiff part's top along the hole and lets it move across: a top in
+  // compression there has nothing to keep it straight (the pipe above would), and the string whirls
+  // around the hole in the friction's continuation. So the stiff part reaches a stand above the
+  // highest point in compression of the soft string slacking off at the largest friction factor or
+  // rotating on bottom under the case's WOB (Johancsik: the neutral point as the rig's T&D has it).
+  const model::ModelInput whole = CaseAtDepth(c, bit_md).input;
+  const double largest_friction =
+      settings.friction.empty() ? 0.0 : *std::max_element(settings.friction.begin(), settings.friction.end());
+  analyses::SoftStringOperation slack_off{analyses::SoftStringMotion::SlackOff, largest_friction, largest_friction,
+                                          0.0, 0.0, model::kDefaultJointSpacing};
+  analyses::SoftStringOperation on_bottom{analyses::SoftStringMotion::Rotating, largest_friction, largest_friction,
+                                          whole.operation.weight_on_bit, 0.0, model::kDefaultJointSpacing};
+  double compressed = 0.0;  // m from the bit: the highest station in compression
+  for (const analyses::SoftStringOperation& run : {slack_off, on_bottom}) {
+    for (const analyses::SoftStringStation& station : analyses::ComputeSoftString(whole, run).stations) {
+      if (station.axial_force < 0.0) compressed = std::max(compressed, station.s);
+    }
+  }
+  if (compressed > 0.0) {
+    // The top component's joints fill the string by whole joints below the length asked (one more
+    // asked: the stand stays whole).
+    const double joint = whole.string.components.back().length;
+    length = std::max(length, compressed + kStandAboveCompression + joint);
+  }
+  return CaseWithStringLength(c, bit_md, std::min(length, bit_md));
 }
 
 analyses::RoadmapSettings CompleteRoadmapSettings(const io::Case& c, const analyses::RoadmapSettings& settings) {
@@ -135,9 +176,17 @@ std::vector<RoadmapPoint> RunRoadmap(const io::Case& c, const analyses::RoadmapS
   int done = 0, failed = 0;
   double depth_total = 0.0, depth_done = 0.0;
   for (const double md : depths) depth_total += md * static_cast<double>(frictions);
+  std::mutex log_mutex;
+  std::function<void(const std::string&)> log;
+  if (options.log) {
+    log = [&](const std::string& line) {
+      const std::lock_guard<std::mutex> lock(log_mutex);
+      options.log(line);
+    };
+  }
   RunTasksOnThreads(options.jobs, depths.size(), [&](std::size_t task) {
     const std::size_t d = order[task];
-    const std::vector<RoadmapPoint> at_depth = RunRoadmapDepth(c, settings, depths[d]);
+    const std::vector<RoadmapPoint> at_depth = RunRoadmapDepth(c, settings, depths[d], log);
     std::copy(at_depth.begin(), at_depth.end(), points.begin() + static_cast<std::ptrdiff_t>(d * frictions));
     if (!options.progress) return;
     const std::lock_guard<std::mutex> lock(progress_mutex);

@@ -1,7 +1,8 @@
 // The torque-and-drag roadmap: at each bit depth from a start to the case's bit MD, for each friction
 // factor, the hook loads pulling out (pick-up), running in (slack-off) and rotating off bottom, and
 // the surface torque off and on bottom, each a static run of the stiff-string model (contacts, tool
-// joints, buckling where it occurs) with the string's top component continued to the surface.
+// joints, buckling where it occurs) of the case's string (or as much of it as the settings' stiff_length
+// asks), the pipe above it continued to the surface by the soft string.
 #pragma once
 
 #include <functional>
@@ -37,6 +38,12 @@ struct RoadmapPoint {
 // is left, less than a joint, counts as the pipe above the model, model::StringAboveWeight). Throws
 // InputError (file, "string") when the components below the top one leave no room for it.
 io::Case CaseAtDepth(const io::Case& c, double bit_md);
+// The case at `bit_md` as the stiff model of a roadmap takes it: its string cut, or its top component
+// continued as CaseAtDepth does, to the settings' stiff_length from the bit (0: the case's own string's
+// length; infinity: to the surface), and at least to a stand above the highest point in compression of
+// the soft string slacking off at the largest friction factor or rotating on bottom at the case's WOB
+// (the stiff part's top hangs in tension); at most the bit MD. Throws as CaseAtDepth.
+io::Case StiffCaseAtDepth(const io::Case& c, double bit_md, const analyses::RoadmapSettings& settings);
 
 // `settings` with each default filled in from the case (analyses::RoadmapSettings), checked: InputError
 // naming `analyses.roadmap.KEY` for a start beyond the bit MD or above where the string fits, or more
@@ -50,6 +57,9 @@ struct RoadmapOptions {
   // After each point: the points done, failed, and the seconds left, estimated with a point's time
   // in proportion to its bit depth (the string's length).
   std::function<void(int done, int total, int failed, double seconds_left)> progress;
+  // The solvers' progress, one line at a time, each prefixed with its depth and run (called from the
+  // jobs' threads, one line at a time under a lock).
+  std::function<void(const std::string&)> log;
 };
 
 // The stiff-string roadmap (settings complete: CompleteRoadmapSettings), depth by depth, each

@@ -15,6 +15,8 @@
 // (analyses/static_solve.hpp, strategy 1), falling back to the whole chain where that fails.
 #pragma once
 
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
@@ -25,6 +27,8 @@ namespace drillflex::pipeline {
 
 // The points of one depth, one a friction factor in the settings' order (the runs go from the
 // smallest factor up). A run that fails leaves its point NaN with its message.
-std::vector<RoadmapPoint> RunRoadmapDepth(const io::Case& c, const analyses::RoadmapSettings& settings, double bit_md);
+// `log`, when set, takes the solvers' progress lines, each prefixed with the depth and the run.
+std::vector<RoadmapPoint> RunRoadmapDepth(const io::Case& c, const analyses::RoadmapSettings& settings, double bit_md,
+                                          const std::function<void(const std::string&)>& log = nullptr);
 
 }  // namespace drillflex::pipeline

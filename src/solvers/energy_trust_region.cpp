@@ -59,8 +59,11 @@ class Minimizer {
  private:
   VecX Residual(const VecX& q) const { return problem_.Residual(options_.time, q, zero_, zero_); }
   double MassNorm(const SparseMat& m, const VecX& p) const { return std::sqrt(std::max(p.dot(m * p), 0.0)); }
-  // The subproblem min m(p), ‖p‖_M ≤ radius (unscaled mass norm), by Moré–Sorensen.
-  Step Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radius, EnergyTrustRegionResult& result);
+  // The subproblem min m(p), ‖p‖_M ≤ radius (unscaled mass norm), by Moré–Sorensen. `shift_hint` > 0:
+  // a shift near the answer (the previous active-set round's): tried first, and where H + σM is
+  // positive definite there and p(σ) is not inside the region the secular iteration goes on from it.
+  Step Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radius, EnergyTrustRegionResult& result,
+                  double shift_hint = 0.0);
   // The second-order correction at the trial point q (changed in place): a Newton step on the stiff
   // directions, −(H(q) + σ_c M)⁻¹ R(q) with σ_c = min(√(σ k̄), 10³ σ) (σ the step's shift, k̄ the
   // stiffness scale max H_ii / max M_ii), so that a spring stretched by the step's second-order error
@@ -94,6 +97,7 @@ class Minimizer {
   const VecX zero_;
   double shift_scale_ = 0.0;  // max H_ii / max M_ii
   double last_shift_ = 0.0;   // σ of the previous indefinite subproblem, a start for the next
+  int rounds_ = 0;            // active-set rounds of the last ContactStep (for the log)
   double current_lowest_ = std::numeric_limits<double>::quiet_NaN();  // λ₁ of the last subproblem's H (NaN: positive definite)
   SparseMat metric_;          // M at the start
   // H + σM at the iterate, kept across iterations (and H + σ_c M at a trial point for the correction)
@@ -157,7 +161,7 @@ VecX Minimizer::ToBoundary(const ShiftedCholesky& cholesky, const VecX& g, const
 }
 
 Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radius,
-                           EnergyTrustRegionResult& result) {
+                           EnergyTrustRegionResult& result, double shift_hint) {
   const SparseMat& m = cholesky.metric();
   Step step;
   current_lowest_ = std::numeric_limits<double>::quiet_NaN();
@@ -167,7 +171,22 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
   bool indefinite = false;
   VecX z;
   double sigma = 0.0;
-  if (cholesky.Factorize(0.0)) {
+  // A boundary step's shift changes little from one active-set round to the next: from the previous
+  // round's, one factorization often ends the search (else the secular iteration starts there, σ only
+  // growing). Where p(σ_hint) falls inside the region the answer is a smaller shift: the full search.
+  bool from_hint = false;
+  if (shift_hint > 0.0 && cholesky.Factorize(shift_hint)) {
+    step.p = -cholesky.Solve(g);
+    const double norm = MassNorm(m, step.p);
+    if (norm >= radius * (1.0 - kBoundaryTolerance)) {
+      sigma = shift_hint;
+      lower = norm > radius ? shift_hint : lower;
+      from_hint = true;
+    }
+  }
+  if (from_hint) {
+    // the secular iteration below, from σ_hint
+  } else if (cholesky.Factorize(0.0)) {
     step.p = -cholesky.Solve(g);
     if (MassNorm(m, step.p) <= radius) {
       step.interior = true;
@@ -353,11 +372,13 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
   active = touching;
   Step best;
   double best_model = kInfinity, best_t = 1.0;
+  double shift_hint = 0.0;  // the previous round's shift
   for (int round = 0; round < kActiveSetRounds; ++round) {
+    rounds_ = round + 1;
     Step step;
     if (active == touching) {
       plain.RestoreStiffness();
-      step = Subproblem(plain, g, radius, result);
+      step = Subproblem(plain, g, radius, result, shift_hint);
     } else {
       // H + Σ_A k a aᵀ on the same pattern: the contacts whose state differs from q's switched.
       plain.RestoreStiffness();
@@ -367,9 +388,10 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
         if (active[c]) add(term, term.stiffness * term.value, gradient);
         if (active[c] != touching[c]) plain.AddOuterProduct(term.indices, term.gradient, (active[c] ? 1.0 : -1.0) * term.stiffness);
       }
-      step = Subproblem(plain, gradient, radius, result);
+      step = Subproblem(plain, gradient, radius, result, shift_hint);
     }
     if (!step.failure.empty()) return round == 0 ? step : best;
+    shift_hint = step.interior || step.negative_curvature ? 0.0 : step.shift;
     std::vector<char> predicted(count);
     for (std::size_t c = 0; c < count; ++c) predicted[c] = terms[c].value + along(terms[c], step.p) > 0.0;
     double t = 1.0;
@@ -431,6 +453,7 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     }
     ShiftedCholesky& cholesky = *tangent_;
     const int counted = cholesky.factorizations();  // before this iteration
+    rounds_ = 0;
     const bool small = norm <= result.tolerance || full_newton_small;
     if (small) {
       const bool positive = cholesky.Factorize(0.0);
@@ -468,6 +491,7 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
       return result;
     }
     const double step_length = std::sqrt(std::max(step.p.dot(m * step.p), 0.0) / mass_scale);
+    const int step_factorizations = cholesky.factorizations() - counted;
     VecX trial = problem_.Increment(result.q, step.p);
     VecX trial_residual = Residual(trial);
     double released = trial_residual.allFinite() ? -problem_.EnergyChange(result.q, trial) : -kInfinity;
@@ -513,11 +537,11 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
       radius = std::min(2.0 * radius, options_.max_radius);
     }
     Log(fmt::format("  trust region {:3d}: |R| {:.4e} -> {:.4e} N, released {:.4e} J of {:.4e} ({} rho {:.3f}), "
-                    "step {:.3e} m {}{}{}, radius {:.3e} m{}",
+                    "step {:.3e} m {}{}{}, radius {:.3e} m ({} active-set rounds, {} factorizations){}",
                     result.iterations, norm, trial_norm, released, step.predicted, judged, ratio, step_length,
                     step.interior ? "Newton" : step.negative_curvature ? "negative curvature" : "boundary",
                     step.shift > 0.0 ? fmt::format(" sigma {:.3e}", step.shift) : std::string(),
-                    corrected ? " +SOC" : "", radius, accept ? "" : "; refused"));
+                    corrected ? " +SOC" : "", radius, rounds_, step_factorizations, accept ? "" : "; refused"));
     full_newton_small = false;
     if (accept) {
       result.q = std::move(trial);

@@ -108,19 +108,31 @@ TEST(SoftString, StringAboveTheSurfaceIsLeftOut) {
   EXPECT_EQ(result.stations.back().s, 100.0);
 }
 
-// 2. Straight inclined hole: N = W sin I on every element, so F = −WOB + ΣW cos I ± μ ΣW sin I and
-// M = TOB + μ_t Σ W_k r_k sin I, exactly.
+// 2. Straight inclined hole at 40°: 20 collars and 50 joints of pipe, the bit at 3000 m (the pipe
+// continued to the surface); each part's buoyed weight along the hole, N.
+struct StraightInclinedWell {
+  double inclination = 40.0 * kDegree;
+  model::ModelInput input = InWell({Collars(20), Pipe(50)},
+                                   {{0.0, 40.0 * kDegree, 130.0 * kDegree}, {4000.0, 40.0 * kDegree, 130.0 * kDegree}},
+                                   3000.0);
+  double collar_weight = CollarWeight() * 20 * 30.0 * kFt;
+  double pipe_weight = PipeWeight() * (3000.0 - 20 * 30.0 * kFt);
+  double weight = collar_weight + pipe_weight;
+  // Σ μ_t W_k r_k sin I: the friction torque with N = W sin I (collars r 3.25 in, joints 6.625/2 in).
+  double FrictionTorque(double mu_t) const {
+    return mu_t * std::sin(inclination) * (collar_weight * 3.25 * kIn + pipe_weight * 6.625 / 2.0 * kIn);
+  }
+};
+
+// N = W sin I on every element, so F = −WOB + ΣW cos I ± μ ΣW sin I and M = TOB + μ_t Σ W_k r_k sin I,
+// exactly.
 TEST(SoftString, StraightInclinedHoleMatchesTheClosedForm) {
-  const double inclination = 40.0 * kDegree, azimuth = 130.0 * kDegree, bit_md = 3000.0;
-  const model::ModelInput input =
-      InWell({Collars(20), Pipe(50)}, {{0.0, inclination, azimuth}, {4000.0, inclination, azimuth}}, bit_md);
-  const double collar_weight = CollarWeight() * 20 * 30.0 * kFt;
-  const double pipe_weight = PipeWeight() * (bit_md - 20 * 30.0 * kFt);
-  const double weight = collar_weight + pipe_weight;
+  const StraightInclinedWell well;
+  const model::ModelInput& input = well.input;
+  const double inclination = well.inclination, weight = well.weight;
   const double wob = 50000.0, tob = 5000.0, mu_a = 0.3, mu_t = 0.2;
   const double along = weight * std::cos(inclination), across = weight * std::sin(inclination);
-  const double torque = tob + mu_t * std::sin(inclination) *
-                                  (collar_weight * 3.25 * kIn + pipe_weight * 6.625 / 2.0 * kIn);
+  const double torque = tob + well.FrictionTorque(mu_t);
   const auto run = [&](SoftStringMotion motion) {
     return ComputeSoftString(input, Operation(motion, mu_a, mu_t, wob, tob));
   };
@@ -137,6 +149,25 @@ TEST(SoftString, StraightInclinedHoleMatchesTheClosedForm) {
               Relative(pick_up.hook_load, -wob + along + mu_a * across),
               Relative(slack_off.hook_load, -wob + along - mu_a * across), Relative(rotating.hook_load, -wob + along),
               Relative(rotating.surface_torque, torque));
+}
+
+// 2b. The rotating string's climb (wall_climb): the wall's normal force and its friction together carry
+// the lateral load W sin I, N √(1 + μ_t²) = W sin I, so the friction torque is Johancsik's divided by
+// √(1 + μ_t²); the axial force and the sliding runs do not change.
+TEST(SoftString, TheClimbDividesTheRotatingTorqueBySqrtOnePlusMuSquared) {
+  const StraightInclinedWell well;
+  const double wob = 50000.0, tob = 5000.0, mu_a = 0.3, mu_t = 0.2;
+  SoftStringOperation rotating = Operation(SoftStringMotion::Rotating, mu_a, mu_t, wob, tob);
+  rotating.wall_climb = true;
+  const SoftStringResult climbing = ComputeSoftString(well.input, rotating);
+  const double torque = tob + well.FrictionTorque(mu_t) / std::sqrt(1.0 + mu_t * mu_t);
+  EXPECT_NEAR(climbing.surface_torque, torque, 1e-12 * torque);
+  EXPECT_NEAR(climbing.hook_load, -wob + well.weight * std::cos(well.inclination), 1e-12 * well.weight);
+  SoftStringOperation pick_up = Operation(SoftStringMotion::PickUp, mu_a, mu_t, wob, tob);
+  pick_up.wall_climb = true;
+  EXPECT_NEAR(ComputeSoftString(well.input, pick_up).hook_load,
+              -wob + well.weight * (std::cos(well.inclination) + mu_a * std::sin(well.inclination)),
+              1e-12 * well.weight);
 }
 
 // 3. A 3-D well: vertical to a kick-off at 1500 ft (surveyed with azimuth 0), 3°/100 ft build turning

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <fmt/format.h>
@@ -51,6 +52,26 @@ std::vector<RoadmapPoint> Roadmap(const io::Case& c, const analyses::RoadmapSett
 
 double BuoyedWeight(double bit_md) {
   return TubeWeight(0.1715, 0.0714) * 27.0 + TubeWeight(0.127, 0.1086) * (bit_md - 27.0);
+}
+
+// The stiff model's string (StiffCaseAtDepth): the case's own (3 collars and 5 joints, 72 m) where
+// no part of it is in compression; else up to a stand (27.43 m) and a joint above the soft string's
+// highest station in compression. At 297 m in the 30° hole under the 40 kN WOB: the collars (1245.6
+// N/m buoyed, 27 m) leave −40 000 + 1245.6 × 27 × cos 30° = −10 875 N at their top, the pipe (222.1
+// N/m) adds 192.4 N/m along the hole, so the soft string's stations every 9 m are in compression up
+// to 81 m; 81 + 27.43 + 9 = 117.4 m takes ten joints (117 m).
+TEST(Roadmap, TheStiffModelHangsInTensionAtItsTop) {
+  const io::Case inclined = StraightHole(30.0);
+  analyses::RoadmapSettings settings = CompleteRoadmapSettings(inclined, {297.0, 45.0, {0.2}});
+  EXPECT_EQ(StiffCaseAtDepth(inclined, 297.0, settings).input.string.components.back().count, 10);
+  io::Case no_wob = inclined;
+  no_wob.input.operation.weight_on_bit = 0.0;
+  EXPECT_EQ(StiffCaseAtDepth(no_wob, 297.0, settings).input.string.components.back().count, 5);
+  settings.stiff_length = 200.0;  // 27 + 19 × 9 = 198 m
+  EXPECT_EQ(StiffCaseAtDepth(no_wob, 297.0, settings).input.string.components.back().count, 19);
+  settings.stiff_length = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(StiffCaseAtDepth(no_wob, 297.0, settings).input.string.components.back().count, 30);
+  EXPECT_EQ(StiffCaseAtDepth(no_wob, 60.0, settings).input.string.components.back().count, 3);  // 27 + 27 ≤ 60
 }
 
 TEST(Roadmap, TheTopComponentReachesTheSurface) {
@@ -148,12 +169,22 @@ operation: {rpm: 60}
   const analyses::RoadmapSettings settings = CompleteRoadmapSettings(c, {1100.0, 100.0, {0.3}});
   const RoadmapPoint stiff = RunRoadmap(c, settings).front();
   const RoadmapPoint soft = RunSoftRoadmap(c, settings).front();
+  // The lower 300 m stiff, the pipe above by the soft string from the stiff part's top tension and
+  // torque: the same hook loads, and the torque with the climb the stiff string has.
+  analyses::RoadmapSettings shorter = settings;
+  shorter.stiff_length = 300.0;
+  const RoadmapPoint part = RunRoadmap(c, shorter).front();
+  ASSERT_TRUE(part.message.empty()) << part.message;
+  EXPECT_NEAR(part.pick_up, soft.pick_up, 5e-4 * soft.pick_up);
+  EXPECT_NEAR(part.slack_off, soft.slack_off, 5e-4 * soft.slack_off);
+  EXPECT_NEAR(part.rotating, soft.rotating, 5e-4 * soft.rotating);
   ASSERT_TRUE(stiff.message.empty()) << stiff.message;
   EXPECT_NEAR(stiff.pick_up, soft.pick_up, 5e-4 * soft.pick_up);
   EXPECT_NEAR(stiff.slack_off, soft.slack_off, 5e-4 * soft.slack_off);
   EXPECT_NEAR(stiff.rotating, soft.rotating, 5e-4 * soft.rotating);
   const double climbing = soft.off_bottom_torque / std::sqrt(1.0 + 0.3 * 0.3);
   EXPECT_NEAR(stiff.off_bottom_torque, climbing, 0.01 * climbing);
+  EXPECT_NEAR(part.off_bottom_torque, climbing, 0.01 * climbing);
   std::printf("gentle 3-D well, mu 0.3: stiff / soft pick-up %+.4f %%, slack-off %+.4f %%, rotating %+.4f %%, "
               "torque against soft/sqrt(1+mu^2) %+.3f %%\n",
               100.0 * (stiff.pick_up / soft.pick_up - 1.0), 100.0 * (stiff.slack_off / soft.slack_off - 1.0),
