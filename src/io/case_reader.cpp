@@ -81,6 +81,7 @@ Case ParseCaseWithValues(const std::string& text, const std::string& file, const
   }
   const auto context = std::make_shared<ReadContext>(ReadContext{file, units::System::SI});
   const YamlView view(root, "", context, {file, 1, 1});
+  view.RefuseRepeatedKeys();
   SetCaseValues(view, values);
   Case c = ReadRoot(view, file, directory);
   c.text = text;

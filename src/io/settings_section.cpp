@@ -1,4 +1,6 @@
 // Reads `fluid:`, `model:`, `supports:`, `loads:` and `operation:`.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "io/case_sections.hpp"
@@ -146,6 +148,17 @@ std::vector<model::Load> ReadLoadsSection(const YamlView& node) {
   return loads;
 }
 
+namespace {
+
+// The operating point's plausible bounds (SI): 1000 rpm, 1000 klbf, 200 000 ft·lbf, 5000 klbf, 5000 gpm.
+constexpr double kMaxRotarySpeed = 1000.0 * 2.0 * kPi / 60.0;       // rad/s
+constexpr double kMaxWeightOnBit = 1000.0e3 * 4.4482216152605;       // N
+constexpr double kMaxTorqueOnBit = 200.0e3 * 1.3558179483314004;     // N·m
+constexpr double kMaxHookLoad = 5000.0e3 * 4.4482216152605;          // N
+constexpr double kMaxFlowRate = 5000.0 * 3.785411784e-3 / 60.0;      // m³/s
+
+}  // namespace
+
 model::Operation ReadOperationSection(const YamlView& node) {
   node.ExpectMap("the operating point {wob, rpm, torque_on_bit}");
   node.AllowOnlyKeys({"wob", "rpm", "torque_on_bit", "flow_rate", "hook_load"});
@@ -165,6 +178,19 @@ model::Operation ReadOperationSection(const YamlView& node) {
     if (*operation.hook_load < 0.0) node.Child("hook_load").Fail("the hook load must not be negative (it is the tension the hook holds)");
   }
   if (operation.flow_rate && *operation.flow_rate < 0.0) node.Child("flow_rate").Fail("the flow rate must not be negative");
+  if (operation.rotary_speed < 0.0) {
+    node.Child("rpm").Fail("the rotary speed must not be negative (the string turns clockwise looking down-hole)");
+  }
+  // Plausible bounds, far beyond any rig's (as E and density have): a value past them is a unit or a
+  // typing slip, refused before anything is solved rather than after a solve that cannot converge.
+  auto at_most = [&](const char* key, double value, double bound, const char* what) {
+    if (std::abs(value) > bound) node.Child(key).Fail(fmt::format("expected at most {} ({}), got {:.4g} in SI", what, bound, value));
+  };
+  at_most("rpm", operation.rotary_speed, kMaxRotarySpeed, "1000 rpm, rad/s");
+  at_most("wob", operation.weight_on_bit, kMaxWeightOnBit, "1000 klbf, N");
+  at_most("torque_on_bit", operation.torque_on_bit, kMaxTorqueOnBit, "200 000 ft*lbf, N*m");
+  if (operation.hook_load) at_most("hook_load", *operation.hook_load, kMaxHookLoad, "5000 klbf, N");
+  if (operation.flow_rate) at_most("flow_rate", *operation.flow_rate, kMaxFlowRate, "5000 gpm, m3/s");
   return operation;
 }
 

@@ -50,6 +50,10 @@ class YamlView {
   void AllowOnlyKeys(std::initializer_list<std::string_view> allowed) const;
   void AllowOnlyKeys(const std::vector<std::string>& allowed) const;
 
+  // Fails on a key given twice in one map, anywhere below this node (YAML keeps both and every
+  // reader takes the first: a second `operation:` block was silently ignored), naming both lines.
+  void RefuseRepeatedKeys() const;
+
   bool Has(std::string_view key) const;
   YamlView Child(std::string_view key) const;  // required key
   std::optional<YamlView> OptionalChild(std::string_view key) const;

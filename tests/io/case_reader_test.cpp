@@ -383,6 +383,15 @@ INSTANTIATE_TEST_SUITE_P(
     CaseReader, RejectedInput,
     ::testing::Values(
         RejectedCase{"unknown key", std::string(kGoodString) + "modle: {}\n", 3, "modle", "did you mean 'model'"},
+        // A key twice in one map: YAML keeps both and the readers took the first, silently.
+        RejectedCase{"operation given twice", std::string(kGoodString) + "operation: {wob: 10}\noperation: {wob: 20}\n", 4,
+                     "operation", "'operation' is given twice in one map, at line 3 and at line 4"},
+        RejectedCase{"a negative rpm", std::string(kGoodString) + "operation:\n  rpm: -1e9\n", 4, "operation.rpm",
+                     "must not be negative"},
+        RejectedCase{"a WOB of 1e12 lbf", "units: field\n" + std::string(kGoodString) + "operation:\n  wob: 1e12 lbf\n", 5,
+                     "operation.wob", "expected at most 1000 klbf"},
+        RejectedCase{"a nested key given twice", "units: field\nstring:\n  - {type: collar, od: 8, od: 7, length: 30}\n",
+                     3, "string[0].od", "'od' is given twice in one map, on line 3, at columns 20 and 27"},
         // A modulus or density in the other system's unit: 30e6 read as Pa, 207e9 read as psi, 65.5 (ppg) as kg/m3.
         RejectedCase{"modulus in psi read as Pa", "materials:\n  steel: {E: 30e6, nu: 0.3, density: 7850}\n", 2,
                      "materials.steel.E", "between 0.1 and 1500 GPa (steel's is 207 GPa, 30e6 psi), got 3e+07 Pa"},
