@@ -94,6 +94,10 @@ io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSe
       {"weight_on_bit", out(c.input.operation.weight_on_bit, Quantity::WeightOnBit)},
       {"torque_on_bit", out(c.input.operation.torque_on_bit, Quantity::Moment)},
       {"model", RoadmapModelName(settings.model)},
+      // The stiff model's string from the bit: "case" (the case's own), "surface", or a length.
+      {"stiff_length", settings.stiff_length == 0.0        ? nlohmann::json("case")
+                       : !std::isfinite(settings.stiff_length) ? nlohmann::json("surface")
+                                                                 : nlohmann::json(out(settings.stiff_length, Quantity::Length))},
       {"units", units_json},
       {"points", std::move(main.rows)},
   };
