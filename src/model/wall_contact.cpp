@@ -124,19 +124,21 @@ ContactVelocity ContactPointVelocity(const HoleGeometry& g, const GeometryDeriva
                                      const WallContactParameters& p) {
   const double radius = p.contact_radius;
   ContactVelocity v;
-  if (p.prescribed_sliding) {
-    // v_c = −V t + Ω R_c (t × n): the string moves up-hole at V and turns at Ω about t.
-    const double axial = p.prescribed_sliding->axial_speed, spin = p.prescribed_sliding->rotary_speed;
-    v.value = -axial * g.tangent + spin * radius * g.tangent.cross(g.normal);
-    if (d) v.position = -axial * d->tangent + spin * radius * d->around;
-    return v;
-  }
-  // v_c = ṙ_k + ω_k × (R_c n).
+  // v_c = ṙ_k + ω_k × (R_c n): the node's own motion.
   v.value = motion.velocity + radius * motion.angular_velocity.cross(g.normal);
   if (d) {
     v.position = radius * Skew(motion.angular_velocity) * d->normal;
     v.velocity = Mat3::Identity();
     v.angular_velocity = -radius * Skew(g.normal);
+  }
+  if (p.prescribed_sliding) {
+    // The steady sliding prescribed on top of it, −V t + Ω R_c (t × n): the string moves up-hole at V
+    // and turns at Ω about t. A static state has ṙ = ω = 0 and slides at the steady speeds alone; the
+    // linearized analyses take the friction's damping about that sliding from the node's own motion
+    // (docs/method.md "The friction of a rotating string, linearized").
+    const double axial = p.prescribed_sliding->axial_speed, spin = p.prescribed_sliding->rotary_speed;
+    v.value += -axial * g.tangent + spin * radius * g.tangent.cross(g.normal);
+    if (d) v.position += -axial * d->tangent + spin * radius * d->around;
   }
   return v;
 }

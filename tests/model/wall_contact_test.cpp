@@ -504,6 +504,39 @@ TEST(WallContactTest, PrescribedSlidingSetsTheFrictionDirection) {
 }
 
 // The high-side angle from the hole's high side toward the right, looking down-hole.
+// The friction of a string turning steadily at Ω, linearized (docs/method.md "The friction of a rotating
+// string, linearized"): the contact slides around the hole at Ω R_c, so a small axial velocity v_a tilts
+// the Coulomb force, F_a = −μ_a N v_a / √(v_a² + (Ω R_c)²) ≈ −(μ_a N / Ω R_c) v_a: a viscous damping
+// along the hole; across it the force's size does not change to first order (d(v_θ/|v|)/dv_θ = 0 at
+// v = Ω R_c e_θ) and a radial velocity does not slide. The prescribed sliding (the static's) and the
+// same node turning at Ω in its state velocities (the transient's path) give the same force and the
+// same ∂F/∂v.
+TEST(WallContactTest, RotatingFrictionLinearizedIsAnAxialDampingMuNOverOmegaR) {
+  const auto wellbore = StraightWell(90.0, 0.0, 0.2);
+  WallContactParameters p = HorizontalParameters();
+  const double normal = 1e6 * (0.05 + 0.0635 - 0.1), spin = 10.0;  // N, rad/s
+  const OneBody free_node = MakeOneBody(wellbore, p, Vec3(0.0, 0.0, 0.05));
+  p.prescribed_sliding = PrescribedSliding{0.0, spin};
+  const OneBody prescribed = MakeOneBody(wellbore, p, Vec3(0.0, 0.0, 0.05));
+  const VecX rest = VecX::Zero(prescribed.m.system->num_velocities());
+  // Clockwise looking down-hole: ω = +Ω t, the body's x axis pointing up-hole (t = −x_body).
+  const VecX turning = free_node.Velocity(Vec3::Zero(), Vec3(-spin, 0.0, 0.0));
+  ElementContribution steady, moving;
+  prescribed.contact().Evaluate(StateOf(prescribed.m, prescribed.contact(), prescribed.m.system->Poses(prescribed.q), rest),
+                                true, steady);
+  free_node.contact().Evaluate(StateOf(free_node.m, free_node.contact(), free_node.m.system->Poses(free_node.q), turning),
+                               true, moving);
+  EXPECT_NEAR((steady.force - moving.force).norm(), 0.0, 1e-9 * normal);
+  EXPECT_NEAR((steady.damping - moving.damping).norm(), 0.0, 1e-9 * steady.damping.norm());
+  // The residual carries −F: D = −∂F/∂v. Hole along +x (north), contact on the low side (+z).
+  const double axial_damping = 0.3 * normal / (spin * 0.0635);  // μ_a N / (Ω R_c), N·s/m
+  EXPECT_NEAR(steady.damping(0, 0), axial_damping, 1e-9 * axial_damping);
+  EXPECT_NEAR(steady.damping(1, 1), 0.0, 1e-9 * axial_damping);  // around the hole
+  EXPECT_NEAR(steady.damping(2, 2), 0.0, 1e-9 * axial_damping);  // radial: no damping in p
+  std::printf("[ measure  ] rotating friction: axial damping %.6g N*s/m (mu N / Omega R %.6g)\n", steady.damping(0, 0),
+              axial_damping);
+}
+
 TEST(WallContactTest, HighSideAngleConvention) {
   const auto wellbore = StraightWell(60.0, 45.0, 0.3);
   const well::PathFrame frame = wellbore->trajectory.Frame(48.5);

@@ -1,6 +1,10 @@
-// The reduced vibration sweep (the default) against the direct one on the bundled example
-// (examples/rotary-bha-build/case.yaml, about its static equilibrium in the hole, the viscous mud's
-// frequency-dependent annulus): the sweep of issue 5's bench, 20–250 rpm by 1 rpm with an
+// The reduced vibration sweep (the default) against the direct one on the bundled example with five of
+// its thirty joints of drill pipe (examples/rotary-bha-build/case.yaml, about its static equilibrium in
+// the hole, the viscous mud's frequency-dependent annulus). With all thirty, the pipe lying on the low
+// side of the 30° hole has a dozen pendulum modes (swinging around the hole against gravity) packed
+// between 1.15 and 1.25 Hz, and the basis misses the direct solve at a check frequency: that sweep
+// runs directly (until issue 33 the rotating string's friction, symmetrized into the stiffness, split
+// that cluster). The sweep of issue 5's bench, 20–250 rpm by 1 rpm with an
 // imbalance at 1×, the bit at 3× and a motor at a fixed 5 × 150 rpm. The direct sweep (a sparse LU of
 // the full system at every frequency) is the reference; both run on the same build, so the
 // comparison does not depend on where the static solve puts the string.
@@ -35,7 +39,8 @@ double LargestRelativeError(const std::vector<double>& value, const std::vector<
 }
 
 TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
-  const Case c = ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml"));
+  const Case c = WithValues(ReadCase(std::string(DRILLFLEX_SOURCE_DIR "/examples/rotary-bha-build/case.yaml")),
+                            {{"string[7].count", "5"}});
   pipeline::CaseModel case_model = pipeline::BuildCaseModel(c);
   const VecX q = pipeline::RunCaseStatic(c, case_model).q;
   auto sweep = [&](const analyses::VibrationSettings& settings) {
@@ -65,18 +70,19 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
         << direct.critical_rotary_speeds[k] / kRpm << " rpm";
   }
   EXPECT_LT(reduced.reduced_check_error, analyses::kReducedCheckTolerance);
-  // The sweep crosses about a hundred undamped modes (Sylvester's count).
-  EXPECT_GT(reduced.band_modes, 50);
-  EXPECT_LT(reduced.band_modes, 200);
-  // A basis that cannot hold as many vectors as there are modes in the band (the static block and
-  // one shift: at most 6 × (1 + 7) + 4 = 52 vectors) is not even built: the sweep runs directly.
+  // The sweep crosses some thirty undamped modes (Sylvester's count; 33 measured).
+  EXPECT_GT(reduced.band_modes, 20);
+  EXPECT_LT(reduced.band_modes, 60);
+  // A basis far too small (the static block and one shift: at most 6 × (1 + 7) + 4 = 52 vectors) is
+  // caught, either before it is built (more modes in the band than it can hold) or by its check against
+  // the direct solve: the sweep runs directly.
   analyses::VibrationSettings poor = bench::ThreeExcitationSweep(analyses::VibrationMethod::Reduced);
   poor.basis_shifts = poor.basis_depth = 1;
   const auto skipped = sweep(poor);
   EXPECT_EQ(skipped.method, analyses::VibrationMethod::Direct);
-  EXPECT_EQ(skipped.basis_size, 0);
-  EXPECT_EQ(skipped.band_modes, reduced.band_modes);
-  EXPECT_NE(skipped.method_note.find("undamped modes lie in the sweep's band"), std::string::npos) << skipped.method_note;
+  EXPECT_TRUE(skipped.method_note.find("undamped modes lie in the sweep's band") != std::string::npos ||
+              skipped.method_note.find("the reduced basis missed the direct solve") != std::string::npos)
+      << skipped.method_note;
   EXPECT_LT(LargestRelativeError(skipped.max_lateral_displacement, direct.max_lateral_displacement), 1e-9);
   // One that could (ten shifts of depth one: up to 6 × (1 + 16) + 4 = 106 vectors) but misses the
   // check at the sample frequencies: the sweep runs directly too.

@@ -70,7 +70,8 @@ def test_vibration_typed_result(example: drillflex.Case) -> None:
     assert vb.max_lateral_displacement.shape == vb.rotary_speed.shape
     assert vb.safe_windows.ndim == 2 and vb.safe_windows.shape[1] == 2
     # The critical speeds (rad/s): the peaks, ascending, and the same speeds as the records (most severe first).
-    assert len(vb.critical_rotary_speed) == 3 and np.all(np.diff(vb.critical_rotary_speed) > 0)
+    assert len(vb.critical_rotary_speed) >= 1 and np.all(np.diff(vb.critical_rotary_speed) > 0)
+    assert np.all((vb.critical_rotary_speed >= vb.rotary_speed[0]) & (vb.critical_rotary_speed <= vb.rotary_speed[-1]))
     assert sorted(r.rotary_speed for r in vb.critical_speeds) == list(vb.critical_rotary_speed)
     assert len(vb.excitation_displacement) == 2
     assert "vibration" in str(vb)
