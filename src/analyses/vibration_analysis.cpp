@@ -574,6 +574,32 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
 
 }  // namespace
 
+std::vector<Excitation> DefaultExcitations(const model::StringConfig& string) {
+  // Where the imbalance goes: the first MWD or LWD's middle, else the BHA's.
+  double s = 0.0, bha_end = -1.0, imbalance_at = -1.0;
+  for (const model::Component& component : string.components) {
+    const double span = component.length * component.count;
+    const bool pipe = component.type == model::ComponentType::Pipe || component.type == model::ComponentType::Hwdp;
+    if (pipe && bha_end < 0.0) bha_end = s;
+    const bool sensor = component.type == model::ComponentType::Mwd || component.type == model::ComponentType::Lwd;
+    if (sensor && imbalance_at < 0.0 && bha_end < 0.0) imbalance_at = s + 0.5 * span;
+    s += span;
+  }
+  if (bha_end <= 0.0) bha_end = s;
+  if (imbalance_at < 0.0) imbalance_at = 0.5 * bha_end;
+  Excitation imbalance;
+  imbalance.type = ExcitationType::Imbalance;
+  imbalance.at = imbalance_at;
+  imbalance.imbalance = kDefaultImbalance;
+  Excitation bit;
+  bit.type = ExcitationType::Bit;
+  bit.harmonic = 3;
+  bit.lateral = kDefaultBitLateral;
+  bit.axial = kDefaultBitAxial;
+  bit.torsional = kDefaultBitTorsional;
+  return {imbalance, bit};
+}
+
 VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelInput& input,
                              const model::LateralFluid& fluid, const VecX& q, const VibrationSettings& settings) {
   const model::SystemModel& model = built.system;

@@ -112,6 +112,16 @@ std::string ExcitationName(const Excitation& excitation);
 // neither is known, or when there is no motor to take the lobes or place from.
 double MotorSpeed(const Excitation& excitation, const model::ModelInput& input, int index);
 
+// The excitations of a vibration analysis whose case gives none (docs/case-format.md "Vibration"): a mass
+// imbalance of kDefaultImbalance at 1× at the middle of the string's first MWD or LWD, else of its BHA
+// (the components below its first drill pipe or HWDP; the whole string without one), and the bit's
+// 3× (a tricone's three-lobed bottom, a PDC's blade pattern) with kDefaultBit* amplitudes.
+inline constexpr double kDefaultImbalance = 0.02;            // kg·m (1.74 lb·in)
+inline constexpr double kDefaultBitLateral = 2224.1108;       // N (500 lbf)
+inline constexpr double kDefaultBitAxial = 4448.2216;         // N (1000 lbf)
+inline constexpr double kDefaultBitTorsional = 271.16359;     // N·m (200 ft·lbf)
+std::vector<Excitation> DefaultExcitations(const model::StringConfig& string);
+
 // Runs the sweep about q. `input` is what `built` was built from (the string, the motor's data,
 // the operation). Throws SolverError when a frequency hits an undamped resonance, InputError for
 // an excitation the string cannot take (see MotorSpeed).

@@ -124,6 +124,12 @@ analyses::VibrationResult RunCaseVibration(const io::Case& c, const CaseModel& c
   }
 }
 
+analyses::VibrationSettings CaseVibrationSettings(const io::Case& c) {
+  analyses::VibrationSettings settings = c.analyses.vibration.value_or(analyses::VibrationSettings{});
+  if (settings.excitations.empty()) settings.excitations = analyses::DefaultExcitations(c.input.string);
+  return settings;
+}
+
 namespace {
 
 void Finished(const RunObserver& observer, Analysis analysis, const CaseResults& results) {
@@ -141,8 +147,18 @@ void RunLinearAnalyses(const io::Case& c, const RunOptions& options, const VecX&
     Finished(options.observer, Analysis::Modes, results);
   }
   if (results.requested.vibration) {
-    results.vibration = RunCaseVibration(c, results.model, equilibrium,
-                                         c.analyses.vibration.value_or(analyses::VibrationSettings{}));
+    const analyses::VibrationSettings settings = CaseVibrationSettings(c);
+    const bool defaults = !c.analyses.vibration || c.analyses.vibration->excitations.empty();
+    if (defaults && options.observer.note) {
+      const analyses::Excitation& imbalance = settings.excitations.front();
+      options.observer.note(fmt::format(
+          "vibration: the case gives no excitations: an imbalance of {} at {} from the bit at 1× and the bit at 3× "
+          "({} lateral, {} axial, {} torsional; docs/case-format.md)",
+          Show(c, imbalance.imbalance, Quantity::Imbalance), Show(c, imbalance.at, Quantity::Length),
+          Show(c, analyses::kDefaultBitLateral, Quantity::Force), Show(c, analyses::kDefaultBitAxial, Quantity::Force),
+          Show(c, analyses::kDefaultBitTorsional, Quantity::Moment)));
+    }
+    results.vibration = RunCaseVibration(c, results.model, equilibrium, settings);
     Finished(options.observer, Analysis::Vibration, results);
   }
 }

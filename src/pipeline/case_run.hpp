@@ -89,6 +89,8 @@ analyses::StaticSettings CaseStaticSettings(const io::Case& c, const RunObserver
 analyses::StaticResult RunCaseStatic(const io::Case& c, CaseModel& case_model, const RunObserver& observer = {});
 // The modes about `equilibrium` (gyroscopic when the case's modes ask for it), with the fluid.
 analyses::ModesResult RunCaseModes(const io::Case& c, const CaseModel& case_model, const VecX& equilibrium);
+// The case's vibration settings; without excitations, analyses::DefaultExcitations of its string.
+analyses::VibrationSettings CaseVibrationSettings(const io::Case& c);
 // The forced response about `equilibrium` under `settings` (the case's own by default in RunCase); an
 // excitation the string cannot take is an InputError naming the case file.
 analyses::VibrationResult RunCaseVibration(const io::Case& c, const CaseModel& case_model, const VecX& equilibrium,

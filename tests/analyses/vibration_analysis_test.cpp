@@ -136,6 +136,39 @@ TEST(VibrationAnalysis, AnAxialBitForceMovesAStraightRodOnlyAlongItsAxis) {
   }
 }
 
+// A case without excitations gets an imbalance at 1× at the middle of its first MWD or LWD, else of its
+// BHA (below the first drill pipe or HWDP; the whole string without one), and the bit at 3×.
+TEST(VibrationAnalysis, DefaultExcitationsSitAtTheMwdOrTheMiddleOfTheBha) {
+  auto component = [](model::ComponentType type, double length, int count = 1) {
+    model::Component c;
+    c.type = type;
+    c.length = length;
+    c.count = count;
+    return c;
+  };
+  using model::ComponentType;
+  model::StringConfig string;
+  string.components = {component(ComponentType::Bit, 0.3), component(ComponentType::Collar, 9.0, 2),
+                       component(ComponentType::Mwd, 10.0), component(ComponentType::Pipe, 9.0, 30)};
+  std::vector<Excitation> defaults = DefaultExcitations(string);
+  ASSERT_EQ(defaults.size(), 2u);
+  EXPECT_EQ(defaults[0].type, ExcitationType::Imbalance);
+  EXPECT_DOUBLE_EQ(defaults[0].at, 0.3 + 18.0 + 5.0);  // the MWD's middle
+  EXPECT_DOUBLE_EQ(defaults[0].imbalance, kDefaultImbalance);
+  EXPECT_EQ(defaults[1].type, ExcitationType::Bit);
+  EXPECT_EQ(defaults[1].harmonic, 3);
+  EXPECT_NEAR(defaults[1].lateral, 500.0 * 4.4482216152605, 1e-3);
+  EXPECT_NEAR(defaults[1].axial, 1000.0 * 4.4482216152605, 1e-3);
+  EXPECT_NEAR(defaults[1].torsional, 200.0 * 1.3558179483314004, 1e-3);
+  string.components[2].type = ComponentType::Collar;  // no MWD: the BHA's middle, (0.3 + 18 + 10) / 2
+  EXPECT_DOUBLE_EQ(DefaultExcitations(string)[0].at, 0.5 * 28.3);
+  string.components.pop_back();  // no pipe: the whole string's middle
+  EXPECT_DOUBLE_EQ(DefaultExcitations(string)[0].at, 0.5 * 28.3);
+  string.components.push_back(component(ComponentType::Hwdp, 9.0, 3));
+  string.components.push_back(component(ComponentType::Lwd, 9.0));  // above the HWDP: not the BHA's
+  EXPECT_DOUBLE_EQ(DefaultExcitations(string)[0].at, 0.5 * 28.3);
+}
+
 TEST(VibrationAnalysis, MotorSpeedComesFromTheFlowOrIsGiven) {
   model::ModelInput input = testing::V1Rod();
   model::Component motor = input.string.components[0];
