@@ -13,9 +13,12 @@
 
 namespace drillflex::analyses {
 
-enum class StaticMethod { Newton, DynamicRelaxation };
+// How the static equilibrium is found: the chain of strategies of analyses/static_solve.hpp (from a
+// neighbour, the energy's minimum with the friction continued, load stepping: case key `method: newton`,
+// the default), or dynamic relaxation alone (`method: relaxation`).
+enum class StaticMethod { StrategyChain, DynamicRelaxation };
 struct StaticSettings {
-  StaticMethod method = StaticMethod::Newton;
+  StaticMethod method = StaticMethod::StrategyChain;
   int max_iterations = 200;
   // Where the solver's progress goes (one line per stage and Newton iteration); none when empty.
   std::function<void(const std::string&)> log;

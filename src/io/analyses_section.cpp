@@ -17,7 +17,7 @@ analyses::StaticSettings ReadStatic(const YamlView& node) {
   analyses::StaticSettings settings;
   if (const auto method = node.OptionalChild("method")) {
     const std::string name = method->AsString();
-    if (name == "newton") settings.method = analyses::StaticMethod::Newton;
+    if (name == "newton") settings.method = analyses::StaticMethod::StrategyChain;
     else if (name == "relaxation") settings.method = analyses::StaticMethod::DynamicRelaxation;
     else method->Fail(fmt::format("expected 'newton' or 'relaxation', got '{}'", name));
   }

@@ -17,7 +17,7 @@ using testing::kRodLength;
 constexpr double kE = 2.1e11;
 const double kEI = kE * testing::RodSecondMoment();
 
-StaticResult SolveCantilever(std::vector<model::Load> loads, StaticMethod method = StaticMethod::Newton) {
+StaticResult SolveCantilever(std::vector<model::Load> loads, StaticMethod method = StaticMethod::StrategyChain) {
   model::ModelInput input = testing::V1Rod();
   input.supports = {testing::ClampAt(0.0)};
   input.loads = std::move(loads);
