@@ -165,8 +165,31 @@ void RunLinearAnalyses(const io::Case& c, const RunOptions& options, const VecX&
 
 }  // namespace
 
+namespace {
+
+// What an analysis would refuse only after the static solve it starts from, refused before anything is
+// solved (issue 33): a motor excitation without a speed or a motor. (The reader refuses what the case
+// alone shows wrong: gyroscopic modes of an axial kind, a Campbell diagram without them.)
+void CheckBeforeSolving(const io::Case& c, const AnalysisRequest& request) {
+  if (request.vibration) {
+    const analyses::VibrationSettings settings = CaseVibrationSettings(c);
+    for (std::size_t i = 0; i < settings.excitations.size(); ++i) {
+      if (settings.excitations[i].type != analyses::ExcitationType::Motor) continue;
+      try {
+        analyses::MotorSpeed(settings.excitations[i], c.input, static_cast<int>(i));
+      } catch (const InputError& e) {
+        if (!e.location().file.empty()) throw;
+        throw InputError({c.file, e.location().line, e.location().column}, e.key_path(), e.message());
+      }
+    }
+  }
+}
+
+}  // namespace
+
 CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const RunOptions& options) {
   const RunObserver& observer = options.observer;
+  CheckBeforeSolving(c, request);
   if (request.static_analysis && !c.well && c.input.supports.empty()) {
     throw InputError({c.file, 0, 0}, "supports",
                      "the string has no well and no supports: nothing holds it (add 'supports')");
