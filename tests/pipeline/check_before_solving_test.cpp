@@ -8,26 +8,16 @@
 #include "core/error.hpp"
 #include "io/case.hpp"
 #include "pipeline/case_run.hpp"
+#include "../sweep_case.hpp"
 
 namespace drillflex::pipeline {
 namespace {
 
-constexpr const char* kCase = R"(name: checks
-units: field
-well:
-  survey: [[0, 0, 0], [1000, 30, 0]]
-  hole: [{diameter: 8.5}]
-  bit_md: 900
-fluid: {density: 10}
-string:
-  - {type: bit, od: 8.5, length: 1}
-  - {type: collar, od: 6.75, id: 2.8125, length: 30, count: 3}
-operation: {wob: 10, rpm: 60}
-)";
-
-// Runs the case and returns the InputError's message, or "" when it ran; counts the analyses that finished.
-std::string Refusal(const std::string& analyses, const AnalysisRequest& request, int& finished) {
-  const io::Case c = io::ParseCase(std::string(kCase) + analyses, "checks.yaml");
+// The sweep tests' case (collars and pipe in a straight 30° hole) at 60 rpm with `vibration` as its
+// vibration settings, run: the InputError's message, or "" when it ran; counts the analyses that finished.
+std::string Refusal(const std::string& vibration, const AnalysisRequest& request, int& finished) {
+  const io::Case c = io::WithValues(io::ParseCase(test_cases::kSweepCase, "checks.yaml"),
+                                    {{"operation.rpm", "60"}, {"analyses.vibration", vibration}});
   RunOptions options;
   options.observer.finished = [&finished](Analysis, const CaseResults&) { ++finished; };
   try {
@@ -41,8 +31,7 @@ std::string Refusal(const std::string& analyses, const AnalysisRequest& request,
 TEST(CheckBeforeSolving, AMotorExcitationWithoutAMotorIsRefusedBeforeTheStatic) {
   int finished = 0;
   const std::string message =
-      Refusal("analyses:\n  vibration:\n    excitations:\n      - {type: motor, lateral: 100}\n",
-              AnalysisRequest::Only(Analysis::Vibration), finished);
+      Refusal("{excitations: [{type: motor, lateral: 100}]}", AnalysisRequest::Only(Analysis::Vibration), finished);
   EXPECT_NE(message.find("checks.yaml"), std::string::npos) << message;
   EXPECT_NE(message.find("analyses.vibration.excitations[0]"), std::string::npos) << message;
   EXPECT_EQ(finished, 0) << message;
@@ -52,8 +41,7 @@ TEST(CheckBeforeSolving, AMotorExcitationWithoutAMotorIsRefusedBeforeTheStatic) 
 TEST(CheckBeforeSolving, AVibrationWithoutExcitationsRunsOnTheDefaults) {
   int finished = 0;
   const std::string message =
-      Refusal("analyses:\n  vibration: {rpm: {from: 40, to: 80, step: 20}}\n", AnalysisRequest::Only(Analysis::Vibration),
-              finished);
+      Refusal("{rpm: {from: 40, to: 80, step: 20}}", AnalysisRequest::Only(Analysis::Vibration), finished);
   EXPECT_EQ(message, "");
   EXPECT_EQ(finished, 2);  // the static it starts from, then the vibration
 }
