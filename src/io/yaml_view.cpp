@@ -73,28 +73,35 @@ void YamlView::AllowOnlyKeys(const std::vector<std::string>& allowed) const {
 }
 
 void YamlView::RefuseRepeatedKeys() const {
-  if (node_.IsSequence()) {
-    for (std::size_t i = 0; i < node_.size(); ++i) Item(i).RefuseRepeatedKeys();
-    return;
-  }
-  if (!node_.IsMap()) return;
-  std::vector<std::pair<std::string, YAML::Mark>> seen;
-  for (const auto& entry : node_) {
-    if (!entry.first.IsScalar()) continue;
-    const std::string key = entry.first.Scalar();
-    const YamlView key_view(entry.first, ChildPath(key), context_, location());
-    for (const auto& [earlier, mark] : seen) {
-      if (earlier != key) continue;
-      const YAML::Mark again = entry.first.Mark();
-      const std::string where = mark.line == again.line
-                                    ? fmt::format("on line {}, at columns {} and {}", again.line + 1, mark.column + 1,
-                                                  again.column + 1)
-                                    : fmt::format("at line {} and at line {}", mark.line + 1, again.line + 1);
-      key_view.Fail(fmt::format("'{}' is given twice in one map, {}: give it once (merge the two, or remove one)", key,
-                                where));
+  // Depth first with a stack of its own, not by recursion: yaml-cpp reads maps and lists nested up to
+  // its own limit, and a case (or the fuzzer's input) nested that deep must not run out of stack here.
+  std::vector<YamlView> pending{*this};
+  while (!pending.empty()) {
+    const YamlView view = std::move(pending.back());
+    pending.pop_back();
+    if (view.node_.IsSequence()) {
+      for (std::size_t i = 0; i < view.node_.size(); ++i) pending.push_back(view.Item(i));
+      continue;
     }
-    seen.emplace_back(key, entry.first.Mark());
-    YamlView(entry.second, ChildPath(key), context_, key_view.location()).RefuseRepeatedKeys();
+    if (!view.node_.IsMap()) continue;
+    std::vector<std::pair<std::string, YAML::Mark>> seen;
+    for (const auto& entry : view.node_) {
+      if (!entry.first.IsScalar()) continue;
+      const std::string key = entry.first.Scalar();
+      const YamlView key_view(entry.first, view.ChildPath(key), context_, view.location());
+      for (const auto& [earlier, mark] : seen) {
+        if (earlier != key) continue;
+        const YAML::Mark again = entry.first.Mark();
+        const std::string where = mark.line == again.line
+                                      ? fmt::format("on line {}, at columns {} and {}", again.line + 1,
+                                                    mark.column + 1, again.column + 1)
+                                      : fmt::format("at line {} and at line {}", mark.line + 1, again.line + 1);
+        key_view.Fail(fmt::format("'{}' is given twice in one map, {}: give it once (merge the two, or remove one)",
+                                  key, where));
+      }
+      seen.emplace_back(key, entry.first.Mark());
+      pending.emplace_back(entry.second, view.ChildPath(key), context_, key_view.location());
+    }
   }
 }
 
