@@ -150,13 +150,12 @@ std::vector<model::Load> ReadLoadsSection(const YamlView& node) {
 
 namespace {
 
-// The operating point's plausible bounds (SI): 100 000 rpm (the lab rotors of the validation spin at
-// 30 000), 1000 klbf, 200 000 ft·lbf, 5000 klbf, 5000 gpm.
-constexpr double kMaxRotarySpeed = 100000.0 * 2.0 * kPi / 60.0;     // rad/s
-constexpr double kMaxWeightOnBit = 1000.0e3 * 4.4482216152605;       // N
-constexpr double kMaxTorqueOnBit = 200.0e3 * 1.3558179483314004;     // N·m
-constexpr double kMaxHookLoad = 5000.0e3 * 4.4482216152605;          // N
-constexpr double kMaxFlowRate = 5000.0 * 3.785411784e-3 / 60.0;      // m³/s
+// The operating point's plausible bounds, in field units (the lab rotors of the validation spin at
+// 30 000 rpm): far beyond any rig's.
+constexpr double kMaxRpm = 100000.0, kMaxWobLbf = 1.0e6, kMaxTorqueFtLbf = 2.0e5, kMaxHookLoadLbf = 5.0e6,
+                 kMaxFlowGpm = 5000.0;
+
+double FieldToSI(double value, Quantity quantity) { return units::ToSI(value, quantity, units::System::Field); }
 
 }  // namespace
 
@@ -189,11 +188,11 @@ model::Operation ReadOperationSection(const YamlView& node) {
       node.Child(key).Fail(fmt::format("expected at most {} ({:.6g} in SI), got {:.6g} in SI", what, bound, value));
     }
   };
-  at_most("rpm", operation.rotary_speed, kMaxRotarySpeed, "100 000 rpm");
-  at_most("wob", operation.weight_on_bit, kMaxWeightOnBit, "1000 klbf");
-  at_most("torque_on_bit", operation.torque_on_bit, kMaxTorqueOnBit, "200 000 ft*lbf");
-  if (operation.hook_load) at_most("hook_load", *operation.hook_load, kMaxHookLoad, "5000 klbf");
-  if (operation.flow_rate) at_most("flow_rate", *operation.flow_rate, kMaxFlowRate, "5000 gpm");
+  at_most("rpm", operation.rotary_speed, FieldToSI(kMaxRpm, Quantity::RotarySpeed), "100 000 rpm");
+  at_most("wob", operation.weight_on_bit, FieldToSI(kMaxWobLbf, Quantity::Force), "1000 klbf");
+  at_most("torque_on_bit", operation.torque_on_bit, FieldToSI(kMaxTorqueFtLbf, Quantity::Moment), "200 000 ft*lbf");
+  if (operation.hook_load) at_most("hook_load", *operation.hook_load, FieldToSI(kMaxHookLoadLbf, Quantity::Force), "5000 klbf");
+  if (operation.flow_rate) at_most("flow_rate", *operation.flow_rate, FieldToSI(kMaxFlowGpm, Quantity::FlowRate), "5000 gpm");
   return operation;
 }
 
