@@ -1,6 +1,8 @@
 """The errors drillflex raises (the C++ engine's InputError, UnitError and SolverError)."""
 from __future__ import annotations
 
+from typing import Any, Dict, Optional, Sequence
+
 
 class DrillflexError(Exception):
     """Every error of drillflex's own."""
@@ -30,4 +32,16 @@ class UnitError(DrillflexError, ValueError):
 
 
 class ConvergenceError(DrillflexError, RuntimeError):
-    """A solver that did not reach its goal; the message says which, where and why."""
+    """A solver that did not reach its goal; the message says which, where and why.
+
+    Raised by ``drillflex.run`` when some of the analyses did not finish: ``results`` then holds what
+    the others' results.json holds (the dict ``run`` returns, with their ``failures``), and
+    ``failures`` a list of ``{"analysis": name, "message": why}``; elsewhere ``results`` is None and
+    ``failures`` empty.
+    """
+
+    def __init__(self, message: str, results: Optional[Dict[str, Any]] = None,
+                 failures: Sequence[Dict[str, str]] = ()) -> None:
+        super().__init__(message)
+        self.results = results
+        self.failures = list(failures)

@@ -6,6 +6,7 @@ from typing import Any, Callable, Dict, Optional, Sequence, Union
 
 from drillflex import _core
 from drillflex.case import CaseLike, as_case
+from drillflex.errors import ConvergenceError
 from drillflex.results import BucklingResult, ModesResult, StaticResult, TransientResult, VibrationResult
 from drillflex.tables import results_dict
 
@@ -15,8 +16,9 @@ Progress = Optional[Callable[[str, float, float], Any]]
 Log = Optional[Callable[[str], Any]]
 
 
-def _run(case: CaseLike, analyses: Sequence[str], progress: Progress, log: Log) -> _core.Run:
-    return _core.run(as_case(case), list(analyses), progress, log)
+def _run(case: CaseLike, analyses: Sequence[str], progress: Progress, log: Log,
+         keep_finished: bool = False) -> _core.Run:
+    return _core.run(as_case(case), list(analyses), progress, log, keep_finished)
 
 
 def static(case: CaseLike, *, progress: Progress = None, log: Log = None) -> StaticResult:
@@ -52,7 +54,17 @@ def run(analyses: Union[str, Sequence[str]], case: CaseLike, *, progress: Progre
     (those the case lists). Values are in the case's output units, as in the file; its lists of
     numbers and of records are numpy arrays (drillflex.tables), and ``tables`` holds each CSV table
     the command line writes beside it.
+
+    An analysis that does not finish raises ConvergenceError once the others have run: its
+    ``results`` is this dict for the analyses that finished (``failures`` in it names the others, as
+    ``drillflex run --keep-finished`` writes), its ``failures`` the list of them.
     """
     names = [analyses] if isinstance(analyses, str) else list(analyses)
-    json_text, tables = _run(case, names, progress, log).results_json()
-    return results_dict(json_text, tables)
+    finished = _run(case, names, progress, log, keep_finished=True)
+    json_text, tables = finished.results_json()
+    results = results_dict(json_text, tables)
+    failures = [{"analysis": name, "message": why} for name, why in finished.failures]
+    if failures:
+        raise ConvergenceError("; ".join(f"{f['analysis']}: {f['message']}" for f in failures),
+                               results=results, failures=failures)
+    return results

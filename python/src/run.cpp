@@ -37,9 +37,10 @@ pipeline::AnalysisRequest Request(const io::Case& c, const std::vector<std::stri
 }
 
 RunHandle Run(const CaseHandle& c, const std::vector<std::string>& analyses, const py::object& progress,
-              const py::object& log) {
+              const py::object& log, bool keep_finished) {
   const pipeline::AnalysisRequest request = Request(*c.c, analyses);
   pipeline::RunOptions options;
+  options.keep_finished = keep_finished;
   // The callbacks hold references only: a py::object is not copied without the GIL.
   if (!progress.is_none()) {
     options.observer.progress = [&progress](pipeline::Analysis analysis, double done, double total) {
@@ -83,6 +84,16 @@ void BindRun(py::module_& m) {
             return std::pair(py::str(json), tables);
           },
           "(results.json's text, [(CSV file name, its text)]): what the command line writes for this run.")
+      .def_property_readonly(
+          "failures",
+          [](const RunHandle& self) {
+            std::vector<std::pair<std::string, std::string>> failures;
+            for (const pipeline::AnalysisFailure& failure : self.results->failures) {
+              failures.emplace_back(pipeline::AnalysisName(failure.analysis), failure.message);
+            }
+            return failures;
+          },
+          "[(analysis, why)]: the analyses of a run with keep_finished that did not finish.")
       .def_property_readonly("analyses", [](const RunHandle& self) {
         std::vector<std::string> names;
         for (const pipeline::Analysis analysis : kAnalyses) {
@@ -97,8 +108,11 @@ void BindRun(py::module_& m) {
   BindTransientResult(run);
 
   m.def("run", &Run, py::arg("case"), py::arg("analyses"), py::arg("progress") = py::none(), py::arg("log") = py::none(),
+        py::arg("keep_finished") = false,
         "Runs `analyses` (names, or ['run'] for the case's own) of a case. `progress(analysis, done, total)` and "
-        "`log(line)` (the run's notes) are called from the run, which holds the GIL only while they run.");
+        "`log(line)` (the run's notes) are called from the run, which holds the GIL only while they run. "
+        "`keep_finished`: a solver's failure is kept in `failures` and the other analyses run on "
+        "(pipeline::RunOptions::keep_finished); else it raises.");
 }
 
 }  // namespace drillflex::python

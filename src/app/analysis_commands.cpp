@@ -58,6 +58,11 @@ class ProgressBar {
   Clock::time_point start_, last_;
 };
 
+// A result of any analysis the run asked for (or the equilibrium one started from).
+bool AnyFinished(const pipeline::CaseResults& results) {
+  return results.static_result || results.modes || results.vibration || results.buckling || results.transient;
+}
+
 int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& request, const char* command) {
   const auto start = std::chrono::steady_clock::now();
   profile::Enable(options.profile);
@@ -66,6 +71,7 @@ int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& 
   ProgressBar bar;
   pipeline::RunOptions run_options;
   run_options.keep_transient_shapes = vtk;
+  run_options.keep_finished = options.keep_finished;
   auto& observer = run_options.observer;
   if (options.verbose) observer.log = [](const std::string& line) { std::cerr << line << '\n'; };
   observer.note = [](const std::string& line) { std::cout << line << '\n'; };
@@ -78,6 +84,14 @@ int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& 
     }
   };
   const pipeline::CaseResults results = pipeline::RunCase(c, request, run_options);
+  for (const pipeline::AnalysisFailure& failure : results.failures) {
+    std::cerr << fmt::format("drillflex: {}: the {} analysis did not finish: {}\n", command,
+                             pipeline::AnalysisName(failure.analysis), failure.message);
+  }
+  if (!results.failures.empty() && !AnyFinished(results)) {
+    std::cerr << fmt::format("drillflex: {}: no analysis finished; nothing written\n", command);
+    return kExitNotConverged;
+  }
   const double solved = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const io::ResultFiles files =
       pipeline::ComposeResultFiles(c, results, {options.output_directory, report, vtk, command, solved});
@@ -86,6 +100,11 @@ int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& 
   std::cout << fmt::format("results written to {} ({:.3g} s){}\n", files.directory(), seconds,
                            report ? fmt::format("; the report: {}/report.html", files.directory()) : "");
   if (options.profile) std::cerr << profile::FormatReport(seconds);
+  if (!results.failures.empty()) {
+    std::cerr << fmt::format("drillflex: {}: {} of the analyses did not finish (results.json 'failures'); the others' "
+                             "results are written\n", command, results.failures.size());
+    return kExitNotConverged;
+  }
   return kExitOk;
 }
 

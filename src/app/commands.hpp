@@ -19,6 +19,8 @@ struct CommandOptions {
   bool verbose = false;          // the solvers' progress on standard error
   bool no_report = false;        // no report.html and no VTK files (batch runs)
   bool profile = false;          // where the solve spent its time, on standard error (core/profile.hpp)
+  // `run` only: an analysis that fails is named and the others' results are written (exit 3).
+  bool keep_finished = false;
   // `sweep` only:
   std::vector<std::string> vary;  // KEY=VALUES, each an axis of the sweep
   std::string cases_table;        // a CSV of key paths and one run a row, instead of (or with no) --vary

@@ -108,6 +108,11 @@ int main(int argc, char** argv) {
                       "String from the bit modelled stiff, with or without a unit, or 'surface' (default: the case's "
                       "string; the pipe above by the soft string)");
     }
+    if (name == "run") {
+      sub->add_flag("--keep-finished", options.keep_finished,
+                    "When an analysis fails, write the results of those that finished (results.json names the failed "
+                    "ones under 'failures') and exit 3; without it a failure writes nothing");
+    }
     if (name == "stability") {
       sub->add_option("--rpm", options.stability_rpm_values, "Top-drive speeds: a list (60,120) or FROM:TO:STEP (40:200:20 rpm)")
           ->required();

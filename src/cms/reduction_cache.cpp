@@ -20,6 +20,7 @@ ReductionCache::Key ReductionCache::MakeKey(const fe::BodySpec& spec,
              fe.internal_fluid_mass_per_length,
              fe.bending_rotary_inertia,
              fe.lumped_rotary,
+             fe.bending_stiffness_factor,
              options.modes_per_body,
              options.structural_damping,
              options.interface_nodes};

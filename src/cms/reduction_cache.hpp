@@ -37,6 +37,7 @@ class ReductionCache {
     double added_lateral_mass_per_length, internal_fluid_mass_per_length;
     bool bending_rotary_inertia;
     fe::LumpedRotaryInertia lumped_rotary;
+    double bending_stiffness_factor;
     int modes_per_body;
     double structural_damping;
     std::vector<int> interface_nodes;

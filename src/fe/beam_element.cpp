@@ -61,7 +61,7 @@ BeamElementProperties MakeElementProperties(const HollowSection& section, const 
 
 double ShearParameter(const BeamElementProperties& p, BeamTheory theory) {
   if (theory == BeamTheory::kEulerBernoulli) return 0.0;
-  return 12.0 * p.youngs_modulus * p.second_moment /
+  return 12.0 * p.bending_rigidity() /
          (p.shear_coefficient * p.shear_modulus * p.area * p.length * p.length);
 }
 
@@ -74,7 +74,7 @@ Mat12 ElementStiffness(const BeamElementProperties& p, BeamTheory theory) {
   AddBarBlock(0, axial, -axial, k);
   AddBarBlock(3, torsion, -torsion, k);
   // Przemieniecki (1968): EI/((1+Φ)L³)·[12, 6L, −12, 6L; 6L, (4+Φ)L², −6L, (2−Φ)L²; …].
-  const double c = p.youngs_modulus * p.second_moment / ((1.0 + phi) * L * L * L);
+  const double c = p.bending_rigidity() / ((1.0 + phi) * L * L * L);
   Mat4 bending;
   bending << 12.0, 6.0 * L, -12.0, 6.0 * L,                         //
       6.0 * L, (4.0 + phi) * L * L, -6.0 * L, (2.0 - phi) * L * L,  //

@@ -41,6 +41,12 @@ struct BeamElementProperties {
   double shear_coefficient = 1.0;        // κ (Timoshenko only)
   double lateral_mass_per_length = 0.0;  // extra mass moving with v and w only (fluid), kg/m
   bool bending_rotary_inertia = true;  // ρ I terms of θy, θz (false: Euler–Bernoulli inertia)
+  // Multiplies the bending stiffness E I only (not E A, G J or the rotary inertia ρ I): the string's
+  // soft-string limit EI → 0 and sensitivity studies. 1: the section's own.
+  double bending_stiffness_factor = 1.0;
+
+  // The bending rigidity the element bends with, E I × bending_stiffness_factor, N·m².
+  double bending_rigidity() const { return youngs_modulus * second_moment * bending_stiffness_factor; }
 };
 
 // Properties of an element of length `length` cut from a section of a material.

@@ -50,6 +50,7 @@ BeamElementProperties BodyElementProperties(const BodySpec& spec) {
       MakeElementProperties(spec.section, spec.material, spec.length / spec.element_count);
   p.lateral_mass_per_length = spec.options.lateral_mass_per_length();
   p.bending_rotary_inertia = spec.options.bending_rotary_inertia;
+  p.bending_stiffness_factor = spec.options.bending_stiffness_factor;
   return p;
 }
 

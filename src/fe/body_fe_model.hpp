@@ -26,6 +26,8 @@ struct BodyFeOptions {
   bool bending_rotary_inertia = true;
   // Lumped mass only: which rotary inertia a node gets (see ElementLumpedMass).
   LumpedRotaryInertia lumped_rotary = LumpedRotaryInertia::kSection;
+  // Multiplies the bending stiffness E I (BeamElementProperties::bending_stiffness_factor).
+  double bending_stiffness_factor = 1.0;
 
   double lateral_mass_per_length() const {
     return added_lateral_mass_per_length + internal_fluid_mass_per_length;

@@ -53,7 +53,8 @@ model::FluidConfig ReadFluidSection(const YamlView& node) {
 model::ModelSettings ReadModelSection(const YamlView& node) {
   node.ExpectMap("the model settings");
   node.AllowOnlyKeys({"body_length", "elements_per_body", "modes_per_body", "coupling_factor",
-                      "structural_damping", "contact", "mass", "beam", "rotary_inertia"});
+                      "structural_damping", "contact", "mass", "beam", "rotary_inertia",
+                      "bending_stiffness_factor"});
   model::ModelSettings settings;
   if (node.IsNull()) return settings;
   settings.body_length = node.OptionalPositive("body_length", Quantity::Length).value_or(settings.body_length);
@@ -85,6 +86,11 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
     else beam->Fail(fmt::format("expected 'euler_bernoulli' or 'timoshenko', got '{}'", kind));
   }
   if (const auto rotary = node.OptionalChild("rotary_inertia")) settings.rotary_inertia = rotary->AsBool();
+  settings.bending_stiffness_factor = node.OptionalPositive("bending_stiffness_factor", Quantity::Dimensionless)
+                                          .value_or(settings.bending_stiffness_factor);
+  if (settings.bending_stiffness_factor > 1e3) {
+    node.Child("bending_stiffness_factor").Fail("expected a factor of the sections' bending stiffness EI, > 0 and <= 1000");
+  }
   if (const auto contact = node.OptionalChild("contact")) {
     contact->ExpectMap("the contact settings {stiffness, damping_ratio, friction}");
     contact->AllowOnlyKeys({"stiffness", "damping_ratio", "friction", "axial_friction", "friction_velocity"});

@@ -28,6 +28,7 @@ fe::BodyFeOptions FeOptions(const ModelSettings& settings) {
   options.mass = settings.mass == MassKind::Lumped ? fe::MassKind::kLumped : fe::MassKind::kConsistent;
   options.beam = settings.beam == BeamTheory::Timoshenko ? fe::BeamTheory::kTimoshenko : fe::BeamTheory::kEulerBernoulli;
   options.bending_rotary_inertia = settings.rotary_inertia;
+  options.bending_stiffness_factor = settings.bending_stiffness_factor;
   return options;
 }
 
@@ -62,7 +63,8 @@ Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::
   body.reference_position = Vec3(s_start, 0.0, 0.0);
   body.reference_orientation = Quat::Identity();
   body.axial_rigidity = spec.material.youngs_modulus * spec.section.area();
-  body.bending_rigidity = spec.material.youngs_modulus * spec.section.second_moment();
+  body.bending_rigidity =
+      spec.material.youngs_modulus * spec.section.second_moment() * spec.options.bending_stiffness_factor;
   body.torsional_rigidity = spec.material.shear_modulus() * spec.section.polar_moment();
   body.element_length = spec.length / spec.element_count;
   body.outer_diameter = spec.section.outer_diameter;

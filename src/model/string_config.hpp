@@ -89,6 +89,9 @@ struct ModelSettings {
   MassKind mass = MassKind::Consistent;
   BeamTheory beam = BeamTheory::EulerBernoulli;
   bool rotary_inertia = true;  // bending rotary inertia ρI of the beam sections
+  // Multiplies every section's bending stiffness E I (not E A, G J or the inertia): the soft-string
+  // limit (EI → 0) and sensitivity studies; 1, the sections' own.
+  double bending_stiffness_factor = 1.0;
 };
 
 // Degrees of freedom in the string frame: x along the string (up-hole), y right, z high side.

@@ -36,6 +36,14 @@ io::ResultFiles ComposeResultFiles(const io::Case& c, const CaseResults& results
       io::AddTransientVtk(c, results.transient_setup->moving, *results.transient, files);
     }
   }
+  // The analyses of a run that kept what finished and did not finish: named, with why (the report shows
+  // each where its section would be).
+  if (!results.failures.empty()) {
+    auto& failures = files.json()["failures"] = nlohmann::json::array();
+    for (const AnalysisFailure& failure : results.failures) {
+      failures.push_back({{"analysis", AnalysisName(failure.analysis)}, {"message", failure.message}});
+    }
+  }
   if (options.report) {
     files.Add("report.html", io::ComposeReportHtml(files.json(), report, {options.command, options.run_seconds}));
   }

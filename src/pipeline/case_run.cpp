@@ -136,36 +136,75 @@ void Finished(const RunObserver& observer, Analysis analysis, const CaseResults&
   if (observer.finished) observer.finished(analysis, results);
 }
 
-void RunLinearAnalyses(const io::Case& c, const RunOptions& options, const VecX& equilibrium, CaseResults& results) {
-  if (results.requested.modes) {
-    results.modes = RunCaseModes(c, results.model, equilibrium);
-    const analyses::ModesSettings settings = c.analyses.modes.value_or(analyses::ModesSettings{});
-    if (settings.campbell) {
-      const model::LateralFluid fluid = model::MakeLateralFluid(results.model.input, results.model.built.system);
-      results.campbell = analyses::ComputeCampbell(results.model.built.system, equilibrium, settings, &fluid);
-    }
-    Finished(options.observer, Analysis::Modes, results);
+// Runs one analysis's `solve`. With RunOptions::keep_finished a solver's failure is kept in
+// results.failures (false returned) instead of ending the run.
+template <class Solve>
+bool Attempt(Analysis analysis, const RunOptions& options, CaseResults& results, Solve&& solve) {
+  if (!options.keep_finished) {
+    solve();
+    return true;
   }
-  if (results.requested.vibration) {
-    const analyses::VibrationSettings settings = CaseVibrationSettings(c);
-    const bool defaults = !c.analyses.vibration || c.analyses.vibration->excitations.empty();
-    if (defaults && options.observer.note) {
-      const analyses::Excitation& imbalance = settings.excitations.front();
-      options.observer.note(fmt::format(
-          "vibration: the case gives no excitations: an imbalance of {} at {} from the bit at 1× and the bit at 3× "
-          "({} lateral, {} axial, {} torsional; docs/case-format.md)",
-          Show(c, imbalance.imbalance, Quantity::Imbalance), Show(c, imbalance.at, Quantity::Length),
-          Show(c, analyses::kDefaultBitLateral, Quantity::Force), Show(c, analyses::kDefaultBitAxial, Quantity::Force),
-          Show(c, analyses::kDefaultBitTorsional, Quantity::Moment)));
-    }
-    results.vibration = RunCaseVibration(c, results.model, equilibrium, settings);
-    Finished(options.observer, Analysis::Vibration, results);
+  try {
+    solve();
+    return true;
+  } catch (const SolverError& error) {
+    // The solvers name their analysis first ("buckling: ..."): the failure names it already.
+    std::string message = error.what();
+    const std::string prefix = std::string(AnalysisName(analysis)) + ": ";
+    if (message.starts_with(prefix)) message.erase(0, prefix.size());
+    results.failures.push_back({analysis, std::move(message)});
+    return false;
   }
+}
+
+void NotRun(Analysis analysis, Analysis failed, CaseResults& results) {
+  results.failures.push_back(
+      {analysis, fmt::format("not run: it starts from the {} equilibrium, which failed", AnalysisName(failed))});
+}
+
+void RunModes(const io::Case& c, const RunOptions& options, const VecX& equilibrium, CaseResults& results) {
+  results.modes = RunCaseModes(c, results.model, equilibrium);
+  const analyses::ModesSettings settings = c.analyses.modes.value_or(analyses::ModesSettings{});
+  if (settings.campbell) {
+    const model::LateralFluid fluid = model::MakeLateralFluid(results.model.input, results.model.built.system);
+    results.campbell = analyses::ComputeCampbell(results.model.built.system, equilibrium, settings, &fluid);
+  }
+  Finished(options.observer, Analysis::Modes, results);
+}
+
+void RunVibration(const io::Case& c, const RunOptions& options, const VecX& equilibrium, CaseResults& results) {
+  const analyses::VibrationSettings settings = CaseVibrationSettings(c);
+  const bool defaults = !c.analyses.vibration || c.analyses.vibration->excitations.empty();
+  if (defaults && options.observer.note) {
+    const analyses::Excitation& imbalance = settings.excitations.front();
+    options.observer.note(fmt::format(
+        "vibration: the case gives no excitations: an imbalance of {} at {} from the bit at 1× and the bit at 3× "
+        "({} lateral, {} axial, {} torsional; docs/case-format.md)",
+        Show(c, imbalance.imbalance, Quantity::Imbalance), Show(c, imbalance.at, Quantity::Length),
+        Show(c, analyses::kDefaultBitLateral, Quantity::Force), Show(c, analyses::kDefaultBitAxial, Quantity::Force),
+        Show(c, analyses::kDefaultBitTorsional, Quantity::Moment)));
+  }
+  results.vibration = RunCaseVibration(c, results.model, equilibrium, settings);
+  Finished(options.observer, Analysis::Vibration, results);
 }
 
 }  // namespace
 
 namespace {
+
+// The transient from the static equilibrium when one was solved (else from its own start).
+void RunCaseTransient(const io::Case& c, const RunOptions& options, CaseResults& results) {
+  const RunObserver& observer = options.observer;
+  results.transient_setup =
+      PrepareTransient(c, results.model, results.static_result ? &*results.static_result : nullptr, options);
+  const TransientSetup& setup = *results.transient_setup;
+  analyses::TransientProgress progress;
+  if (observer.progress) {
+    progress = [&observer](double time, double duration) { observer.progress(Analysis::Transient, time, duration); };
+  }
+  results.transient = analyses::RunTransient(setup.moving, setup.start, setup.settings, progress);
+  Finished(observer, Analysis::Transient, results);
+}
 
 // What an analysis would refuse only after the static solve it starts from, refused before anything is
 // solved (issue 33): a motor excitation without a speed or a motor. (The reader refuses what the case
@@ -209,27 +248,36 @@ CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const Run
     }
   }
   VecX equilibrium = built.system.ReferencePositions();
+  bool static_failed = false;
   if (request.static_analysis || request.modes || request.vibration) {
-    results.static_result = RunCaseStatic(c, results.model, observer);
-    equilibrium = results.static_result->q;
-    Finished(observer, Analysis::Static, results);
+    static_failed = !Attempt(Analysis::Static, options, results, [&] {
+      results.static_result = RunCaseStatic(c, results.model, observer);
+      equilibrium = results.static_result->q;
+      Finished(observer, Analysis::Static, results);
+    });
   }
-  RunLinearAnalyses(c, options, equilibrium, results);
-  if (request.buckling) {
-    results.buckling = analyses::RunBuckling(input, built, c.analyses.buckling.value_or(analyses::BucklingSettings{}),
-                                             CaseStaticSettings(c, observer));
-    Finished(observer, Analysis::Buckling, results);
-  }
-  if (request.transient) {
-    results.transient_setup =
-        PrepareTransient(c, results.model, results.static_result ? &*results.static_result : nullptr, options);
-    const TransientSetup& setup = *results.transient_setup;
-    analyses::TransientProgress progress;
-    if (observer.progress) {
-      progress = [&observer](double time, double duration) { observer.progress(Analysis::Transient, time, duration); };
+  for (const Analysis linear : {Analysis::Modes, Analysis::Vibration}) {
+    if (!request.Has(linear)) continue;
+    if (static_failed) {
+      NotRun(linear, Analysis::Static, results);
+      continue;
     }
-    results.transient = analyses::RunTransient(setup.moving, setup.start, setup.settings, progress);
-    Finished(observer, Analysis::Transient, results);
+    Attempt(linear, options, results, [&] {
+      if (linear == Analysis::Modes) RunModes(c, options, equilibrium, results);
+      else RunVibration(c, options, equilibrium, results);
+    });
+  }
+  if (request.buckling) {
+    Attempt(Analysis::Buckling, options, results, [&] {
+      results.buckling = analyses::RunBuckling(input, built, c.analyses.buckling.value_or(analyses::BucklingSettings{}),
+                                               CaseStaticSettings(c, observer));
+      Finished(observer, Analysis::Buckling, results);
+    });
+  }
+  if (request.transient && static_failed) {
+    NotRun(Analysis::Transient, Analysis::Static, results);
+  } else if (request.transient) {
+    Attempt(Analysis::Transient, options, results, [&] { RunCaseTransient(c, options, results); });
   }
   return results;
 }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "analyses/buckling_analysis.hpp"
 #include "analyses/gyroscopic_modes.hpp"
@@ -60,6 +61,11 @@ struct RunObserver {
 };
 
 struct RunOptions {
+  // An analysis whose solver fails (SolverError) is named in CaseResults::failures and the run goes
+  // on: the analyses that do not start from it still run and keep their results (`drillflex run
+  // --keep-finished`, Python's run). False: the first failure ends the run (it throws). Bad input
+  // (InputError) ends it either way.
+  bool keep_finished = false;
   // Keep the transient's string shapes at its VTK frames (`vtk_frames`, default kDefaultVtkFrames),
   // for transient.pvd; without it none are kept.
   bool keep_transient_shapes = false;
@@ -113,6 +119,13 @@ TransientSetup PrepareTransient(const io::Case& c, CaseModel& case_model, const 
 
 // Everything a run computed. `static_result` is there when the static ran or the modes or the
 // vibration started from it.
+// An analysis of a run that kept what finished (RunOptions::keep_finished) and did not: its solver
+// failed, or it was not run because it starts from one that failed.
+struct AnalysisFailure {
+  Analysis analysis = Analysis::Static;
+  std::string message;  // the solver's account of where and why, or why it was not run
+};
+
 struct CaseResults {
   AnalysisRequest requested;
   CaseModel model;
@@ -123,6 +136,7 @@ struct CaseResults {
   std::optional<analyses::BucklingResult> buckling{};
   std::optional<TransientSetup> transient_setup{};
   std::optional<analyses::TransientResult> transient{};
+  std::vector<AnalysisFailure> failures{};  // in the order the analyses run (RunOptions::keep_finished)
 };
 
 // Runs the requested analyses of a case. Throws InputError (a case the analyses cannot take, named by

@@ -403,3 +403,28 @@ TEST(Cli, StabilityNeedsATransientAndItsAxes) {
   EXPECT_THAT(result.output, HasSubstr("operation.rpm"));
   EXPECT_FALSE(fs::exists(out));
 }
+
+// `run` stops at an analysis that fails and writes nothing (docs/case-format.md); with --keep-finished
+// it writes the analyses that finished, names the failed one in results.json and the report, and
+// exits 3 (issue 33 item 5).
+TEST(Cli, RunKeepFinishedWritesTheAnalysesThatFinished) {
+  const fs::path path = DRILLFLEX_SOURCE_DIR "/tests/cases/hanging.yaml";  // its buckling fails
+  const fs::path stopped = FreshDirectory("run-stopped");
+  const RunResult plain = RunDrillflex("run " + path.string() + " -o " + stopped.string());
+  EXPECT_EQ(plain.status, 3) << plain.output;
+  EXPECT_FALSE(fs::exists(stopped));
+  const fs::path out = FreshDirectory("run-kept");
+  const RunResult kept = RunDrillflex("run " + path.string() + " -o " + out.string() + " --keep-finished");
+  EXPECT_EQ(kept.status, 3) << kept.output;
+  EXPECT_THAT(kept.output, HasSubstr("the buckling analysis did not finish: the string's lowest lateral frequency"));
+  ASSERT_TRUE(fs::exists(out / "results.json")) << kept.output;
+  EXPECT_TRUE(fs::exists(out / "modes.csv"));
+  EXPECT_TRUE(fs::exists(out / "static.csv"));
+  EXPECT_FALSE(fs::exists(out / "buckling.csv"));
+  const auto json = nlohmann::json::parse(drillflex::test_cli::ReadFile(out / "results.json"));
+  ASSERT_EQ(json["failures"].size(), 1u);
+  EXPECT_EQ(json["failures"][0]["analysis"], "buckling");
+  EXPECT_TRUE(json.contains("modes"));
+  EXPECT_FALSE(json.contains("buckling"));
+  EXPECT_TRUE(fs::exists(out / "report.html"));  // drawn in Chromium: tests/CMakeLists.txt report.KeepFinished
+}

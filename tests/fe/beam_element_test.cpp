@@ -65,6 +65,22 @@ TEST(BeamElement, EulerBernoulliCantileverIsExact) {
   EXPECT_LT(Rel(d(9), T * L / (p.shear_modulus * p.polar_moment)), 1e-12);
 }
 
+// bending_stiffness_factor scales EI alone: a cantilever's tip deflection under a tip force grows by
+// its inverse (Euler–Bernoulli: P L³ / 3 E I), its stretch and twist under a tip force and torque
+// stay, and the mass matrix is the same.
+TEST(BeamElement, BendingStiffnessFactorScalesEIAlone) {
+  const BeamElementProperties steel = Collar();
+  BeamElementProperties soft = steel;
+  soft.bending_stiffness_factor = 0.01;
+  const Mat12 k = ElementStiffness(steel, BeamTheory::kEulerBernoulli);
+  const Mat12 k_soft = ElementStiffness(soft, BeamTheory::kEulerBernoulli);
+  const double L = steel.length, ei = steel.youngs_modulus * steel.second_moment;
+  EXPECT_LT(Rel(CantileverTip(k_soft, Load(1, 1e3))(7), 1e3 * L * L * L / (3.0 * 0.01 * ei)), 1e-9);
+  EXPECT_LT(Rel(CantileverTip(k_soft, Load(0, 1e3))(6), CantileverTip(k, Load(0, 1e3))(6)), 1e-12);
+  EXPECT_LT(Rel(CantileverTip(k_soft, Load(3, 1e3))(9), CantileverTip(k, Load(3, 1e3))(9)), 1e-12);
+  EXPECT_EQ(ElementConsistentMass(soft, BeamTheory::kEulerBernoulli), ElementConsistentMass(steel, BeamTheory::kEulerBernoulli));
+}
+
 TEST(BeamElement, TimoshenkoCantileverAddsShearDeflection) {
   const BeamElementProperties p = Collar(0.5);
   const Mat12 k = ElementStiffness(p, BeamTheory::kTimoshenko);

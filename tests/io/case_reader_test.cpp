@@ -43,6 +43,7 @@ model:
   modes_per_body: 6
   coupling_factor: 100
   structural_damping: 0.01
+  bending_stiffness_factor: 0.5
   contact: {stiffness: 1e8 N/m, damping_ratio: 0.1, friction: 0.25}
 supports:
   - {at: 0, fix: [x, y, z]}
@@ -95,6 +96,7 @@ TEST(CaseReader, ReadsEveryKeyOfTheContractInSI) {
   EXPECT_NEAR(c.input.settings.body_length, 3.0, 1e-12);
   EXPECT_EQ(c.input.settings.modes_per_body, 6);
   EXPECT_DOUBLE_EQ(c.input.settings.contact.stiffness, 1e8);
+  EXPECT_DOUBLE_EQ(c.input.settings.bending_stiffness_factor, 0.5);
   ASSERT_EQ(c.input.supports.size(), 1u);
   EXPECT_TRUE(c.input.supports[0].fixed[model::kX] && c.input.supports[0].fixed[model::kZ]);
   EXPECT_FALSE(c.input.supports[0].fixed[model::kRx]);
@@ -285,6 +287,7 @@ analyses: {modes: }
   EXPECT_FALSE(c.well);
   EXPECT_DOUBLE_EQ(c.input.gravity, 0.0);
   EXPECT_EQ(c.input.settings.elements_per_body, 10);
+  EXPECT_DOUBLE_EQ(c.input.settings.bending_stiffness_factor, 1.0);  // the sections' own EI
   ASSERT_TRUE(c.analyses.modes);
   EXPECT_EQ(c.analyses.modes->count, 10);
   EXPECT_TRUE(c.input.supports[0].fixed[model::kRz]);
@@ -399,6 +402,10 @@ INSTANTIATE_TEST_SUITE_P(
                      "materials.steel.E", "got 1.427e+15 Pa (2.07e+11 psi)"},
         RejectedCase{"density in ppg read as kg/m3", "materials:\n  steel: {E: 207e9, nu: 0.3, density: 65.5}\n", 2,
                      "materials.steel.density", "between 500 and 25000 kg/m3"},
+        RejectedCase{"zero bending stiffness factor", std::string(kGoodString) + "model: {bending_stiffness_factor: 0}\n",
+                     3, "model.bending_stiffness_factor", "greater than zero"},
+        RejectedCase{"huge bending stiffness factor", std::string(kGoodString) + "model: {bending_stiffness_factor: 1e4}\n",
+                     3, "model.bending_stiffness_factor", "<= 1000"},
         RejectedCase{"zero friction velocity", std::string(kGoodString) + "model:\n  contact:\n    friction_velocity: 0 m/s\n",
                      5, "model.contact.friction_velocity", "greater than zero"},
         RejectedCase{"friction velocity not a velocity", std::string(kGoodString) + "model:\n  contact: {friction_velocity: 1 rpm}\n",

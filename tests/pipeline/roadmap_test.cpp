@@ -8,9 +8,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "analyses/soft_string.hpp"
 #include "pipeline/roadmap.hpp"
 
 namespace drillflex::pipeline {
@@ -189,6 +191,90 @@ operation: {rpm: 60}
               "torque against soft/sqrt(1+mu^2) %+.3f %%\n",
               100.0 * (stiff.pick_up / soft.pick_up - 1.0), 100.0 * (stiff.slack_off / soft.slack_off - 1.0),
               100.0 * (stiff.rotating / soft.rotating - 1.0), 100.0 * (stiff.off_bottom_torque / climbing - 1.0));
+}
+
+
+// The stiff string's limit EI → 0 is the soft string (Johancsik), in a well where bending carries
+// load: a 3-D build at 6°/30 m while turning (200 m → 400 m: 40° of build, 30° of turn), then a hold,
+// 5 in pipe without tool joints, the whole string stiff (stiff_length = surface), μ = 0.3. The model's
+// `bending_stiffness_factor` lowers EI alone (EA, GJ, the weight stay). The soft string's elements are
+// 0.25 m (its scheme is first order in their length: at 9 m its drags move by ~1.4 %), its rotating
+// torque with the climb of the wall (SoftStringOperation::wall_climb, V7). Measured (Release):
+//
+//   hole      EI ×     pick-up drag   slack-off drag   torque   (stiff against soft)
+//   5.31 in   1        +2.72 %        +1.33 %          +1.99 %  the pipe's bending at the build's ends
+//   5.31 in   0.01     −0.28 %        −0.09 %          −0.07 %
+//   5.31 in   1e-4     −0.26 %        −0.06 %          −0.02 %
+//   8.5 in    1e-4     −1.22 %        −0.50 %          −0.51 %
+//
+// What stays at EI → 0 is the clearance, which the soft string leaves out: at the build's end a cable
+// pulled to the high side crosses the hole to the low side of the hold free of the wall (over ~√(2·2c·T/w
+// sin I), 11 m at c = 44 mm), cutting the corner; it shrinks with the clearance c (44 mm → 4 mm: the
+// drags' difference 1.22 → 0.26 % and 0.50 → 0.06 %).
+struct EiLimitErrors {
+  double pick_up_drag = 0.0;    // (pick-up − rotating) against the soft string's, relative
+  double slack_off_drag = 0.0;  // (rotating − slack-off), relative
+  double torque = 0.0;          // off-bottom torque, relative
+};
+
+EiLimitErrors StiffAgainstSoft(double bending_stiffness_factor, double hole_diameter = 0.2159) {
+  const io::Case c = io::ParseCase(fmt::format(R"(name: ei-limit
+units: SI
+well:
+  survey: [[0, 0, 0], [200, 0, 0], [400, 40, 30], [700, 40, 30]]
+  hole: [{{diameter: {}}}]
+  bit_md: 600
+fluid: {{density: 1200}}
+string:
+  - {{type: pipe, od: 0.127, id: 0.1086, length: 9, count: 66}}
+model: {{body_length: 9, elements_per_body: 4, modes_per_body: 4, bending_stiffness_factor: {}}}
+operation: {{rpm: 60}}
+)",
+                                               hole_diameter, bending_stiffness_factor),
+                                   "ei-limit.yaml");
+  constexpr double kMu = 0.3;
+  analyses::RoadmapSettings settings = CompleteRoadmapSettings(c, {600.0, 100.0, {kMu}});
+  settings.stiff_length = std::numeric_limits<double>::infinity();
+  const RoadmapPoint stiff = RunRoadmap(c, settings).front();
+  EXPECT_TRUE(stiff.message.empty()) << stiff.message;
+  const io::Case at = StiffCaseAtDepth(c, 600.0, settings);
+  auto soft = [&](analyses::SoftStringMotion motion) {
+    analyses::SoftStringOperation operation;
+    operation.motion = motion;
+    operation.axial_friction = operation.tangential_friction = kMu;
+    operation.max_element_length = 0.25;
+    operation.wall_climb = true;
+    return analyses::ComputeSoftString(at.input, operation);
+  };
+  const auto pick_up = soft(analyses::SoftStringMotion::PickUp);
+  const auto slack_off = soft(analyses::SoftStringMotion::SlackOff);
+  const auto rotating = soft(analyses::SoftStringMotion::Rotating);
+  EiLimitErrors errors;
+  errors.pick_up_drag = (stiff.pick_up - stiff.rotating) / (pick_up.hook_load - rotating.hook_load) - 1.0;
+  errors.slack_off_drag = (stiff.rotating - stiff.slack_off) / (rotating.hook_load - slack_off.hook_load) - 1.0;
+  errors.torque = stiff.off_bottom_torque / rotating.surface_torque - 1.0;
+  std::printf("hole %.4f m, EI x %-6g: pick-up drag %+.3f %%, slack-off drag %+.3f %%, torque %+.3f %% against the soft string\n",
+              hole_diameter, bending_stiffness_factor, 100.0 * errors.pick_up_drag, 100.0 * errors.slack_off_drag,
+              100.0 * errors.torque);
+  return errors;
+}
+
+TEST(Roadmap, TheStiffStringApproachesTheSoftStringAsEIGoesToZero) {
+  const EiLimitErrors steel = StiffAgainstSoft(1.0, 0.135);
+  const EiLimitErrors cable = StiffAgainstSoft(1e-4, 0.135);
+  const EiLimitErrors wide = StiffAgainstSoft(1e-4, 0.2159);
+  // The steel pipe's bending stiffness adds drag and torque in the build (~2 μ κ √(EI T) a dogleg end).
+  EXPECT_GT(steel.pick_up_drag, 0.015);
+  EXPECT_GT(steel.slack_off_drag, 0.007);
+  EXPECT_GT(steel.torque, 0.01);
+  // With EI → 0 (and a small clearance) the stiff string is the soft string.
+  EXPECT_LT(std::abs(cable.pick_up_drag), 0.004);
+  EXPECT_LT(std::abs(cable.slack_off_drag), 0.0015);
+  EXPECT_LT(std::abs(cable.torque), 0.001);
+  // What is left shrinks with the clearance.
+  EXPECT_LT(std::abs(cable.pick_up_drag), 0.5 * std::abs(wide.pick_up_drag));
+  EXPECT_LT(std::abs(cable.slack_off_drag), 0.5 * std::abs(wide.slack_off_drag));
+  EXPECT_LT(std::abs(cable.torque), 0.5 * std::abs(wide.torque));
 }
 
 }  // namespace

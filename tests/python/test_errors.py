@@ -64,6 +64,19 @@ def test_solver_failure_raises_convergence_error(small: drillflex.Case) -> None:
         drillflex.static(small.with_values({"analyses.static": "{max_iterations: 1}"}))
 
 
+def test_run_raises_with_the_finished_results_attached() -> None:
+    # tests/cases/hanging.yaml: its buckling fails after its static and modes have finished.
+    from conftest import ROOT
+    with pytest.raises(drillflex.ConvergenceError, match="buckling: the string's lowest lateral frequency") as raised:
+        drillflex.run("run", str(ROOT / "tests" / "cases" / "hanging.yaml"))
+    error = raised.value
+    assert [f["analysis"] for f in error.failures] == ["buckling"]
+    assert error.results is not None
+    assert len(error.results["modes"]) == 3
+    assert "static" in error.results and "buckling" not in error.results
+    assert "modes.csv" in error.results["tables"]
+
+
 def test_unknown_analysis(small: drillflex.Case) -> None:
     with pytest.raises(ValueError, match="unknown analysis 'statics'"):
         drillflex.run("statics", small)

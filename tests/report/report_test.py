@@ -157,7 +157,8 @@ def main():
     shutil.rmtree(results_dir, ignore_errors=True)
     run = subprocess.run([args.drillflex, args.analysis, args.case, "-o", results_dir] + args.options.split(),
                          capture_output=True, text=True)
-    check(run.returncode == 0, f"drillflex {args.analysis} exited {run.returncode}: {run.stderr}")
+    check(run.returncode == args.exit, f"drillflex {args.analysis} exited {run.returncode} (expected {args.exit}): "
+                                       f"{run.stderr}")
     report = os.path.join(results_dir, "report.html")
     check(os.path.exists(report), "no report.html")
     size = os.path.getsize(report)
@@ -224,6 +225,7 @@ parser.add_argument("--sections", default="header,static,view3d")
 parser.add_argument("--keys", default="")
 parser.add_argument("--json", default="results.json", help="the JSON file the report draws (roadmap.json)")
 parser.add_argument("--options", default="", help="more options of the command, one string")
+parser.add_argument("--exit", type=int, default=0, help="the command's expected exit status (3: an analysis failed)")
 args = parser.parse_args()
 args.sections = [s for s in args.sections.split(",") if s]
 args.keys = [k for k in args.keys.split(",") if k]

@@ -351,13 +351,17 @@
           {label: 'string axis offset', x: x, y: column(nodes, 'hole_offset'), color: COLORS[0], width: 2},
         ],
       });
-      plot(grid, {
-        title: 'Wall contact force', x: xTitle, y: `normal force (${U.force})`,
-        series: [
-          {label: 'normal force', x: column(contacts, 'md'), y: column(contacts, 'normal_force'), line: false, points: true, pointStyle: 'triangle', pointRadius: 5, color: COLORS[1]},
-          {label: 'friction force', x: column(contacts, 'md'), y: column(contacts, 'friction_force'), line: false, points: true, pointRadius: 3, color: COLORS[3]},
-        ],
-      });
+      if (contacts.length) {
+        plot(grid, {
+          title: 'Wall contact force', x: xTitle, y: `normal force (${U.force})`,
+          series: [
+            {label: 'normal force', x: column(contacts, 'md'), y: column(contacts, 'normal_force'), line: false, points: true, pointStyle: 'triangle', pointRadius: 5, color: COLORS[1]},
+            {label: 'friction force', x: column(contacts, 'md'), y: column(contacts, 'friction_force'), line: false, points: true, pointRadius: 3, color: COLORS[3]},
+          ],
+        });
+      } else {
+        s.appendChild(el('p', {class: 'note', text: 'No wall contact carries force: the string hangs free of the wall.'}));
+      }
     } else {
       plot(grid, {title: 'Lateral displacement', x: xTitle, y: `displacement (${U.diameter})`,
         series: [{label: 'lateral', x: x, y: column(nodes, 'lateral_offset')}]});
@@ -796,14 +800,27 @@
   function guarded(name, f) {
     try { f(); } catch (e) { recordError(`${name}: ${e && e.message ? e.message : e}`); }
   }
+  // An analysis of a run that kept what finished (`drillflex run --keep-finished`) and did not finish:
+  // its section says so, with the solver's reason, where the results would be.
+  function failedSection(nav, failure) {
+    const s = section(failure.analysis, `${failure.analysis[0].toUpperCase()}${failure.analysis.slice(1)}: failed`);
+    nav.appendChild(el('a', {href: `#${failure.analysis}`, text: `${failure.analysis} (failed)`}));
+    s.appendChild(el('div', {class: 'failure-box'}, [el('strong', {text: 'This analysis did not finish. '}),
+      el('span', {text: failure.message})]));
+  }
+  const failed = (name) => (R.failures || []).find((f) => f.analysis === name);
+  function part(name, present, f) {
+    if (present) guarded(name, f);
+    else if (failed(name)) guarded(name, () => failedSection(nav, failed(name)));
+  }
   const nav = header();
-  if (R.static) guarded('static', () => staticSection(nav));
+  part('static', R.static, () => staticSection(nav));
   if (R.static && D.hole_centre) guarded('3-D view', () => threeSection(nav));
-  if (R.modes) guarded('modes', () => modesSection(nav));
+  part('modes', R.modes, () => modesSection(nav));
   if (R.campbell) guarded('Campbell', () => campbellSection(nav));
-  if (R.vibration) guarded('vibration', () => vibrationSection(nav));
-  if (R.buckling) guarded('buckling', () => bucklingSection(nav));
-  if (D.transient) guarded('transient', () => transientSection(nav));
+  part('vibration', R.vibration, () => vibrationSection(nav));
+  part('buckling', R.buckling, () => bucklingSection(nav));
+  part('transient', D.transient, () => transientSection(nav));
   if (R.roadmap) guarded('roadmap', () => roadmapSection(nav));
   if (R.stability) guarded('stability map', () => stabilitySection(nav));
   // report.html?only=static shows the header and that section alone (to print or capture one part).
