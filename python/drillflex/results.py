@@ -120,6 +120,7 @@ class BucklingResult(Result):
     """The buckling load (``drillflex.buckling``).
 
     ``load_factor`` (the loads × it buckle the string), ``critical_load`` (N), ``critical_wob`` (N),
+    ``lower_bound`` (True: no onset up to ``load_factor``, which with the loads there is a lower bound),
     ``scaled_wob``, ``about_equilibrium``, ``load_factors``, ``reference_load_factor``,
     ``reference_compression``; the frequency method's ``frequency_method_converged``,
     ``frequency_load_factor``, ``frequency_critical_load``, ``unloaded_frequency_hz`` and

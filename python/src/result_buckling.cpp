@@ -14,6 +14,7 @@ void BindBucklingResult(py::class_<RunHandle>& run) {
     py::dict fields;
     fields["scaled_wob"] = result.scaled_wob;
     fields["about_equilibrium"] = result.about_equilibrium;
+    fields["lower_bound"] = result.lower_bound;
     fields["critical_wob"] = result.critical_wob;
     fields["load_factor"] = result.load_factor;
     fields["critical_load"] = result.critical_load;

@@ -295,6 +295,20 @@ void SolveAboutEquilibrium(EquilibriumSolver& solver, BucklingResult& result) {
   double below = samples.back().multiplier;  // the largest multiplier sampled with ω² > 0
   double above = std::numeric_limits<double>::infinity();  // the smallest one past the onset
   double estimate = trend_root();
+  // Every multiplier of the march sampled, each equilibrium stable, and ω² not falling at the end: no
+  // onset up to it, a finished answer (the largest multiplier is a lower bound; BucklingResult::lower_bound).
+  const bool stable_throughout = samples.back().multiplier == kMarch.back() && samples.back().eigenvalue > 0.0;
+  if ((!(estimate > below) || !std::isfinite(estimate)) && stable_throughout) {
+    const LateralSample& last = samples.back();
+    result.lower_bound = true;
+    result.load_factor = last.multiplier;
+    result.load_factors = {last.multiplier};
+    result.reference_load_factor = last.multiplier;
+    result.frequency_load_factor = last.multiplier;
+    result.critical_load = result.frequency_critical_load = last.compression;
+    FillBuckledMode(solver.ModelAt(last.multiplier), last.q, last.mode, result);
+    return;
+  }
   if (!(estimate > below) || !std::isfinite(estimate)) {
     throw SolverError(fmt::format("buckling: the string's lowest lateral frequency does not fall as the {} grows from "
                                   "the case's loads up to × {:g} ({:.6g} Hz at × 1, {:.6g} Hz at × {:g}): the loads "
@@ -485,6 +499,22 @@ BucklingResult RunBuckling(const model::ModelInput& input, const model::BuiltMod
     result.about_equilibrium = true;
     SolveAboutEquilibrium(solver, result);
     if (solver.in_well()) result.sinusoidal = ScreenSinusoidalBuckling(input, built, solver.At(1.0).q, scale_wob);
+    const SinusoidalBucklingScreen& screen = result.sinusoidal;
+    if (result.lower_bound && screen.computed && screen.load_factor < 1.0) {
+      // A frequency that rises from an equilibrium lying buckled already (a string compressed beyond
+      // Dawson–Paslay's load, or in a vertical hole where nothing holds it straight: Lubinski) says
+      // the post-buckled string stiffens, not that it stands: no lower bound then.
+      throw SolverError(fmt::format(
+          "buckling: the string lies buckled already at the case's loads: its compression {:.6g} N at MD {:.6g} m "
+          "exceeds {} ({:.6g} N), and its lowest lateral frequency about that equilibrium rises with the load ({:.4g} Hz "
+          "at × 1, {:.4g} Hz at × {:g}); lower the WOB to find the onset",
+          screen.compression, screen.md,
+          screen.sinusoidal_load > 0.0 ? "Dawson–Paslay's sinusoidal buckling load"
+                                       : "Dawson–Paslay's sinusoidal buckling load of a vertical hole, where no weight holds "
+                                         "the string to a side",
+          screen.sinusoidal_load, result.frequency_table.front().frequency_hz, result.frequency_table.back().frequency_hz,
+          result.load_factor));
+    }
   } else {
     SolveEigenproblem(solver, settings, result);
     if (settings.frequency_method) SolveByFrequencies(solver, settings, result);

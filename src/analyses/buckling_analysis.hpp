@@ -69,6 +69,12 @@ struct SinusoidalBucklingScreen {
 struct BucklingResult {
   bool scaled_wob = false;        // the multiplier scales the WOB alone (else every load)
   bool about_equilibrium = false; // found by (c) below, not by (a) and (b)
+  // (c) only: no onset up to the largest multiplier sampled. The string's lowest lateral frequency
+  // rose with the load at every sample up to it, each equilibrium stable (ω² > 0): the compression
+  // presses the string harder onto the wall (the outside of a curve) rather than buckling it. Then
+  // load_factor, critical_load and critical_wob are lower bounds (the loads at that multiplier), the
+  // mode the lowest lateral mode there, and frequency_method_converged false.
+  bool lower_bound = false;
   double critical_wob = 0.0;      // the WOB at buckling, N: WOB × μ (0 without a WOB)
   // (a) the eigenproblem
   double load_factor = 0.0;       // μ_cr: the case's loads × μ_cr buckle the string

@@ -280,6 +280,8 @@ void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, R
         {"unloaded_frequency_hz", result.unloaded_frequency_hz},
         {"table", points}}}};
   if (result.critical_wob > 0.0) files.json()["buckling"]["critical_wob"] = out(result.critical_wob, Quantity::Force);
+  // No onset up to load_factor (analyses::BucklingResult::lower_bound): the loads there are lower bounds.
+  if (result.lower_bound) files.json()["buckling"]["lower_bound"] = true;
   if (result.sinusoidal.computed) {
     const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;
     files.json()["buckling"]["dawson_paslay"] = {

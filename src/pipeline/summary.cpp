@@ -228,9 +228,22 @@ void WriteBuckling(std::ostream& out, const io::Case& c, const analyses::Bucklin
   const std::string scaled = result.scaled_wob ? "the WOB" : "every load";
   const std::string how = result.about_equilibrium ? "the lowest lateral frequency about the equilibrium reaches 0"
                                                    : "eigenproblem";
-  out << fmt::format("buckling: {} × {:.6g} buckles the string, largest compression {} ({})\n", scaled,
-                           result.load_factor, Show(c, result.critical_load, Quantity::Force, 6), how);
-  if (result.critical_wob > 0.0) {
+  if (result.lower_bound) {
+    const auto& table = result.frequency_table;
+    out << fmt::format("buckling: no onset up to {} × {:g} (largest compression {}): the lowest lateral frequency rises "
+                       "with the load, {:.4g} Hz at × 1 to {:.4g} Hz at × {:g}, every equilibrium stable ({})\n",
+                       scaled, result.load_factor, Show(c, result.critical_load, Quantity::Force, 6),
+                       table.front().frequency_hz, table.back().frequency_hz, result.load_factor,
+                       result.critical_load > 0.0 ? "the compression presses the string onto the wall"
+                                                  : "the loads put no part of the string in compression");
+    if (result.critical_wob > 0.0) {
+      out << fmt::format("  no buckling below a WOB of {}\n", Show(c, result.critical_wob, Quantity::Force, 6));
+    }
+  } else {
+    out << fmt::format("buckling: {} × {:.6g} buckles the string, largest compression {} ({})\n", scaled,
+                       result.load_factor, Show(c, result.critical_load, Quantity::Force, 6), how);
+  }
+  if (result.critical_wob > 0.0 && !result.lower_bound) {
     out << fmt::format("  critical WOB {}\n", Show(c, result.critical_wob, Quantity::Force, 6));
   }
   if (result.sinusoidal.computed) {
@@ -255,7 +268,7 @@ void WriteBuckling(std::ostream& out, const io::Case& c, const analyses::Bucklin
   if (!result.about_equilibrium && result.frequency_method_converged) {
     out << fmt::format("  from the lowest frequency against load: multiplier {:.6g}, compression {}\n",
                              result.frequency_load_factor, Show(c, result.frequency_critical_load, Quantity::Force, 6));
-  } else if (!result.frequency_method_converged) {
+  } else if (!result.frequency_method_converged && !result.lower_bound) {
     out << "  warning: the frequency extrapolation did not settle (samples in buckling.csv)\n";
   }
 }

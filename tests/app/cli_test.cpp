@@ -408,7 +408,7 @@ TEST(Cli, StabilityNeedsATransientAndItsAxes) {
 // it writes the analyses that finished, names the failed one in results.json and the report, and
 // exits 3 (issue 33 item 5).
 TEST(Cli, RunKeepFinishedWritesTheAnalysesThatFinished) {
-  const fs::path path = DRILLFLEX_SOURCE_DIR "/tests/cases/hanging.yaml";  // its buckling fails
+  const fs::path path = DRILLFLEX_SOURCE_DIR "/tests/cases/keep-finished.yaml";  // its buckling fails
   const fs::path stopped = FreshDirectory("run-stopped");
   const RunResult plain = RunDrillflex("run " + path.string() + " -o " + stopped.string());
   EXPECT_EQ(plain.status, 3) << plain.output;

@@ -13,11 +13,11 @@
 namespace drillflex::pipeline {
 namespace {
 
-// tests/cases/hanging.yaml: its buckling fails after its static and modes.
-io::Case Hanging() { return io::ReadCase(DRILLFLEX_SOURCE_DIR "/tests/cases/hanging.yaml"); }
+// tests/cases/keep-finished.yaml: its buckling fails after its static and modes.
+io::Case KeepFinishedCase() { return io::ReadCase(DRILLFLEX_SOURCE_DIR "/tests/cases/keep-finished.yaml"); }
 
 TEST(KeepFinished, TheBucklingThatFailsIsNamedAndTheStaticAndModesStand) {
-  const io::Case c = Hanging();
+  const io::Case c = KeepFinishedCase();
   RunOptions options;
   options.keep_finished = true;
   const CaseResults results = RunCase(c, CaseAnalyses(c), options);
@@ -42,16 +42,15 @@ TEST(KeepFinished, TheBucklingThatFailsIsNamedAndTheStaticAndModesStand) {
 }
 
 TEST(KeepFinished, WithoutItTheFailureEndsTheRun) {
-  const io::Case c = Hanging();
+  const io::Case c = KeepFinishedCase();
   EXPECT_THROW(RunCase(c, CaseAnalyses(c), {}), SolverError);
 }
 
 // A static that fails (ten steps of dynamic relaxation for a string that must settle on the wall of a
 // build) takes the modes that start from it along (named, not run); the buckling, which solves its
-// own equilibrium, is tried on its own.
+// own equilibria, is tried on its own.
 TEST(KeepFinished, AFailedStaticNamesTheModesItLeavesUnrun) {
-  const io::Case c = io::WithValues(Hanging(), {{"well.survey", "[[0, 0, 0], [100, 0, 0], [400, 40, 0]]"},
-                                                {"analyses.static", "{method: relaxation, max_iterations: 1}"}});
+  const io::Case c = io::WithValues(KeepFinishedCase(), {{"analyses.static", "{method: relaxation, max_iterations: 1}"}});
   RunOptions options;
   options.keep_finished = true;
   const CaseResults results = RunCase(c, CaseAnalyses(c), options);

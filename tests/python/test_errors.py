@@ -65,10 +65,10 @@ def test_solver_failure_raises_convergence_error(small: drillflex.Case) -> None:
 
 
 def test_run_raises_with_the_finished_results_attached() -> None:
-    # tests/cases/hanging.yaml: its buckling fails after its static and modes have finished.
+    # tests/cases/keep-finished.yaml: its buckling fails after its static and modes have finished.
     from conftest import ROOT
     with pytest.raises(drillflex.ConvergenceError, match="buckling: the string's lowest lateral frequency") as raised:
-        drillflex.run("run", str(ROOT / "tests" / "cases" / "hanging.yaml"))
+        drillflex.run("run", str(ROOT / "tests" / "cases" / "keep-finished.yaml"))
     error = raised.value
     assert [f["analysis"] for f in error.failures] == ["buckling"]
     assert error.results is not None

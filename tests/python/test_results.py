@@ -94,6 +94,7 @@ analyses:
 """)
     bk = drillflex.buckling(case)
     assert bk.load_factor > 1
+    assert not bk.lower_bound  # an onset found, not a bound
     assert bk.critical_load == pytest.approx(1000 * bk.load_factor, rel=1e-6)
     assert bk.mode_displacement.shape == (len(bk.s), 3)
     assert "buckling" in str(bk)

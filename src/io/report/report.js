@@ -623,12 +623,20 @@
     nav.appendChild(el('a', {href: '#buckling', text: 'buckling'}));
     const p = el('p');
     const scaled = b.scaled === 'wob' ? 'the WOB' : 'every load';
-    p.append(`Critical multiplier of ${scaled} `, value(b.load_factor, '', 'buckling.load_factor', 6), ': a largest compression of ',
-             value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force})`);
-    if (b.critical_wob !== undefined) p.append(', a critical WOB of ', value(b.critical_wob, U.force, 'buckling.critical_wob'));
-    p.append(b.method ? ` (${b.method}).` : '.');
+    if (b.lower_bound) {
+      // No onset up to the largest multiplier sampled (every equilibrium stable, the frequency rising).
+      p.append(`No buckling up to ${scaled} × `, value(b.load_factor, '', 'buckling.load_factor', 6), ': a largest compression of ',
+               value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force})`);
+      if (b.critical_wob !== undefined) p.append(', a WOB of ', value(b.critical_wob, U.force, 'buckling.critical_wob'));
+      p.append(': the lowest lateral frequency rises with the load and every equilibrium is stable (the compression presses the string onto the wall).');
+    } else {
+      p.append(`Critical multiplier of ${scaled} `, value(b.load_factor, '', 'buckling.load_factor', 6), ': a largest compression of ',
+               value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force})`);
+      if (b.critical_wob !== undefined) p.append(', a critical WOB of ', value(b.critical_wob, U.force, 'buckling.critical_wob'));
+      p.append(b.method ? ` (${b.method}).` : '.');
+    }
     s.appendChild(p);
-    if (b.frequency_method && !b.frequency_method.converged) {
+    if (b.frequency_method && !b.frequency_method.converged && !b.lower_bound) {
       s.appendChild(el('p', {class: 'note', text: 'The frequency extrapolation did not settle: read the multiplier with its samples below.'}));
     }
     if (b.dawson_paslay) {
@@ -647,11 +655,11 @@
     if (table.length) {
       plot(grid, {title: 'Lowest frequency against the load multiplier', x: 'load multiplier (–)', y: 'frequency (Hz)',
         series: [{label: 'lowest frequency', x: column(table, 'load_factor'), y: column(table, 'frequency_hz'), points: true, width: 2}],
-        vLines: [{x: b.load_factor, label: `critical ${num(b.load_factor, 4)}`, color: '#d62728'}]});
+        vLines: b.lower_bound ? [] : [{x: b.load_factor, label: `critical ${num(b.load_factor, 4)}`, color: '#d62728'}]});
     }
     if (b.mode && b.mode.s.length) {
       const d = b.mode.displacement;
-      plot(grid, {title: 'Buckled shape (largest = 1)', x: `distance from the bit (${U.length})`, y: 'displacement (–)',
+      plot(grid, {title: b.lower_bound ? `Lowest lateral mode at × ${num(b.load_factor, 4)} (largest = 1)` : 'Buckled shape (largest = 1)', x: `distance from the bit (${U.length})`, y: 'displacement (–)',
         series: [{label: 'y (right)', x: b.mode.s, y: d.map((u) => u[1])}, {label: 'z (high side)', x: b.mode.s, y: d.map((u) => u[2])}]});
     }
   }
