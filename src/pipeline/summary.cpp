@@ -242,9 +242,7 @@ void WriteBuckling(std::ostream& out, const io::Case& c, const analyses::Bucklin
   } else {
     out << fmt::format("buckling: {} × {:.6g} buckles the string, largest compression {} ({})\n", scaled,
                        result.load_factor, Show(c, result.critical_load, Quantity::Force, 6), how);
-  }
-  if (result.critical_wob > 0.0 && !result.lower_bound) {
-    out << fmt::format("  critical WOB {}\n", Show(c, result.critical_wob, Quantity::Force, 6));
+    if (result.critical_wob > 0.0) out << fmt::format("  critical WOB {}\n", Show(c, result.critical_wob, Quantity::Force, 6));
   }
   if (result.sinusoidal.computed) {
     const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;
