@@ -99,21 +99,10 @@ inline constexpr int kEveryAnalysisTimeoutSeconds = 600;
 
 // `drillflex run --keep-finished --no-report` on the case in `directory` (one OpenMP thread).
 inline EveryAnalysisOutcome RunEveryAnalysis(const GeneratedCase& c, const fs::path& directory) {
-  const fs::path case_file = directory / (c.stem + ".yaml");
-  const fs::path output = directory / c.stem;
-  const fs::path log_file = directory / (c.stem + ".log");
-  fs::remove_all(output);
-  std::ofstream(case_file) << c.yaml;
-  const std::string line = fmt::format(
-      "OMP_NUM_THREADS=1 timeout -k 5 {} {} run {} -o {} --keep-finished --no-report > {} 2>&1",
-      kEveryAnalysisTimeoutSeconds, DRILLFLEX_EXE, case_file.string(), output.string(), log_file.string());
   EveryAnalysisOutcome outcome;
-  const auto start = std::chrono::steady_clock::now();
-  RunShell(line, outcome.run);
-  outcome.run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string log = ReadText(log_file);
-  outcome.run.message = LastLine(log);
-  JudgeEveryAnalysis(output, log, outcome);
+  std::string log;
+  outcome.run = RunGeneratedCase(c, directory, "run", "--keep-finished --no-report", kEveryAnalysisTimeoutSeconds, &log);
+  JudgeEveryAnalysis(GeneratedOutput(c, directory, "run"), log, outcome);
   return outcome;
 }
 

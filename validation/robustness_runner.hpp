@@ -174,25 +174,34 @@ inline void RunShell(const std::string& line, RobustnessOutcome& outcome) {
   outcome.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
 }
 
-// `drillflex <command>` on one case file in `directory` (one OpenMP thread: the cases run two at a
-// time on two cores).
+// Where `drillflex <command>` on a generated case writes: its output directory and its log.
+inline fs::path GeneratedOutput(const GeneratedCase& c, const fs::path& directory, const std::string& command) {
+  return directory / (command == "static" ? c.stem : c.stem + "-" + command);
+}
+
+// `drillflex <command> CASE -o OUT <options>` on one case file in `directory` (one OpenMP thread: the
+// cases run two at a time on two cores), killed after `timeout_seconds`; the log in `log` when given.
+// A static run is judged (JudgeStaticRun); the other commands' callers judge their own.
 inline RobustnessOutcome RunGeneratedCase(const GeneratedCase& c, const fs::path& directory,
-                                          const std::string& command = "static") {
+                                          const std::string& command = "static", const std::string& options = "",
+                                          int timeout_seconds = kRobustnessTimeoutSeconds,
+                                          std::string* log = nullptr) {
   const fs::path case_file = directory / (c.stem + ".yaml");
-  const fs::path output = directory / (command == "static" ? c.stem : c.stem + "-" + command);
-  const fs::path log_file = directory / (c.stem + (command == "static" ? "" : "-" + command) + ".log");
+  const fs::path output = GeneratedOutput(c, directory, command);
+  const fs::path log_file = fs::path(output.string() + ".log");
   fs::remove_all(output);
   std::ofstream(case_file) << c.yaml;
   const std::string line =
-      fmt::format("OMP_NUM_THREADS=1 timeout -k 5 {} {} {} {} -o {} > {} 2>&1", kRobustnessTimeoutSeconds,
-                  DRILLFLEX_EXE, command, case_file.string(), output.string(), log_file.string());
+      fmt::format("OMP_NUM_THREADS=1 timeout -k 5 {} {} {} {} -o {} {} > {} 2>&1", timeout_seconds, DRILLFLEX_EXE,
+                  command, case_file.string(), output.string(), options, log_file.string());
   RobustnessOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   RunShell(line, outcome);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string log = ReadText(log_file);
-  outcome.message = LastLine(log);
-  if (command == "static") JudgeStaticRun(output, log, outcome);
+  const std::string text = ReadText(log_file);
+  outcome.message = LastLine(text);
+  if (command == "static") JudgeStaticRun(output, text, outcome);
+  if (log) *log = text;
   return outcome;
 }
 

@@ -52,7 +52,7 @@ void ExpectBucklingRuns(const GeneratedCase& c, const fs::path& directory) {
   const RobustnessOutcome outcome = RunGeneratedCase(c, directory, "buckling");
   ASSERT_EQ(outcome.status, 0) << c.stem << ": " << outcome.message;
   const nlohmann::json results =
-      nlohmann::json::parse(ReadText(directory / (c.stem + "-buckling") / "results.json"), nullptr, false);
+      nlohmann::json::parse(ReadText(GeneratedOutput(c, directory, "buckling") / "results.json"), nullptr, false);
   ASSERT_FALSE(results.is_discarded()) << c.stem;
   const double multiplier = results["buckling"].value("load_factor", -1.0);
   std::cout << fmt::format("{}: buckling load multiplier {:.4f} ({:.2f} s)\n", c.stem, multiplier, outcome.seconds);
@@ -72,7 +72,7 @@ TEST(RobustnessSample, ABhaPressedOntoTheWallHasNoOnsetBelowEightTimesItsWob) {
   const RobustnessOutcome outcome = RunGeneratedCase(c, directory, "buckling");
   ASSERT_EQ(outcome.status, 0) << outcome.message;
   const nlohmann::json results =
-      nlohmann::json::parse(ReadText(directory / (c.stem + "-buckling") / "results.json"), nullptr, false);
+      nlohmann::json::parse(ReadText(GeneratedOutput(c, directory, "buckling") / "results.json"), nullptr, false);
   ASSERT_FALSE(results.is_discarded());
   const nlohmann::json& buckling = results["buckling"];
   EXPECT_EQ(buckling.value("lower_bound", false), true);
