@@ -121,6 +121,9 @@ class BucklingResult(Result):
 
     ``load_factor`` (the loads × it buckle the string), ``critical_load`` (N), ``critical_wob`` (N),
     ``lower_bound`` (True: no onset up to ``load_factor``, which with the loads there is a lower bound),
+    ``buckled_at_case_loads`` (True: the string lies buckled at the case's loads; ``load_factor`` < 1 is
+    the onset found below them), ``onset_above_model`` (True: the pipe above the modelled string
+    reaches Dawson–Paslay's F_sin first, at the model's top),
     ``scaled_wob``, ``about_equilibrium``, ``load_factors``, ``reference_load_factor``,
     ``reference_compression``; the frequency method's ``frequency_method_converged``,
     ``frequency_load_factor``, ``frequency_critical_load``, ``unloaded_frequency_hz`` and

@@ -15,6 +15,8 @@ void BindBucklingResult(py::class_<RunHandle>& run) {
     fields["scaled_wob"] = result.scaled_wob;
     fields["about_equilibrium"] = result.about_equilibrium;
     fields["lower_bound"] = result.lower_bound;
+    fields["buckled_at_case_loads"] = result.buckled_at_case_loads;
+    fields["onset_above_model"] = result.onset_above_model;
     fields["critical_wob"] = result.critical_wob;
     fields["load_factor"] = result.load_factor;
     fields["critical_load"] = result.critical_load;

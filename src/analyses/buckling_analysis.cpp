@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "analyses/static_minimum.hpp"
 #include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
+#include "model/string_above.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
 #include "solvers/linear_solver.hpp"
@@ -47,6 +49,8 @@ class EquilibriumSolver {
   }
 
   bool in_well() const { return in_well_; }
+  // Drops the equilibria found so far (the next starts from the string at rest).
+  void Forget() { found_.clear(); }
   bool scale_wob() const { return scale_wob_; }
   const model::SystemModel& model() const { return built_.system; }
   // The model and its load parameters at multiplier μ (at rest: no friction).
@@ -56,6 +60,30 @@ class EquilibriumSolver {
     load.sliding_mode = model::SlidingMode::kVelocities;
     if (scale_wob_) load.weight_on_bit = multiplier * input_.operation.weight_on_bit;
     return load;
+  }
+
+  // The multiplier at which the pipe above the model (model/string_above.hpp) reaches its own
+  // sinusoidal load F_sin, its compression growing with the load: ∞ without one, or where it
+  // stands at every multiplier up to 1000 (or lies buckled already at 1/1000 of the loads).
+  double PipeAboveOnset() const {
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    if (built_.string_above_element < 0) return kInfinity;
+    const auto& above =
+        dynamic_cast<const model::StringAboveElement&>(*built_.system.elements()[built_.string_above_element]);
+    auto margin = [&](double multiplier) { return above.BucklingMargin(LoadsAt(multiplier)); };
+    double low = 1e-3;
+    if (!(margin(low) > 0.0)) return kInfinity;
+    double high = low;
+    while (margin(high) > 0.0) {
+      low = high;
+      high *= 2.0;
+      if (high > 1e3) return kInfinity;
+    }
+    for (int i = 0; i < 60 && high - low > 1e-10 * high; ++i) {
+      const double middle = 0.5 * (low + high);
+      (margin(middle) > 0.0 ? low : high) = middle;
+    }
+    return high;
   }
 
   Equilibrium At(double multiplier) {
@@ -204,10 +232,16 @@ void SolveEigenproblem(EquilibriumSolver& solver, const BucklingSettings& settin
 // load is singular). Samples: μ = 1, then 1 + kFirstStep, then steps toward the root of ω²(μ)
 // extrapolated through the three samples nearest it (ExtrapolateRoot), each kApproach of the way,
 // until the estimate repeats to kAboutTolerance. While ω² does not yet fall (a string on the wall
-// pressed harder by the load) the samples march up (kMarch) first. ω² is of the mode whose kinetic energy is mostly
-// lateral (SplitKineticEnergy), with the bodies' turns about their own axes held (the string's twist,
-// held only by the rotary table, is no buckling mode). Each equilibrium is warm-started from the
-// nearest one (the string stays in the same state of contact up to the onset).
+// pressed harder by the load) the samples march up (kMarch) first. A string that lies buckled at the
+// case's loads (ω² ≤ 0 there, or a frequency that rises all the way up the march, or until it breaks,
+// from an equilibrium compressed beyond Dawson–Paslay's load: the post-buckled string stiffens as it is
+// pressed) has its onset below them: the search starts again from a fraction of the loads on a fresh
+// path (OnsetSearch::FromBelow). The pipe above the model (model/string_above.hpp) caps the search
+// where its own compression reaches F_sin (OnsetSearch::AtCeiling).
+// ω² is of the mode whose kinetic energy is mostly lateral (SplitKineticEnergy), with the bodies'
+// turns about their own axes held (the string's twist, held only by the rotary table, is no buckling
+// mode). Each equilibrium is warm-started from the nearest one (the string stays in the same state of
+// contact up to the onset).
 double ExtrapolateRoot(std::vector<std::pair<double, double>> points, double estimate);
 
 constexpr double kFirstStep = 0.05;
@@ -216,6 +250,10 @@ constexpr double kAboutTolerance = 1e-3;
 constexpr int kAboutSamples = 14;
 // Where to look next while ω² does not yet fall (× the loads).
 constexpr std::array<double, 6> kMarch = {1.5, 2.0, 3.0, 4.0, 6.0, 8.0};
+// Below the loads of a string buckled at them: the first sample at this fraction of the multiplier
+// where Dawson–Paslay's check first reaches F_sin, then the march at these fractions of the way to 1.
+constexpr double kBelowStart = 0.5;
+constexpr std::array<double, 4> kBelowMarch = {0.25, 0.5, 0.75, 0.9};
 
 struct LateralSample {
   double multiplier = 0.0;
@@ -253,102 +291,222 @@ bool SampleLateralMode(EquilibriumSolver& solver, double multiplier, LateralSamp
   return false;
 }
 
-void SolveAboutEquilibrium(EquilibriumSolver& solver, BucklingResult& result) {
-  std::vector<LateralSample> samples;
-  auto take = [&](double multiplier) {
+// The samples of one path of equilibria and the onset found along it (header of this part).
+class OnsetSearch {
+ public:
+  OnsetSearch(EquilibriumSolver& solver, BucklingResult& result)
+      : solver_(solver), result_(result), ceiling_(solver.PipeAboveOnset()) {}
+
+  // From the case's loads upward; `screen` (computed or not) tells a string buckled at them.
+  void FromCaseLoads(const SinusoidalBucklingScreen& screen) {
+    if (!Take(1.0)) {
+      throw SolverError("buckling: no stable equilibrium (or no lateral mode about it) at the case's loads");
+    }
+    result_.reference_compression = samples_.front().compression;
+    result_.unloaded_frequency_hz = result_.frequency_table.front().frequency_hz;
+    if (samples_.front().eigenvalue <= 0.0) return FromBelow(screen, "its lowest lateral natural frequency is not positive");
+    if (ceiling_ <= 1.0) {
+      return FromBelow(screen, "the pipe above the model is compressed beyond its sinusoidal load F_sin");
+    }
+    if (ceiling_ <= 1.0 + kFirstStep) return Approach(1.0, ceiling_, ceiling_);
+    if (!Take(1.0 + kFirstStep)) throw SolverError("buckling: no equilibrium just above the case's loads");
+    if (samples_.back().eigenvalue <= 0.0) return Approach(1.0, 1.0 + kFirstStep, TrendRoot());
+    // A string lying on the wall may first stiffen as the load grows (its contacts press harder):
+    // march up until ω² falls.
+    for (const double multiplier : kMarch) {
+      if (std::isfinite(TrendRoot())) break;
+      if (multiplier >= ceiling_) return AtCeiling();  // the pipe above buckles first
+      if (!Take(multiplier)) break;
+      if (samples_.back().eigenvalue <= 0.0) {
+        const double below = samples_[samples_.size() - 2].multiplier;
+        return Approach(below, multiplier, TrendRoot());
+      }
+    }
+    const double below = samples_.back().multiplier;  // the largest multiplier sampled, ω² > 0
+    const double estimate = TrendRoot();
+    if (std::isfinite(estimate) && estimate > below) return Approach(below, kInfinity, estimate);
+    // The frequency rose all the way (or the march broke) from an equilibrium compressed beyond
+    // Dawson–Paslay's load: the post-buckled string stiffens as it is pressed, and the onset lies below.
+    if (screen.computed && screen.load_factor < 1.0) {
+      return FromBelow(screen, fmt::format("its compression {:.6g} N at MD {:.6g} m exceeds Dawson–Paslay's sinusoidal "
+                                           "load{} ({:.6g} N), and its lowest lateral frequency rises with the load up "
+                                           "to × {:g}",
+                                           screen.compression, screen.md,
+                                           screen.sinusoidal_load > 0.0 ? "" : " of a vertical hole",
+                                           screen.sinusoidal_load, below));
+    }
+    // Every multiplier of the march sampled, each equilibrium stable, and ω² not falling at the end: no
+    // onset up to it, a finished answer (the largest multiplier is a lower bound; BucklingResult::lower_bound).
+    if (below == kMarch.back()) return LowerBound();
+    throw SolverError(fmt::format("buckling: the string's lowest lateral frequency does not fall as the {} grows from "
+                                  "the case's loads up to × {:g} ({:.6g} Hz at × 1, {:.6g} Hz at × {:g}), and the next "
+                                  "step found no equilibrium or no lateral mode; give analyses.buckling.scale: {}",
+                                  solver_.scale_wob() ? "WOB" : "load", below, result_.frequency_table[0].frequency_hz,
+                                  result_.frequency_table.back().frequency_hz, below,
+                                  solver_.scale_wob() ? "all" : "wob (with a WOB)"));
+  }
+
+ private:
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+  bool Take(double multiplier) {
     LateralSample sample;
-    if (!SampleLateralMode(solver, multiplier, sample)) return false;
-    samples.push_back(std::move(sample));
+    if (!SampleLateralMode(solver_, multiplier, sample)) return false;
+    samples_.push_back(std::move(sample));
     FrequencyLoadPoint point;
     point.load_factor = multiplier;
-    point.compression = samples.back().compression;
-    point.frequency_hz = std::sqrt(std::max(samples.back().eigenvalue, 0.0)) / (2.0 * kPi);
-    result.frequency_table.push_back(point);
+    point.compression = samples_.back().compression;
+    point.frequency_hz = std::sqrt(std::max(samples_.back().eigenvalue, 0.0)) / (2.0 * kPi);
+    result_.frequency_table.push_back(point);
     return true;
-  };
-  if (!take(1.0)) throw SolverError("buckling: no stable equilibrium (or no lateral mode about it) at the case's loads");
-  if (samples.front().eigenvalue <= 0.0) {
-    throw SolverError("buckling: the string is already unstable at the case's loads (its lowest lateral natural "
-                      "frequency is not positive)");
   }
-  result.reference_compression = samples.front().compression;
-  result.unloaded_frequency_hz = result.frequency_table.front().frequency_hz;
-  if (!take(1.0 + kFirstStep)) throw SolverError("buckling: no equilibrium just above the case's loads");
-  auto points = [&] {
-    std::vector<std::pair<double, double>> xy;
-    for (const LateralSample& sample : samples) xy.emplace_back(sample.multiplier, sample.eigenvalue);
-    return xy;
-  };
-  // The secant root of the last two samples: where the local trend of ω² reaches zero.
-  auto trend_root = [&] {
-    const LateralSample& a = samples[samples.size() - 2];
-    const LateralSample& b = samples.back();
+
+  // The secant root of the last two samples: where the local trend of ω² reaches zero (NaN while it
+  // does not fall).
+  double TrendRoot() const {
+    if (samples_.size() < 2) return std::nan("");
+    const LateralSample& a = samples_[samples_.size() - 2];
+    const LateralSample& b = samples_.back();
     if (!(b.eigenvalue < a.eigenvalue)) return std::nan("");
     return b.multiplier - b.eigenvalue * (b.multiplier - a.multiplier) / (b.eigenvalue - a.eigenvalue);
-  };
-  // A string lying on the wall may first stiffen as the load grows (its contacts press harder): march
-  // up until ω² falls.
-  for (const double multiplier : kMarch) {
-    if (std::isfinite(trend_root())) break;
-    if (!take(multiplier) || samples.back().eigenvalue <= 0.0) break;
   }
-  double below = samples.back().multiplier;  // the largest multiplier sampled with ω² > 0
-  double above = std::numeric_limits<double>::infinity();  // the smallest one past the onset
-  double estimate = trend_root();
-  // Every multiplier of the march sampled, each equilibrium stable, and ω² not falling at the end: no
-  // onset up to it, a finished answer (the largest multiplier is a lower bound; BucklingResult::lower_bound).
-  const bool stable_throughout = samples.back().multiplier == kMarch.back() && samples.back().eigenvalue > 0.0;
-  if ((!(estimate > below) || !std::isfinite(estimate)) && stable_throughout) {
-    const LateralSample& last = samples.back();
-    result.lower_bound = true;
-    result.load_factor = last.multiplier;
-    result.load_factors = {last.multiplier};
-    result.reference_load_factor = last.multiplier;
-    result.frequency_load_factor = last.multiplier;
-    result.critical_load = result.frequency_critical_load = last.compression;
-    FillBuckledMode(solver.ModelAt(last.multiplier), last.q, last.mode, result);
-    return;
-  }
-  if (!(estimate > below) || !std::isfinite(estimate)) {
-    throw SolverError(fmt::format("buckling: the string's lowest lateral frequency does not fall as the {} grows from "
-                                  "the case's loads up to × {:g} ({:.6g} Hz at × 1, {:.6g} Hz at × {:g}): the loads "
-                                  "stiffen it, or it is buckled already",
-                                  solver.scale_wob() ? "WOB" : "load", samples.back().multiplier,
-                                  result.frequency_table[0].frequency_hz, result.frequency_table.back().frequency_hz,
-                                  samples.back().multiplier));
-  }
-  for (int taken = 2; taken < kAboutSamples; ++taken) {
-    const double target = std::min(below + kApproach * (estimate - below), 0.5 * (below + above));
-    const double last_eigenvalue = samples.back().eigenvalue;
-    if (!take(target) || samples.back().eigenvalue <= 0.0 || samples.back().eigenvalue > last_eigenvalue) {
-      // Past the onset (no equilibrium, or one that lies buckled and stiffer): the root is below it.
-      if (samples.back().multiplier == target) samples.pop_back();
-      above = target;
-      continue;
+
+  std::vector<std::pair<double, double>> Points() const {
+    std::vector<std::pair<double, double>> xy;
+    for (const LateralSample& sample : samples_) {
+      if (sample.eigenvalue > 0.0) xy.emplace_back(sample.multiplier, sample.eigenvalue);
     }
-    below = target;
-    const double next = ExtrapolateRoot(points(), estimate);
-    const bool settled = std::abs(next - estimate) <= kAboutTolerance * estimate && next - below < 0.05 * next;
-    if (std::isfinite(next) && next > below) estimate = std::min(next, above);
-    if (settled) {
-      result.frequency_method_converged = true;
-      break;
-    }
+    return xy;
   }
-  const LateralSample& nearest = samples.back();
-  result.load_factor = estimate;
-  result.load_factors = {estimate};
-  result.reference_load_factor = nearest.multiplier;
-  result.frequency_load_factor = estimate;
-  // The compression at the onset, extrapolated along the last two samples (prebuckling is linear).
-  const LateralSample& previous = samples[samples.size() - 2];
-  const double slope = (nearest.compression - previous.compression) / (nearest.multiplier - previous.multiplier);
-  result.critical_load = nearest.compression + slope * (estimate - nearest.multiplier);
-  result.frequency_critical_load = result.critical_load;
-  FillBuckledMode(solver.ModelAt(nearest.multiplier), nearest.q, nearest.mode, result);
-  std::sort(result.frequency_table.begin(), result.frequency_table.end(),
-            [](const auto& a, const auto& b) { return a.load_factor < b.load_factor; });
-}
+
+  // The string lies buckled at the case's loads (`why`): a fresh path of equilibria from
+  // kBelowStart × the multiplier where Dawson–Paslay's check first reaches F_sin (the WOB scaled: ≥ 0,
+  // every load: ≥ 0.1, below which nothing holds the string to the wall), marching toward 1 until
+  // ω² falls, then the approach below 1.
+  void FromBelow(const SinusoidalBucklingScreen& screen, const std::string& why) {
+    const double top = std::min(1.0, ceiling_);  // a multiplier past the onset
+    const double floor = solver_.scale_wob() ? 0.0 : 0.1;
+    const double start = std::min(
+        std::clamp(screen.computed ? kBelowStart * screen.load_factor : kBelowStart, floor, kBelowStart), kBelowStart * top);
+    auto fail = [&](const std::string& what) {
+      return SolverError(fmt::format("buckling: the string lies buckled already at the case's loads ({}), and {}; "
+                                     "lower the WOB to below the onset",
+                                     why, what));
+    };
+    solver_.Forget();  // the equilibria found so far lie buckled
+    samples_.clear();
+    result_.buckled_at_case_loads = true;
+    if (!Take(start) || samples_.back().eigenvalue <= 0.0) {
+      throw fail(fmt::format("no stable equilibrium was found at × {:.3g} of the {}", start,
+                             solver_.scale_wob() ? "WOB" : "loads"));
+    }
+    double below = start;
+    for (const double fraction : kBelowMarch) {
+      const double multiplier = start + fraction * (top - start);
+      const double last = samples_.back().eigenvalue;
+      if (!Take(multiplier) || samples_.back().eigenvalue <= 0.0 || samples_.back().eigenvalue > last) {
+        // Past the onset: no equilibrium, an unstable one, or one lying buckled and stiffer.
+        if (!samples_.empty() && samples_.back().multiplier == multiplier) samples_.pop_back();
+        const double estimate = TrendRoot();
+        return Approach(below, multiplier, std::isfinite(estimate) && estimate > below ? estimate : multiplier);
+      }
+      below = multiplier;
+      if (std::isfinite(TrendRoot()) && TrendRoot() > below && TrendRoot() < top) break;
+    }
+    const double estimate = TrendRoot();
+    if (!std::isfinite(estimate) || !(estimate > below)) {
+      if (ceiling_ <= 1.0) return AtCeiling();  // the model stands up to where the pipe above buckles
+      throw fail(fmt::format("the lowest lateral frequency does not fall on the way up from × {:.3g} to × {:.3g}",
+                             start, below));
+    }
+    Approach(below, top, estimate);
+  }
+
+  // The onset between `below` (ω² > 0 there) and `above` (a multiplier past it, or ∞), from the
+  // first estimate: each step kApproach of the way to it (at most halfway to `above`), each estimate
+  // extrapolated through the three samples nearest it.
+  void Approach(double below, double above, double estimate) {
+    above = std::min(above, ceiling_);
+    estimate = std::min(estimate, above);
+    // The samples past the onset are no points of the stable branch's ω²(μ).
+    std::erase_if(samples_, [](const LateralSample& sample) { return !(sample.eigenvalue > 0.0); });
+    for (int taken = 2; taken < kAboutSamples; ++taken) {
+      const double target = std::min(below + kApproach * (estimate - below), 0.5 * (below + above));
+      const double last_eigenvalue = samples_.back().eigenvalue;  // at `below`
+      if (!Take(target) || samples_.back().eigenvalue <= 0.0 || samples_.back().eigenvalue > last_eigenvalue) {
+        // Past the onset (no equilibrium, or one that lies buckled and stiffer): the root is below it.
+        if (samples_.back().multiplier == target) samples_.pop_back();
+        above = target;
+        continue;
+      }
+      below = target;
+      const std::vector<std::pair<double, double>> points = Points();
+      const double next = points.size() >= 2 ? ExtrapolateRoot(points, estimate) : std::nan("");
+      const bool settled = std::abs(next - estimate) <= kAboutTolerance * estimate && next - below < 0.05 * next;
+      // The model's own onset lies at or beyond where the pipe above buckles.
+      if (std::isfinite(next) && next >= ceiling_ * (1.0 - kAboutTolerance)) return AtCeiling();
+      if (std::isfinite(next) && next > below) estimate = std::min(next, above);
+      if (settled) {
+        result_.frequency_method_converged = true;
+        break;
+      }
+    }
+    // The nearest stable sample below the onset (samples_ ascend in μ, the last one at `below`).
+    const std::size_t nearest = samples_.size() - 1;
+    result_.load_factor = estimate;
+    result_.load_factors = {estimate};
+    result_.reference_load_factor = samples_[nearest].multiplier;
+    result_.frequency_load_factor = estimate;
+    // The compression at the onset, extrapolated along the nearest two samples (prebuckling is linear).
+    const LateralSample& near = samples_[nearest];
+    const LateralSample& other = samples_[nearest > 0 ? nearest - 1 : nearest];
+    const double slope = other.multiplier != near.multiplier
+                             ? (near.compression - other.compression) / (near.multiplier - other.multiplier)
+                             : 0.0;
+    result_.critical_load = near.compression + slope * (estimate - near.multiplier);
+    result_.frequency_critical_load = result_.critical_load;
+    FillBuckledMode(solver_.ModelAt(near.multiplier), near.q, near.mode, result_);
+    std::sort(result_.frequency_table.begin(), result_.frequency_table.end(),
+              [](const auto& a, const auto& b) { return a.load_factor < b.load_factor; });
+  }
+
+  // The onset is where the pipe above the model reaches its sinusoidal load (ceiling_), the model
+  // standing up to it: the compression there extrapolated along the nearest two stable samples.
+  void AtCeiling() {
+    std::erase_if(samples_, [](const LateralSample& sample) { return !(sample.eigenvalue > 0.0); });
+    if (samples_.empty()) throw LogicError("buckling: no stable sample below the pipe above's onset");
+    const LateralSample& near = samples_.back();
+    const LateralSample& other = samples_[samples_.size() > 1 ? samples_.size() - 2 : 0];
+    const double slope = other.multiplier != near.multiplier
+                             ? (near.compression - other.compression) / (near.multiplier - other.multiplier)
+                             : 0.0;
+    result_.onset_above_model = true;
+    result_.frequency_method_converged = true;
+    result_.load_factor = result_.frequency_load_factor = ceiling_;
+    result_.load_factors = {ceiling_};
+    result_.reference_load_factor = near.multiplier;
+    result_.critical_load = result_.frequency_critical_load = near.compression + slope * (ceiling_ - near.multiplier);
+    FillBuckledMode(solver_.ModelAt(near.multiplier), near.q, near.mode, result_);
+    std::sort(result_.frequency_table.begin(), result_.frequency_table.end(),
+              [](const auto& a, const auto& b) { return a.load_factor < b.load_factor; });
+  }
+
+  void LowerBound() {
+    const LateralSample& last = samples_.back();
+    result_.lower_bound = true;
+    result_.load_factor = last.multiplier;
+    result_.load_factors = {last.multiplier};
+    result_.reference_load_factor = last.multiplier;
+    result_.frequency_load_factor = last.multiplier;
+    result_.critical_load = result_.frequency_critical_load = last.compression;
+    FillBuckledMode(solver_.ModelAt(last.multiplier), last.q, last.mode, result_);
+  }
+
+  EquilibriumSolver& solver_;
+  BucklingResult& result_;
+  const double ceiling_;  // the multiplier at which the pipe above buckles (∞: none)
+  std::vector<LateralSample> samples_;
+};
 
 // Dawson–Paslay's and Chen's loads along the case's equilibrium q (λ = 1) in a well (header).
 SinusoidalBucklingScreen ScreenSinusoidalBuckling(const model::ModelInput& input, const model::BuiltModel& built,
@@ -497,24 +655,11 @@ BucklingResult RunBuckling(const model::ModelInput& input, const model::BuiltMod
   for (const model::Load& load : input.loads) torque = torque || load.moment.x() != 0.0 || load.moment_per_length.x() != 0.0;
   if (solver.in_well() || scale_wob || torque) {
     result.about_equilibrium = true;
-    SolveAboutEquilibrium(solver, result);
-    if (solver.in_well()) result.sinusoidal = ScreenSinusoidalBuckling(input, built, solver.At(1.0).q, scale_wob);
-    const SinusoidalBucklingScreen& screen = result.sinusoidal;
-    if (result.lower_bound && screen.computed && screen.load_factor < 1.0) {
-      // A frequency that rises from an equilibrium lying buckled already (a string compressed beyond
-      // Dawson–Paslay's load, or in a vertical hole where nothing holds it straight: Lubinski) says
-      // the post-buckled string stiffens, not that it stands: no lower bound then.
-      throw SolverError(fmt::format(
-          "buckling: the string lies buckled already at the case's loads: its compression {:.6g} N at MD {:.6g} m "
-          "exceeds {} ({:.6g} N), and its lowest lateral frequency about that equilibrium rises with the load ({:.4g} Hz "
-          "at × 1, {:.4g} Hz at × {:g}); lower the WOB to find the onset",
-          screen.compression, screen.md,
-          screen.sinusoidal_load > 0.0 ? "Dawson–Paslay's sinusoidal buckling load"
-                                       : "Dawson–Paslay's sinusoidal buckling load of a vertical hole, where no weight holds "
-                                         "the string to a side",
-          screen.sinusoidal_load, result.frequency_table.front().frequency_hz, result.frequency_table.back().frequency_hz,
-          result.load_factor));
+    if (solver.in_well()) {
+      const Equilibrium loaded = solver.At(1.0);
+      if (loaded.converged) result.sinusoidal = ScreenSinusoidalBuckling(input, built, loaded.q, scale_wob);
     }
+    OnsetSearch(solver, result).FromCaseLoads(result.sinusoidal);
   } else {
     SolveEigenproblem(solver, settings, result);
     if (settings.frequency_method) SolveByFrequencies(solver, settings, result);

@@ -75,6 +75,13 @@ struct BucklingResult {
   // load_factor, critical_load and critical_wob are lower bounds (the loads at that multiplier), the
   // mode the lowest lateral mode there, and frequency_method_converged false.
   bool lower_bound = false;
+  // The frequency route found the string buckled at the case's loads (ω² ≤ 0 there, or compressed
+  // beyond Dawson–Paslay's load with a frequency that rises as the post-buckled string is pressed) and
+  // searched for the onset below them: load_factor < 1.
+  bool buckled_at_case_loads = false;
+  // The onset is the pipe above the model reaching Dawson–Paslay's F_sin at the model's top
+  // (model/string_above.hpp): the modelled string stands up to it.
+  bool onset_above_model = false;
   double critical_wob = 0.0;      // the WOB at buckling, N: WOB × μ (0 without a WOB)
   // (a) the eigenproblem
   double load_factor = 0.0;       // μ_cr: the case's loads × μ_cr buckle the string

@@ -282,6 +282,10 @@ void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, R
   if (result.critical_wob > 0.0) files.json()["buckling"]["critical_wob"] = out(result.critical_wob, Quantity::Force);
   // No onset up to load_factor (analyses::BucklingResult::lower_bound): the loads there are lower bounds.
   if (result.lower_bound) files.json()["buckling"]["lower_bound"] = true;
+  // The string lies buckled at the case's loads; the onset was searched below them (load_factor < 1).
+  if (result.buckled_at_case_loads) files.json()["buckling"]["buckled_at_case_loads"] = true;
+  // The onset is the pipe above the model reaching F_sin (model/string_above.hpp).
+  if (result.onset_above_model) files.json()["buckling"]["onset_above_model"] = true;
   if (result.sinusoidal.computed) {
     const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;
     files.json()["buckling"]["dawson_paslay"] = {

@@ -54,7 +54,7 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
   node.ExpectMap("the model settings");
   node.AllowOnlyKeys({"body_length", "elements_per_body", "modes_per_body", "coupling_factor",
                       "structural_damping", "contact", "mass", "beam", "rotary_inertia",
-                      "bending_stiffness_factor"});
+                      "bending_stiffness_factor", "top"});
   model::ModelSettings settings;
   if (node.IsNull()) return settings;
   settings.body_length = node.OptionalPositive("body_length", Quantity::Length).value_or(settings.body_length);
@@ -90,6 +90,12 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
                                           .value_or(settings.bending_stiffness_factor);
   if (settings.bending_stiffness_factor > 1e3) {
     node.Child("bending_stiffness_factor").Fail("expected a factor of the sections' bending stiffness EI, > 0 and <= 1000");
+  }
+  if (const auto top = node.OptionalChild("top")) {
+    const std::string kind = top->AsString();
+    if (kind == "string_above") settings.top = model::TopCondition::StringAbove;
+    else if (kind == "free") settings.top = model::TopCondition::Free;
+    else top->Fail(fmt::format("expected 'string_above' or 'free', got '{}'", kind));
   }
   if (const auto contact = node.OptionalChild("contact")) {
     contact->ExpectMap("the contact settings {stiffness, damping_ratio, friction}");

@@ -15,6 +15,7 @@
 #include "model/nodal_loads.hpp"
 #include "model/placement.hpp"
 #include "model/spring_elements.hpp"
+#include "model/string_above.hpp"
 #include "model/wall_contact.hpp"
 #include "well/hole.hpp"
 
@@ -241,19 +242,22 @@ double StringAboveWeight(const ModelInput& input) {
   return BuoyedWeightPerLength(input.string.components.back(), input) * tvd;
 }
 
-double WeightOnBitFromHookLoad(const ModelInput& input, double hook_load) {
-  double weight = StringAboveWeight(input);
-  if (input.trajectory) {
-    // Each component's weight along the hole: w (TVD at its bottom − TVD at its top).
-    double md = input.bit_md;
-    for (const Component& component : input.string.components) {
-      const double length = component.length * component.count;
-      weight += BuoyedWeightPerLength(component, input) *
-                (input.trajectory->Position(md).z() - input.trajectory->Position(md - length).z());
-      md -= length;
-    }
+double ModelledStringAxialWeight(const ModelInput& input) {
+  if (!input.trajectory) return 0.0;
+  double weight = 0.0;
+  // Each component's weight along the hole: w (TVD at its bottom − TVD at its top).
+  double md = input.bit_md;
+  for (const Component& component : input.string.components) {
+    const double length = component.length * component.count;
+    weight += BuoyedWeightPerLength(component, input) *
+              (input.trajectory->Position(md).z() - input.trajectory->Position(md - length).z());
+    md -= length;
   }
-  return weight - hook_load;
+  return weight;
+}
+
+double WeightOnBitFromHookLoad(const ModelInput& input, double hook_load) {
+  return StringAboveWeight(input) + ModelledStringAxialWeight(input) - hook_load;
 }
 
 // The component at a distance s from the bit; at a connection the lower one, except on top of
@@ -388,6 +392,42 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     const bool holds_bit = std::pair{b, node} == FindNodeAt(placed, 0.0);
     elements.push_back(std::make_unique<SupportElement>(&body, node, position, frame, stiffness,
                                                         SpringDamping(stiffness, ElementInertia(body)), holds_bit));
+  }
+
+  // The pipe above the top (model/string_above.hpp), where the default supports leave the top free to
+  // lie on the wall.
+  int string_above_element = -1;
+  if (input.trajectory && !input.hole.empty() && input.supports.empty() &&
+      input.settings.top == TopCondition::StringAbove) {
+    const Body& body = placed[top.first];
+    const Mat3 frame = body.reference_orientation.toRotationMatrix();
+    const Vec3 position = body.reference_position + frame * body.reduced->node_positions[top.second];
+    const Component& component = input.string.components.back();
+    const double top_md = input.bit_md - length;
+    StringAboveParameters above;
+    above.bending_rigidity = body.bending_rigidity;
+    above.weight_per_length = BuoyedWeightPerLength(component, input);
+    // Gravity across the hole and the hole's curvature, in the top's string frame (y, z).
+    const Vec3 gravity(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]);
+    const Vec3 curvature = input.trajectory->Curvature(top_md);
+    above.gravity_across = Eigen::Vector2d(frame.col(1).dot(gravity), frame.col(2).dot(gravity));
+    above.curvature = Eigen::Vector2d(frame.col(1).dot(curvature), frame.col(2).dot(curvature));
+    const double joint_diameter = component.joint_diameter.value_or(component.outer_diameter);
+    above.clearance = 0.5 * (well::HoleProfile(input.hole).Diameter(top_md) - joint_diameter);
+    above.friction = {input.settings.contact.axial_friction.value_or(input.settings.contact.friction),
+                      input.settings.contact.friction};
+    above.contact_radius = 0.5 * joint_diameter;
+    above.regularization_velocity =
+        input.settings.contact.friction_velocity.value_or(kFrictionRegularizationSpin * above.contact_radius);
+    above.sliding = input.static_sliding;
+    // A block holding a hook load (its target at the model's top: analyses::TransientModelInput).
+    if (input.block && input.block->mode == BlockMode::HookLoad) above.top_tension = input.block->setting.target;
+    above.axial_weight = ModelledStringAxialWeight(input);
+    // A case that gives the surface hook load: the top's balance takes the WOB it leaves.
+    above.weight_on_bit = input.operation.hook_load ? WeightOnBitFromHookLoad(input, *input.operation.hook_load)
+                                                    : input.operation.weight_on_bit;
+    string_above_element = static_cast<int>(elements.size());
+    elements.push_back(std::make_unique<StringAboveElement>(&body, top.second, position, frame, above));
   }
 
   int top_drive_element = -1, block_element = -1;
@@ -551,7 +591,8 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   system.set_force_scale(force_scale);
   return BuiltModel{std::move(system),   std::move(support_elements), std::move(contact_elements),
                     top_drive_element,   block_element,               force_scale,
-                    bit_rock_element,    bit_bottom_element,          bit_side_element};
+                    bit_rock_element,    bit_bottom_element,          bit_side_element,
+                    string_above_element};
 }
 
 }  // namespace drillflex::model

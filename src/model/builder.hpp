@@ -80,6 +80,10 @@ double BuoyedWeightPerLength(const Component& component, const ModelInput& input
 // trajectory.
 double StringAboveWeight(const ModelInput& input);
 
+// The buoyed weight along the hole of the modelled string, N: Σ w (TVD at its bottom − TVD at its
+// top) over its components. 0 without a trajectory.
+double ModelledStringAxialWeight(const ModelInput& input);
+
 // The WOB a surface hook load leaves on the bit, N: the buoyed weight along the hole of the modelled
 // string (Σ w ΔTVD over its components) and of the string above (StringAboveWeight), less the hook
 // load. Frictionless soft string: in the static model a string at rest carries no friction and a
@@ -114,6 +118,7 @@ struct BuiltModel {
   int bit_rock_element = -1;          // element index of the bit-rock interaction (−1: none)
   int bit_bottom_element = -1;        // element index of the bit's bottom contact (−1: none)
   int bit_side_element = -1;          // element index of the bit's side cutting (−1: none)
+  int string_above_element = -1;      // element index of the pipe above the top (−1: none)
 };
 
 // The wall contacts' friction regularization velocity v_ε (method.md §6: below it the friction is

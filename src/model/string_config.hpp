@@ -78,6 +78,9 @@ struct ContactSettings {
 
 enum class MassKind { Consistent, Lumped };
 enum class BeamTheory { EulerBernoulli, Timoshenko };
+// What holds the top of a string in a well sideways when the case gives no supports: the pipe above
+// it (model/string_above.hpp), or nothing (free to move sideways and to tilt, lying on the wall).
+enum class TopCondition { StringAbove, Free };
 
 struct ModelSettings {
   double body_length = 3.0;      // m, longest flexible body
@@ -92,6 +95,7 @@ struct ModelSettings {
   // Multiplies every section's bending stiffness E I (not E A, G J or the inertia): the soft-string
   // limit (EI → 0) and sensitivity studies; 1, the sections' own.
   double bending_stiffness_factor = 1.0;
+  TopCondition top = TopCondition::StringAbove;
 };
 
 // Degrees of freedom in the string frame: x along the string (up-hole), y right, z high side.

@@ -243,6 +243,15 @@ void WriteBuckling(std::ostream& out, const io::Case& c, const analyses::Bucklin
     out << fmt::format("buckling: {} × {:.6g} buckles the string, largest compression {} ({})\n", scaled,
                        result.load_factor, Show(c, result.critical_load, Quantity::Force, 6), how);
     if (result.critical_wob > 0.0) out << fmt::format("  critical WOB {}\n", Show(c, result.critical_wob, Quantity::Force, 6));
+    if (result.onset_above_model) {
+      out << "  the pipe above the modelled string buckles first: its compression at the model's top reaches "
+             "Dawson-Paslay's sinusoidal load there, the modelled string standing\n";
+    }
+    if (result.buckled_at_case_loads) {
+      out << fmt::format("  the string lies buckled at the case's loads: the onset was searched below them, from {} × "
+                         "{:.3g}\n",
+                         scaled, result.frequency_table.empty() ? 0.0 : result.frequency_table.front().load_factor);
+    }
   }
   if (result.sinusoidal.computed) {
     const analyses::SinusoidalBucklingScreen& screen = result.sinusoidal;

@@ -106,9 +106,11 @@ TEST(LoadParameters, TheBlockIsTheModelRebuiltWithItsValues) {
 }
 
 // The couplings' factor s scales their force and energy by s; the bit's support factor its
-// reaction; the weight factor the weight group alone.
+// reaction; the weight factor the weight group alone (with the top free: the pipe above the model,
+// model/string_above.hpp, stiffens with its own weight and the top's tension, not linearly).
 TEST(LoadParameters, FactorsScaleWhatTheyName) {
   model::ModelInput input = testing::KickOffToTheSouth(2);
+  input.settings.top = model::TopCondition::Free;
   cms::ReductionCache cache;
   const model::BuiltModel built = model::BuildSystemModel(input, cache);
   const model::SystemModel& system = built.system;

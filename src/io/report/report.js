@@ -634,6 +634,8 @@
                value(b.critical_load, U.force, 'buckling.critical_load'), ` (now ${num(b.reference_compression, 5)} ${U.force})`);
       if (b.critical_wob !== undefined) p.append(', a critical WOB of ', value(b.critical_wob, U.force, 'buckling.critical_wob'));
       p.append(b.method ? ` (${b.method}).` : '.');
+      if (b.onset_above_model) p.append(' The pipe above the modelled string buckles first: its compression at the model\'s top reaches Dawson–Paslay\'s sinusoidal load there.');
+      if (b.buckled_at_case_loads) p.append(' The string lies buckled at the case\'s loads: the onset was found below them, on a path of equilibria from a fraction of them.');
     }
     s.appendChild(p);
     if (b.frequency_method && !b.frequency_method.converged && !b.lower_bound) {
