@@ -1,6 +1,6 @@
 // CI's look at the robustness of the analyses (issues 19 and 33): every tenth case of each of the two
 // generators of validation/robustness_test.cpp (20 + 20 cases, two at a time on one thread each:
-// about four and a half minutes on 2 cores), each with the five analyses of validation/every_analysis.hpp
+// about a minute and a half on 2 cores), each with the five analyses of validation/every_analysis.hpp
 // through `drillflex run --keep-finished`. Every sampled case's static must converge, with a finite
 // results.json, static.csv and bit report, and every analysis must finish on all but
 // kSampleFailuresAllowed of the 40 (validation/every_analysis_test.cpp, label `slow`, runs the 2 × 200);
@@ -20,10 +20,10 @@ fs::path SampleDirectory(const char* name) {
   return fs::path(DRILLFLEX_BINARY_DIR) / "validation-results" / "robustness-sample" / name;
 }
 
-// The analyses of the 40 sampled cases that may not finish (each named with its reason): the buckling
-// of case-130, whose BHA lies buckled already at the case's loads (77 kN of compression in the vertical
-// section above the kick-off; docs/validation.md "Every analysis on every BHA").
-constexpr int kSampleFailuresAllowed = 1;
+// The analyses of the 40 sampled cases that may not finish (each named with its reason): none (99.5 %
+// of 40 rounds to all of them; case-130, whose BHA lies buckled at the case's loads, has its onset
+// found below them: docs/validation.md "Every analysis on every BHA").
+constexpr int kSampleFailuresAllowed = 0;
 
 void ExpectEveryAnalysisRuns(const std::vector<GeneratedCase>& cases, const char* name, int& failures) {
   const EveryAnalysisSummary summary = RunEveryAnalysisCases(cases, SampleDirectory(name));

@@ -313,9 +313,13 @@ class OnsetSearch {
     if (samples_.back().eigenvalue <= 0.0) return Approach(1.0, 1.0 + kFirstStep, TrendRoot());
     // A string lying on the wall may first stiffen as the load grows (its contacts press harder):
     // march up until ω² falls.
+    bool at_ceiling = false;  // the march reached where the pipe above buckles
     for (const double multiplier : kMarch) {
       if (std::isfinite(TrendRoot())) break;
-      if (multiplier >= ceiling_) return AtCeiling();  // the pipe above buckles first
+      if (multiplier >= ceiling_) {
+        at_ceiling = true;
+        break;
+      }
       if (!Take(multiplier)) break;
       if (samples_.back().eigenvalue <= 0.0) {
         const double below = samples_[samples_.size() - 2].multiplier;
@@ -325,7 +329,8 @@ class OnsetSearch {
     const double below = samples_.back().multiplier;  // the largest multiplier sampled, ω² > 0
     const double estimate = TrendRoot();
     if (std::isfinite(estimate) && estimate > below) return Approach(below, kInfinity, estimate);
-    // The frequency rose all the way (or the march broke) from an equilibrium compressed beyond
+    // The frequency rose all the way (to the pipe above's onset, or until the march broke) from an
+    // equilibrium compressed beyond
     // Dawson–Paslay's load: the post-buckled string stiffens as it is pressed, and the onset lies below.
     if (screen.computed && screen.load_factor < 1.0) {
       return FromBelow(screen, fmt::format("its compression {:.6g} N at MD {:.6g} m exceeds Dawson–Paslay's sinusoidal "
@@ -335,6 +340,7 @@ class OnsetSearch {
                                            screen.sinusoidal_load > 0.0 ? "" : " of a vertical hole",
                                            screen.sinusoidal_load, below));
     }
+    if (at_ceiling) return AtCeiling();  // the pipe above buckles first, the modelled string standing
     // Every multiplier of the march sampled, each equilibrium stable, and ω² not falling at the end: no
     // onset up to it, a finished answer (the largest multiplier is a lower bound; BucklingResult::lower_bound).
     if (below == kMarch.back()) return LowerBound();
