@@ -100,6 +100,31 @@ analyses:
     assert "buckling" in str(bk)
 
 
+def test_buckling_where_the_pipe_above_buckles_first() -> None:
+    # 300 ft of 4-3/4 in collars in a horizontal 8-1/2 in hole: the compression is the WOB all along,
+    # so the pipe above the model (model.top: string_above) reaches Dawson-Paslay's F_sin with them.
+    case = drillflex.Case.from_yaml("""\
+name: horizontal collars
+units: SI
+well:
+  survey: [[0, 90, 0], [2000 m, 90, 0]]
+  hole: 8.5 in
+  bit_md: 1500 m
+string:
+  - {type: collar, od: 4.75 in, id: 2.25 in, length: 91.44 m}
+operation: {wob: 177.93 kN}
+analyses:
+  buckling: {}
+""")
+    bk = drillflex.buckling(case)
+    assert bk.onset_above_model
+    assert not bk.buckled_at_case_loads
+    assert not bk.lower_bound
+    assert bk.sinusoidal is not None
+    # The onset is the pipe above's F_sin (the collars' own section), as the screen computes it.
+    assert bk.critical_wob == pytest.approx(bk.sinusoidal.sinusoidal_load, rel=0.02)
+
+
 def test_transient_with_progress() -> None:
     case = drillflex.Case.from_file(str(ROTATING)).with_values(
         {"analyses.transient.duration": "0.004 s", "analyses.transient.output_interval": "0.001 s"})
