@@ -15,6 +15,7 @@
 #include "model/internal_forces.hpp"
 #include "model/spring_elements.hpp"
 #include "model/static_problem.hpp"
+#include "model/string_above.hpp"
 #include "model/wall_contact.hpp"
 
 namespace drillflex::analyses {
@@ -169,6 +170,20 @@ StaticResult WithResults(const model::BuiltModel& built, StaticResult result, co
   result.nodes = StaticNodeResults(built.system, result.q, parameters);
   AddWallOffsets(built, result.q, result.nodes);
   result.reactions = SupportReactions(built, result.q, parameters);
+  if (built.string_above_element >= 0) {
+    const model::SystemModel& model = built.system;
+    const auto& above = static_cast<const model::StringAboveElement&>(*model.elements()[built.string_above_element]);
+    const auto poses = model.Poses(result.q);
+    const VecX v = VecX::Zero(model.num_velocities());
+    const Vec6 reaction = above.Reaction(model.StateOf(above, poses, v, 0.0, parameters));
+    PipeAboveReaction pipe;
+    pipe.s = model.length();
+    pipe.force = reaction.head<3>();
+    pipe.moment = reaction.tail<3>();
+    pipe.tension = above.Tension(parameters);
+    pipe.buckled = !(above.BucklingMargin(parameters) > 0.0);
+    result.pipe_above = pipe;
+  }
   result.contacts = ContactReports(built, result.q, parameters);
   result.bit = ComputeBitReport(built, result);
   return result;

@@ -50,6 +50,16 @@ struct SupportReaction {
   Vec3 moment = Vec3::Zero();    // N·m
 };
 
+// What the pipe above the model holds the top with (model/string_above.hpp), string frame at the top,
+// and the top's tension at rest it takes.
+struct PipeAboveReaction {
+  double s = 0.0;              // m, the top
+  Vec3 force = Vec3::Zero();   // N
+  Vec3 moment = Vec3::Zero();  // N·m
+  double tension = 0.0;        // N (< 0: compression)
+  bool buckled = false;        // compressed beyond its F_sin: it holds nothing
+};
+
 // A wall contact that carries force (model/wall_contact.hpp), for output.
 struct ContactReport {
   double s = 0.0;                 // m from the bit
@@ -79,6 +89,7 @@ struct StaticResult {
   double residual_norm = 0.0;  // |R|₂ at q, N
   std::vector<StaticNodeResult> nodes;    // from the bit upward
   std::vector<SupportReaction> reactions; // one per case support, in case order
+  std::optional<PipeAboveReaction> pipe_above;  // with the pipe above the model (model.top)
   std::vector<ContactReport> contacts;     // wall contacts carrying force, from the bit upward
   std::optional<BitReport> bit;            // in a well, with a support at the bit
   // How the equilibrium was found (results.json `static.method_used`; analyses/static_solve.hpp):

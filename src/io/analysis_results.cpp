@@ -193,6 +193,14 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
                             {"reactions", reactions},
                             {"table", "static.csv"}};
   if (result.bit) files.json()["static"]["bit"] = BitJson(c, *result.bit);
+  if (result.pipe_above) {
+    const analyses::PipeAboveReaction& pipe = *result.pipe_above;
+    files.json()["static"]["pipe_above"] = {{"s", out(pipe.s, Quantity::Length)},
+                                            {"force", out.Vector(pipe.force, Quantity::Force)},
+                                            {"moment", out.Vector(pipe.moment, Quantity::Moment)},
+                                            {"tension", out(pipe.tension, Quantity::Force)},
+                                            {"buckled", pipe.buckled}};
+  }
 }
 
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files) {

@@ -89,6 +89,10 @@ Eigen::Matrix<double, 6, 6> StringAboveElement::Stiffness(const LoadParameters& 
   return plane(around, u_around, theta_around) + plane(off, u_off, theta_off);
 }
 
+Vec6 StringAboveElement::Reaction(const ElementState& state) const {
+  return -(Stiffness(state.parameters) * Kinematics(state).strain);
+}
+
 CouplingKinematics StringAboveElement::Kinematics(const ElementState& state) const {
   const CouplingEnd ground{nullptr, 0, ground_};
   const CouplingEnd end{bodies()[0], node_, *state.poses[0]};

@@ -80,6 +80,8 @@ class StringAboveElement : public ForceElement {
   // T + F_sin, N: the pipe above stands (> 0) or lies buckled (≤ 0; F_sin = 2 √(k EI), 0 without a
   // foundation).
   double BucklingMargin(const LoadParameters& load) const;
+  // The force and moment the pipe above exerts on the top, in the string frame at the top (N, N·m).
+  Vec6 Reaction(const ElementState& state) const;
   // The 6 × 6 stiffness on the support strain (x, y, z, rx, ry, rz).
   Eigen::Matrix<double, 6, 6> Stiffness(const LoadParameters& load) const;
   const StringAboveParameters& parameters() const { return parameters_; }

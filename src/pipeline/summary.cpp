@@ -127,6 +127,20 @@ void WriteStatic(std::ostream& out, const io::Case& c, const analyses::StaticRes
                              lateral_y, Show(c, reaction.force.y(), Quantity::Force), lateral_z,
                              Show(c, reaction.force.z(), Quantity::Force));
   }
+  if (result.pipe_above) {
+    const analyses::PipeAboveReaction& pipe = *result.pipe_above;
+    if (pipe.buckled) {
+      out << fmt::format("  the pipe above the top: compressed beyond its sinusoidal load ({} of tension at rest): "
+                         "it lies buckled and holds nothing\n",
+                         Show(c, pipe.tension, Quantity::Force));
+    } else {
+      out << fmt::format("  the pipe above the top ({} of tension at rest) holds it with {} {}, {} {}; moment {} {}, "
+                         "{} {}\n",
+                         Show(c, pipe.tension, Quantity::Force), lateral_y, Show(c, pipe.force.y(), Quantity::Force),
+                         lateral_z, Show(c, pipe.force.z(), Quantity::Force), lateral_y,
+                         Show(c, pipe.moment.y(), Quantity::Moment), lateral_z, Show(c, pipe.moment.z(), Quantity::Moment));
+    }
+  }
 }
 
 void WriteModes(std::ostream& out, const analyses::ModesResult& result) {
