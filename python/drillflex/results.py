@@ -51,6 +51,9 @@ class StaticResult(Result):
     ``friction_force``, ``high_side_angle``, ``component`` (index in the string), ``contact_point``,
     ``normal`` (n×3), and the list ``component_name``.
     ``reactions``: per support, a Record ``s``, ``force``, ``moment`` (string frame).
+    ``pipe_above``: with the pipe above the model (``model.top: string_above``), a Record ``s``,
+    ``force``, ``moment`` (what it holds the top with, string frame), ``tension`` (the top's tension
+    at rest it takes) and ``buckled``; else None.
     ``bit``: in a well, a Record ``side_force``, ``build_force`` (> 0 builds), ``walk_force``
     (> 0 walks right), ``tilt`` (rad), ``inclination_tendency``, ``azimuth_tendency``,
     ``tendency_threshold`` (N); else None.
@@ -62,6 +65,7 @@ class StaticResult(Result):
         fields = run.static_fields()
         fields["reactions"] = _records(fields["reactions"])
         fields["bit"] = Record(**fields["bit"]) if fields["bit"] is not None else None
+        fields["pipe_above"] = Record(**fields["pipe_above"]) if fields["pipe_above"] is not None else None
         super().__init__(run, fields)
 
 

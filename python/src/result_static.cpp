@@ -102,6 +102,15 @@ void BindStaticResult(py::class_<RunHandle>& run) {
     }
     fields["reactions"] = reactions;
     fields["bit"] = Bit(result.bit);
+    if (result.pipe_above) {
+      const analyses::PipeAboveReaction& pipe = *result.pipe_above;
+      fields["pipe_above"] =
+          py::dict(py::arg("s") = pipe.s, py::arg("force") = py::make_tuple(pipe.force.x(), pipe.force.y(), pipe.force.z()),
+                   py::arg("moment") = py::make_tuple(pipe.moment.x(), pipe.moment.y(), pipe.moment.z()),
+                   py::arg("tension") = pipe.tension, py::arg("buckled") = pipe.buckled);
+    } else {
+      fields["pipe_above"] = py::none();
+    }
     return fields;
   });
 }

@@ -28,6 +28,11 @@ def test_static_typed_result(example: drillflex.Case) -> None:
     assert len(st.contacts["normal_force"]) == len(stored["contacts"]) > 0
     assert st.contacts["component_name"][0] == "near-bit stabilizer"
     assert len(st.reactions) == 2 and st.reactions[0].force.shape == (3,)
+    # The pipe above the model takes the top's tension at rest: the hook's axial reaction there.
+    assert st.pipe_above.tension == pytest.approx(st.reactions[1].force[0], rel=1e-3)
+    assert not st.pipe_above.buckled
+    assert drillflex.units.convert(st.pipe_above.tension, "N", "lbf") == pytest.approx(
+        stored["pipe_above"]["tension"], rel=1e-12)
     assert str(st).startswith("static: converged")
     assert f"bit: side force {stored['bit']['side_force']:.5g} lbf" in str(st)
 
