@@ -330,8 +330,8 @@ class OnsetSearch {
     const double estimate = TrendRoot();
     if (std::isfinite(estimate) && estimate > below) return Approach(below, kInfinity, estimate);
     // The frequency rose all the way (to the pipe above's onset, or until the march broke) from an
-    // equilibrium compressed beyond
-    // Dawson–Paslay's load: the post-buckled string stiffens as it is pressed, and the onset lies below.
+    // equilibrium compressed beyond Dawson–Paslay's load: the post-buckled string stiffens as it is
+    // pressed, and the onset lies below.
     if (screen.computed && screen.load_factor < 1.0) {
       return FromBelow(screen, fmt::format("its compression {:.6g} N at MD {:.6g} m exceeds Dawson–Paslay's sinusoidal "
                                            "load{} ({:.6g} N), and its lowest lateral frequency rises with the load up "
@@ -457,41 +457,32 @@ class OnsetSearch {
         break;
       }
     }
-    // The nearest stable sample below the onset (samples_ ascend in μ, the last one at `below`).
-    const std::size_t nearest = samples_.size() - 1;
-    result_.load_factor = estimate;
-    result_.load_factors = {estimate};
-    result_.reference_load_factor = samples_[nearest].multiplier;
-    result_.frequency_load_factor = estimate;
-    // The compression at the onset, extrapolated along the nearest two samples (prebuckling is linear).
-    const LateralSample& near = samples_[nearest];
-    const LateralSample& other = samples_[nearest > 0 ? nearest - 1 : nearest];
-    const double slope = other.multiplier != near.multiplier
-                             ? (near.compression - other.compression) / (near.multiplier - other.multiplier)
-                             : 0.0;
-    result_.critical_load = near.compression + slope * (estimate - near.multiplier);
-    result_.frequency_critical_load = result_.critical_load;
-    FillBuckledMode(solver_.ModelAt(near.multiplier), near.q, near.mode, result_);
-    std::sort(result_.frequency_table.begin(), result_.frequency_table.end(),
-              [](const auto& a, const auto& b) { return a.load_factor < b.load_factor; });
+    Finish(estimate);
   }
 
   // The onset is where the pipe above the model reaches its sinusoidal load (ceiling_), the model
-  // standing up to it: the compression there extrapolated along the nearest two stable samples.
+  // standing up to it.
   void AtCeiling() {
     std::erase_if(samples_, [](const LateralSample& sample) { return !(sample.eigenvalue > 0.0); });
     if (samples_.empty()) throw LogicError("buckling: no stable sample below the pipe above's onset");
+    result_.onset_above_model = true;
+    result_.frequency_method_converged = true;
+    Finish(ceiling_);
+  }
+
+  // The onset at `multiplier` from the nearest stable sample below it (samples_ ascend in μ, the last
+  // one the nearest): its mode, and the compression extrapolated along the nearest two samples
+  // (prebuckling is linear).
+  void Finish(double multiplier) {
     const LateralSample& near = samples_.back();
     const LateralSample& other = samples_[samples_.size() > 1 ? samples_.size() - 2 : 0];
     const double slope = other.multiplier != near.multiplier
                              ? (near.compression - other.compression) / (near.multiplier - other.multiplier)
                              : 0.0;
-    result_.onset_above_model = true;
-    result_.frequency_method_converged = true;
-    result_.load_factor = result_.frequency_load_factor = ceiling_;
-    result_.load_factors = {ceiling_};
+    result_.load_factor = result_.frequency_load_factor = multiplier;
+    result_.load_factors = {multiplier};
     result_.reference_load_factor = near.multiplier;
-    result_.critical_load = result_.frequency_critical_load = near.compression + slope * (ceiling_ - near.multiplier);
+    result_.critical_load = result_.frequency_critical_load = near.compression + slope * (multiplier - near.multiplier);
     FillBuckledMode(solver_.ModelAt(near.multiplier), near.q, near.mode, result_);
     std::sort(result_.frequency_table.begin(), result_.frequency_table.end(),
               [](const auto& a, const auto& b) { return a.load_factor < b.load_factor; });
