@@ -401,6 +401,9 @@ class OnsetSearch {
     };
     solver_.Forget();  // the equilibria found so far lie buckled
     samples_.clear();
+    // The table is the path that finds the onset: the samples from the case's loads lay on the
+    // post-buckled branch (the × 1 frequency stays in unloaded_frequency_hz).
+    result_.frequency_table.clear();
     result_.buckled_at_case_loads = true;
     if (!Take(start) || samples_.back().eigenvalue <= 0.0) {
       throw fail(fmt::format("no stable equilibrium was found at × {:.3g} of the {}", start,

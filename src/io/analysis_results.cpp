@@ -39,7 +39,9 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
                    {"supports", supports},
                    {"elements_per_body", c.input.settings.elements_per_body},
                    {"modes_per_body", c.input.settings.modes_per_body},
-                   {"coupling_factor", c.input.settings.coupling_factor}};
+                   {"coupling_factor", c.input.settings.coupling_factor},
+                   // The pipe above holds the top (model/string_above.hpp; model.top).
+                   {"pipe_above", built.string_above_element >= 0}};
   root["column_units"] = {{"s", out.Unit(Quantity::Length)},        {"md", out.Unit(Quantity::Length)},
                           {"position", out.Unit(Quantity::Length)}, {"displacement", out.Unit(Quantity::Diameter)},
                           {"rotation", "deg"},                      {"lateral_offset", out.Unit(Quantity::Diameter)},

@@ -649,7 +649,10 @@
           ? `Dawson–Paslay: at MD ${num(d.md, 6)} ${U.length} the compression ${num(d.compression, 5)} ${U.force} exceeds the sinusoidal buckling load ${num(d.sinusoidal_load, 5)} ${U.force} (helical ${num(d.helical_load, 5)} ${U.force}): the string lies buckled there.`
           : `Dawson–Paslay: sinusoidal buckling first at ${scaled} × ${num(d.load_factor, 4)}, at MD ${num(d.md, 6)} ${U.length} (compression ${num(d.compression, 5)} ${U.force} against ${num(d.sinusoidal_load, 5)} ${U.force} now; helical ${num(d.helical_load, 5)} ${U.force}).`;
       s.appendChild(el('p', {text: text}));
-      s.appendChild(el('p', {class: 'note', text: 'In an inclined hole the modelled string\'s top is free sideways and may buckle first (Hetényi\'s end mode, about half the Dawson–Paslay load): docs/validation.md, V2 torque and weight.'}));
+      if (!R.model.pipe_above) {
+        // model.top: free (or the case's supports): nothing holds the top across the hole.
+        s.appendChild(el('p', {class: 'note', text: 'In an inclined hole the modelled string\'s top is free sideways and may buckle first (Hetényi\'s end mode, about half the Dawson–Paslay load): docs/validation.md, V2 inclined holes.'}));
+      }
     }
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
