@@ -152,6 +152,16 @@ struct RoadmapSettings {
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.
 // `roadmap` holds the settings of `drillflex roadmap` (a sweep of statics, not run by `run`).
+// The bit's steerability by default: 5 %. Measured values of PDC bits spread over an order of
+// magnitude around it with the gauge's length (Menand, Sellami & Simon, SPE/IADC 79795); MADSim's
+// example (docs/validation.md) uses 5–25 %. Set the bit's own where it is known.
+inline constexpr double kDefaultSteerability = 0.05;
+
+// What a directional tendency is asked (case key analyses.tendency; analyses/tendency_analysis.hpp).
+struct TendencySettings {
+  double steerability = kDefaultSteerability;  // S ≥ 0: lateral over axial drillability (1e6: zero side force)
+};
+
 struct AnalysesConfig {
   std::optional<StaticSettings> static_analysis;
   std::optional<ModesSettings> modes;
@@ -159,6 +169,7 @@ struct AnalysesConfig {
   std::optional<BucklingSettings> buckling;
   std::optional<TransientSettings> transient;
   std::optional<RoadmapSettings> roadmap;
+  std::optional<TendencySettings> tendency;
 };
 
 }  // namespace drillflex::analyses

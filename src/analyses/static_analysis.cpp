@@ -233,8 +233,9 @@ StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& set
 }
 
 StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
-                             const StaticSettings& settings, const model::LoadParameters& parameters) {
-  return ToStaticResult(built, SolveStaticEquilibrium(input, built, settings, parameters), parameters);
+                             const StaticSettings& settings, const model::LoadParameters& parameters,
+                             const VecX* start) {
+  return ToStaticResult(built, SolveStaticEquilibrium(input, built, settings, parameters, start), parameters);
 }
 
 std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q,
@@ -274,6 +275,7 @@ std::optional<BitReport> ComputeBitReport(const model::BuiltModel& built, const 
   const Vec3 axis = -(Eigen::AngleAxisd(rotation.norm(), rotation.norm() > 0 ? rotation.normalized() : Vec3::UnitX()) *
                       Vec3::UnitX());
   report.tilt = std::atan2(axis.z(), -axis.x());
+  report.tilt_right = std::atan2(axis.y(), -axis.x());
   return report;
 }
 

@@ -79,6 +79,7 @@ struct BitReport {
   double build_force = 0.0;  // N, toward the high side (> 0 builds)
   double walk_force = 0.0;   // N, toward the right (> 0 walks right)
   double tilt = 0.0;         // rad, bit axis (down-hole) against the hole axis, > 0 toward the high side
+  double tilt_right = 0.0;   // rad, the same toward the right (looking down-hole)
 };
 
 struct StaticResult {
@@ -118,9 +119,11 @@ StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& set
 // The static equilibrium of `built` (made from `input`) under `parameters`, by the chain of
 // analyses/static_solve.hpp: a string in a well on the default supports by the energy's minimum
 // from the string resting on the wall, continued in the friction when it slides; other strings as
-// RunStatic. Throws SolverError, saying why, when no strategy converges.
+// RunStatic. `start`: a nearby equilibrium of the same bodies to go from first (the chain's strategy
+// 1), or null. Throws SolverError, saying why, when no strategy converges.
 StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
-                             const StaticSettings& settings, const model::LoadParameters& parameters = 1.0);
+                             const StaticSettings& settings, const model::LoadParameters& parameters = 1.0,
+                             const VecX* start = nullptr);
 
 // The results along the string, the reactions, the contacts and the bit of a converged equilibrium
 // under `parameters` (CheckForcesResolved first).

@@ -1,4 +1,4 @@
-// `drillflex static|modes|buckling|vibration|transient|run CASE [-o DIR]`: run a case through the
+// `drillflex static|modes|buckling|vibration|transient|tendency|run CASE [-o DIR]`: run a case through the
 // pipeline (pipeline/case_run.hpp), print each analysis's summary in the case's units as it finishes
 // and write the results atomically.
 #include <unistd.h>
@@ -60,7 +60,8 @@ class ProgressBar {
 
 // A result of any analysis the run asked for (or the equilibrium one started from).
 bool AnyFinished(const pipeline::CaseResults& results) {
-  return results.static_result || results.modes || results.vibration || results.buckling || results.transient;
+  return results.static_result || results.modes || results.vibration || results.buckling || results.transient ||
+         results.tendency;
 }
 
 int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& request, const char* command) {
@@ -121,6 +122,9 @@ int RunBucklingCommand(const CommandOptions& options) {
 }
 int RunVibrationCommand(const CommandOptions& options) {
   return RunAnalyses(options, pipeline::AnalysisRequest::Only(pipeline::Analysis::Vibration), "vibration");
+}
+int RunTendencyCommand(const CommandOptions& options) {
+  return RunAnalyses(options, pipeline::AnalysisRequest::Only(pipeline::Analysis::Tendency), "tendency");
 }
 int RunTransientCommand(const CommandOptions& options) {
   return RunAnalyses(options, pipeline::AnalysisRequest::Only(pipeline::Analysis::Transient), "transient");

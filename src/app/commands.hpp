@@ -45,6 +45,7 @@ int RunWell(const CommandOptions& options);
 int RunStaticCommand(const CommandOptions& options);
 int RunModesCommand(const CommandOptions& options);
 int RunBucklingCommand(const CommandOptions& options);
+int RunTendencyCommand(const CommandOptions& options);
 int RunVibrationCommand(const CommandOptions& options);
 int RunTransientCommand(const CommandOptions& options);
 int RunCaseCommand(const CommandOptions& options);

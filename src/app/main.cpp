@@ -60,6 +60,8 @@ int main(int argc, char** argv) {
        drillflex::app::RunBucklingCommand, true, true},
       {"transient", "Time integration from the static equilibrium: transient.csv at the output interval",
        drillflex::app::RunTransientCommand, true, true},
+      {"tendency", "Directional tendency: the steady build and turn rates the BHA drills at the bit's depth",
+       drillflex::app::RunTendencyCommand, true, true},
       {"run", "Every analysis the case lists", drillflex::app::RunCaseCommand, true, true},
       {"sweep", "The case's analyses for every combination of varied values: sweep.csv, one row a run",
        drillflex::app::RunSweepCommand, true, false},

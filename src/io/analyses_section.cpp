@@ -248,8 +248,8 @@ analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
 }  // namespace
 
 analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation) {
-  node.ExpectMap("the analyses to run (static, modes, vibration, buckling, transient, roadmap)");
-  node.AllowOnlyKeys({"static", "modes", "vibration", "buckling", "transient", "roadmap"});
+  node.ExpectMap("the analyses to run (static, modes, vibration, buckling, transient, roadmap, tendency)");
+  node.AllowOnlyKeys({"static", "modes", "vibration", "buckling", "transient", "roadmap", "tendency"});
   analyses::AnalysesConfig config;
   // A key that is present runs its analysis, even with empty settings (`static: {}` or `static:`).
   if (const auto item = node.PresentChild("static")) config.static_analysis = ReadStatic(*item);
@@ -278,6 +278,18 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::
   }
   if (const auto item = node.PresentChild("transient")) config.transient = ReadTransient(*item, operation);
   if (const auto item = node.PresentChild("roadmap")) config.roadmap = ReadRoadmap(*item);
+  if (const auto item = node.PresentChild("tendency")) {
+    item->ExpectMap("the tendency settings");
+    item->AllowOnlyKeys({"steerability"});
+    config.tendency = analyses::TendencySettings{};
+    if (const auto steerability = item->OptionalChild("steerability")) {
+      config.tendency->steerability = steerability->AsQuantity(units::Quantity::Dimensionless);
+      if (!(config.tendency->steerability >= 0.0)) {
+        steerability->Fail("expected the bit's steerability, a number >= 0 (its lateral over its axial drillability; "
+                           "1e6 for the zero-side-force criterion)");
+      }
+    }
+  }
   return config;
 }
 

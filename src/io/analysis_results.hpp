@@ -7,6 +7,7 @@
 #include "analyses/gyroscopic_modes.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
+#include "analyses/tendency_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "io/case.hpp"
@@ -30,6 +31,10 @@ void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultF
 void AddCampbellResults(const Case& c, const analyses::CampbellResult& result, ResultFiles& files);
 // "buckling" and buckling.csv (frequency against load).
 void AddBucklingResults(const Case& c, const analyses::BucklingResult& result, ResultFiles& files);
+
+// "tendency" (case-format.md: build_rate, turn_rate in deg/100 ft | deg/30 m, the bit's side forces
+// and tilts at the steady curvature) and tendency.csv (every static of the search).
+void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, ResultFiles& files);
 
 // "vibration" (case-format.md: rpm, max_lateral_displacement, max_bending_stress, max_contact_force,
 // critical_rpm, safe_windows, ...) and vibration.csv (one row per RPM).

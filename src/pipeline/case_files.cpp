@@ -29,6 +29,7 @@ io::ResultFiles ComposeResultFiles(const io::Case& c, const CaseResults& results
     if (options.report) report.AddExcitations(c);
   }
   if (results.buckling) io::AddBucklingResults(c, *results.buckling, files);
+  if (results.tendency) io::AddTendencyResults(c, *results.tendency, files);
   if (results.transient) {
     io::AddTransientResults(c, *results.transient, files);
     if (options.report) report.AddTransient(c, input, *results.transient);

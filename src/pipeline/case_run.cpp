@@ -18,6 +18,7 @@ const char* AnalysisName(Analysis analysis) {
     case Analysis::Buckling: return "buckling";
     case Analysis::Vibration: return "vibration";
     case Analysis::Transient: return "transient";
+    case Analysis::Tendency: return "tendency";
   }
   return "unknown";
 }
@@ -30,6 +31,7 @@ AnalysisRequest AnalysisRequest::Only(Analysis analysis) {
     case Analysis::Buckling: request.buckling = true; break;
     case Analysis::Vibration: request.vibration = true; break;
     case Analysis::Transient: request.transient = true; break;
+    case Analysis::Tendency: request.tendency = true; break;
   }
   return request;
 }
@@ -41,6 +43,7 @@ bool AnalysisRequest::Has(Analysis analysis) const {
     case Analysis::Buckling: return buckling;
     case Analysis::Vibration: return vibration;
     case Analysis::Transient: return transient;
+    case Analysis::Tendency: return tendency;
   }
   return false;
 }
@@ -48,7 +51,7 @@ bool AnalysisRequest::Has(Analysis analysis) const {
 AnalysisRequest CaseAnalyses(const io::Case& c) {
   const auto& a = c.analyses;
   const AnalysisRequest request{a.static_analysis.has_value(), a.modes.has_value(), a.buckling.has_value(),
-                                a.vibration.has_value(), a.transient.has_value()};
+                                a.vibration.has_value(),       a.transient.has_value(), a.tendency.has_value()};
   if (!request.Any()) {
     throw InputError({c.file, 0, 0}, "analyses",
                      a.roadmap ? "the case lists only a roadmap: run it with `drillflex roadmap`"
@@ -64,8 +67,27 @@ CaseModel BuildCaseModel(const io::Case& c) {
   // (analyses::TransientStartPositions).
   if (c.analyses.transient) input.initial_loads = c.analyses.transient->initial_loads;
   auto cache = std::make_unique<cms::ReductionCache>();
-  model::BuiltModel built = model::BuildSystemModel(input, *cache);
+  model::BuiltModel built = BuildModel(input, *cache);
   return CaseModel{std::move(input), std::move(cache), std::move(built)};
+}
+
+model::BuiltModel BuildModel(const model::ModelInput& input, cms::ReductionCache& cache) {
+  return model::BuildSystemModel(input, cache);
+}
+
+analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_model,
+                                         const analyses::StaticResult* equilibrium, const RunObserver& observer) {
+  const analyses::ModelFactory build = [&case_model](const model::ModelInput& input) {
+    return BuildModel(input, *case_model.cache);
+  };
+  try {
+    return analyses::RunTendency(case_model.input, build, CaseStaticSettings(c, observer),
+                                 c.analyses.tendency.value_or(analyses::TendencySettings{}),
+                                 equilibrium ? &case_model.built : nullptr, equilibrium);
+  } catch (const InputError& e) {  // the string the tendency cannot take: name the case file
+    if (!e.location().file.empty()) throw;
+    throw InputError({c.file, e.location().line, e.location().column}, e.key_path(), e.message());
+  }
 }
 
 analyses::StaticSettings CaseStaticSettings(const io::Case& c, const RunObserver& observer) {
@@ -97,7 +119,7 @@ TransientSetup PrepareTransient(const io::Case& c, CaseModel& case_model, const 
   model::ModelInput moving_input = analyses::TransientModelInput(input, settings, fluid_frequency);
   moving_input = analyses::PlaceBottomAtStart(std::move(moving_input), case_model.built, start);
   moving_input = analyses::PlaceBlockAtStart(std::move(moving_input), case_model.built, start);
-  model::BuiltModel moving = model::BuildSystemModel(moving_input, *case_model.cache);
+  model::BuiltModel moving = BuildModel(moving_input, *case_model.cache);
   return TransientSetup{std::move(settings), fluid_frequency, std::move(start), std::move(moving)};
 }
 
@@ -210,6 +232,11 @@ void RunCaseTransient(const io::Case& c, const RunOptions& options, CaseResults&
 // solved (issue 33): a motor excitation without a speed or a motor. (The reader refuses what the case
 // alone shows wrong: gyroscopic modes of an axial kind, a Campbell diagram without them.)
 void CheckBeforeSolving(const io::Case& c, const AnalysisRequest& request) {
+  if (request.tendency) {
+    if (const auto problem = analyses::TendencyInputProblem(c.input)) {
+      throw InputError({c.file, 0, 0}, problem->first, problem->second);
+    }
+  }
   if (request.vibration) {
     const analyses::VibrationSettings settings = CaseVibrationSettings(c);
     for (std::size_t i = 0; i < settings.excitations.size(); ++i) {
@@ -272,6 +299,14 @@ CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const Run
       results.buckling = analyses::RunBuckling(input, built, c.analyses.buckling.value_or(analyses::BucklingSettings{}),
                                                CaseStaticSettings(c, observer));
       Finished(observer, Analysis::Buckling, results);
+    });
+  }
+  if (request.tendency) {
+    Attempt(Analysis::Tendency, options, results, [&] {
+      const analyses::StaticResult* start =
+          results.static_result && !static_failed ? &*results.static_result : nullptr;
+      results.tendency = RunCaseTendency(c, results.model, start, observer);
+      Finished(observer, Analysis::Tendency, results);
     });
   }
   if (request.transient && static_failed) {

@@ -13,6 +13,7 @@
 #include "analyses/gyroscopic_modes.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
+#include "analyses/tendency_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "cms/reduction_cache.hpp"
@@ -21,9 +22,9 @@
 
 namespace drillflex::pipeline {
 
-enum class Analysis { Static, Modes, Buckling, Vibration, Transient };
+enum class Analysis { Static, Modes, Buckling, Vibration, Transient, Tendency };
 
-// "static", "modes", "buckling", "vibration", "transient": the command line's and the case's names.
+// "static", "modes", "buckling", "vibration", "transient", "tendency": the command line's and the case's names.
 const char* AnalysisName(Analysis analysis);
 
 // Which analyses a run makes.
@@ -33,10 +34,11 @@ struct AnalysisRequest {
   bool buckling = false;
   bool vibration = false;
   bool transient = false;
+  bool tendency = false;
 
   static AnalysisRequest Only(Analysis analysis);
   bool Has(Analysis analysis) const;
-  bool Any() const { return static_analysis || modes || buckling || vibration || transient; }
+  bool Any() const { return static_analysis || modes || buckling || vibration || transient || tendency; }
 };
 
 // The analyses the case lists under `analyses`; InputError naming the file and `analyses` when it
@@ -84,8 +86,17 @@ struct CaseModel {
   model::BuiltModel built;
 };
 
-// The case's model: its model input (io::Case::input) built by model::BuildSystemModel.
+// The case's model: its model input (io::Case::input) built by BuildModel.
 CaseModel BuildCaseModel(const io::Case& c);
+
+// A model of `input` (the case's, or one an analysis varies: the transient's in motion, a tendency's in
+// its own hole) with the reductions of `cache`: the one place model::BuildSystemModel is called.
+model::BuiltModel BuildModel(const model::ModelInput& input, cms::ReductionCache& cache);
+
+// The case's directional tendency (analyses/tendency_analysis.hpp) with its settings; `equilibrium`:
+// the case's static equilibrium when one was solved (the search's first start), else null.
+analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_model,
+                                         const analyses::StaticResult* equilibrium, const RunObserver& observer = {});
 
 // The static settings of the case, with the observer's log.
 analyses::StaticSettings CaseStaticSettings(const io::Case& c, const RunObserver& observer);
@@ -136,6 +147,7 @@ struct CaseResults {
   std::optional<analyses::BucklingResult> buckling{};
   std::optional<TransientSetup> transient_setup{};
   std::optional<analyses::TransientResult> transient{};
+  std::optional<analyses::TendencyResult> tendency{};
   std::vector<AnalysisFailure> failures{};  // in the order the analyses run (RunOptions::keep_finished)
 };
 

@@ -319,6 +319,22 @@ void WriteTransient(std::ostream& out, const io::Case& c, const analyses::Transi
                            Show(c, last.weight_on_bit, Quantity::WeightOnBit));
 }
 
+void WriteTendency(std::ostream& out, const io::Case& c, const analyses::TendencyResult& result) {
+  const analyses::TendencyPoint& steady = result.trace.at(static_cast<std::size_t>(result.steady_index));
+  out << fmt::format("tendency: builds {} and turns {} (dogleg {}) at inclination {}, azimuth {}; steerability {:g}, "
+                     "WOB {} ({} statics)\n",
+                     Show(c, result.build_rate, Quantity::DoglegSeverity, 4),
+                     Show(c, result.turn_rate, Quantity::DoglegSeverity, 4),
+                     Show(c, result.dogleg_severity, Quantity::DoglegSeverity, 4),
+                     Show(c, result.inclination, Quantity::Angle, 4), Show(c, result.azimuth, Quantity::Angle, 4),
+                     result.steerability, Show(c, result.weight_on_bit, Quantity::WeightOnBit), result.trace.size());
+  out << fmt::format("  bit at the steady curvature: side force {} (build {}, walk {}), tilt {} toward the high side, "
+                     "{} toward the right\n",
+                     Show(c, steady.bit.side_force, Quantity::Force), Show(c, steady.bit.build_force, Quantity::Force),
+                     Show(c, steady.bit.walk_force, Quantity::Force), Show(c, steady.bit.tilt, Quantity::Angle, 4),
+                     Show(c, steady.bit.tilt_right, Quantity::Angle, 4));
+}
+
 void WriteSummary(std::ostream& out, const io::Case& c, Analysis analysis, const CaseResults& results) {
   switch (analysis) {
     case Analysis::Static:
@@ -344,6 +360,9 @@ void WriteSummary(std::ostream& out, const io::Case& c, Analysis analysis, const
             block || settings.top_drive.has_value() || settings.bit_rock.has_value() || c.input.operation.rotary_speed != 0.0;
         WriteTransient(out, c, *results.transient, driven, block);
       }
+      return;
+    case Analysis::Tendency:
+      if (results.tendency) WriteTendency(out, c, *results.tendency);
       return;
   }
 }

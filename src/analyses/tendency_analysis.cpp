@@ -1,0 +1,268 @@
+#include "analyses/tendency_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+// The hole above the model's top that the steady hole keeps straight: enough for the pipe above
+// (model/string_above.hpp) to read the hole's curvature at the top from the arc or the line.
+constexpr double kHoleAboveTop = 30.0;  // m
+
+using Vec2 = Eigen::Vector2d;
+using Mat2 = Eigen::Matrix2d;
+
+Vec2 AsVector(const HoleCurvature& curvature) { return {curvature.build, curvature.right}; }
+HoleCurvature AsCurvature(const Vec2& v) { return {v.x(), v.y()}; }
+
+double InDegreesPer100Ft(double curvature) { return curvature / kDegreesPer100Ft; }
+
+// One evaluated curvature with what a later static starts from.
+struct Evaluated {
+  TendencyPoint point;
+  well::Trajectory hole;
+  std::shared_ptr<const model::BuiltModel> built;
+  VecX q;
+  StaticResult equilibrium;
+};
+
+class Search {
+ public:
+  Search(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
+         const TendencySettings& settings)
+      : input_(input), build_(build), statics_(statics), settings_(settings),
+        bit_md_(input.bit_md), model_length_(model::StringLength(input.string)),
+        top_md_(std::max(0.0, input.bit_md - model_length_ - kHoleAboveTop)) {}
+
+  // The case's own equilibrium, in the case's hole: the first static's start.
+  void StartFrom(const model::BuiltModel& case_model, const StaticResult& equilibrium) {
+    case_model_ = &case_model;
+    case_q_ = equilibrium.q;
+  }
+
+  const Evaluated& Evaluate(const Vec2& kappa) {
+    model::ModelInput hole_input = input_;
+    const double arc = TendencyArcLength(input_.string, kappa.norm());
+    hole_input.trajectory = ConstantCurvatureHole(*input_.trajectory, bit_md_, top_md_, arc, AsCurvature(kappa));
+    auto built = std::make_shared<const model::BuiltModel>(build_(hole_input));
+    std::optional<VecX> start;
+    const Evaluated* nearest = Nearest(kappa);
+    if (nearest && (AsVector(nearest->point.curvature) - kappa).norm() > kTendencyWarmStep) nearest = nullptr;
+    if (nearest) {
+      start = CarryIntoHole(nearest->built->system, nearest->q, built->system, bit_md_, nearest->hole,
+                            *hole_input.trajectory);
+    } else if (case_model_ && kappa.isZero(0.0) == false && false) {
+      start = CarryIntoHole(case_model_->system, case_q_, built->system, bit_md_, *input_.trajectory,
+                            *hole_input.trajectory);
+    }
+    StaticResult equilibrium;
+    try {
+      equilibrium = RunStaticInWell(hole_input, *built, statics_, 1.0, start ? &*start : nullptr);
+    } catch (const SolverError& e) {
+      throw SolverError(fmt::format("tendency: the static in a hole of {:.4g} deg/100 ft build, {:.4g} deg/100 ft "
+                                    "right failed: {}",
+                                    InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), e.what()));
+    }
+    if (!equilibrium.bit) throw LogicError("RunTendency: the static has no bit report");
+    TendencyPoint point;
+    point.curvature = AsCurvature(kappa);
+    point.bit = *equilibrium.bit;
+    const double per_force = settings_.steerability / input_.operation.weight_on_bit;
+    point.deviation_build = point.bit.tilt + per_force * point.bit.build_force;
+    point.deviation_right = point.bit.tilt_right + per_force * point.bit.walk_force;
+    point.method = equilibrium.method;
+    if (statics_.log) {
+      statics_.log(fmt::format("tendency: {:+.4f} deg/100 ft build, {:+.4f} right: side force {:+.4g} N build, "
+                               "{:+.4g} N right; tilt {:+.4e}, {:+.4e} rad; deviation {:+.4e}, {:+.4e} rad ({})",
+                               InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), point.bit.build_force,
+                               point.bit.walk_force, point.bit.tilt, point.bit.tilt_right, point.deviation_build,
+                               point.deviation_right, point.method));
+    }
+    VecX q = equilibrium.q;
+    evaluated_.push_back(
+        Evaluated{std::move(point), *hole_input.trajectory, std::move(built), std::move(q), std::move(equilibrium)});
+    return evaluated_.back();
+  }
+
+  std::vector<Evaluated>& evaluated() { return evaluated_; }
+
+ private:
+  const Evaluated* Nearest(const Vec2& kappa) const {
+    const Evaluated* nearest = nullptr;
+    double best = std::numeric_limits<double>::infinity();
+    for (const Evaluated& e : evaluated_) {
+      const double distance = (AsVector(e.point.curvature) - kappa).norm();
+      if (distance < best) {
+        best = distance;
+        nearest = &e;
+      }
+    }
+    return nearest;
+  }
+
+  const model::ModelInput& input_;
+  const ModelFactory& build_;
+  const StaticSettings& statics_;
+  const TendencySettings& settings_;
+  const double bit_md_;
+  const double model_length_;
+  const double top_md_;
+  const model::BuiltModel* case_model_ = nullptr;
+  VecX case_q_;
+  std::vector<Evaluated> evaluated_;
+};
+
+Vec2 Deviation(const TendencyPoint& point) { return {point.deviation_build, point.deviation_right}; }
+
+std::string DescribeEnd(const TendencyPoint& point) {
+  return fmt::format("at {:+.0f} deg/100 ft the bit deviates {:+.4e} rad toward the high side with a side force of "
+                     "{:+.4g} N toward the high side",
+                     InDegreesPer100Ft(point.curvature.build), point.deviation_build, point.bit.build_force);
+}
+
+// Newton's proposal with each component kept inside the bracket the statics so far give it: the
+// nearest curvatures on either side of the current one where that component of the deviation has
+// the other sign. Outside it (a contact that opened or closed between), the component goes to the
+// bracket's regula falsi point, kept a tenth of the bracket from its ends so that the bracket shrinks.
+Vec2 KeepInBrackets(const std::vector<Evaluated>& evaluated, const Vec2& current, Vec2 proposal) {
+  for (int j = 0; j < 2; ++j) {
+    const Evaluated* positive = nullptr;
+    const Evaluated* negative = nullptr;
+    for (const Evaluated& e : evaluated) {
+      const double value = Deviation(e.point)[j];
+      const Evaluated*& side = value > 0.0 ? positive : negative;
+      if (value == 0.0) continue;
+      if (!side || std::abs(AsVector(e.point.curvature)[j] - current[j]) <
+                       std::abs(AsVector(side->point.curvature)[j] - current[j])) {
+        side = &e;
+      }
+    }
+    if (!positive || !negative) continue;
+    const double a = AsVector(positive->point.curvature)[j], b = AsVector(negative->point.curvature)[j];
+    const double lo = std::min(a, b), hi = std::max(a, b);
+    if (proposal[j] > lo && proposal[j] < hi) continue;
+    const double da = Deviation(positive->point)[j], db = Deviation(negative->point)[j];
+    const double falsi = a - da * (b - a) / (db - da);
+    proposal[j] = std::clamp(falsi, lo + 0.1 * (hi - lo), hi - 0.1 * (hi - lo));
+  }
+  return proposal;
+}
+
+}  // namespace
+
+double TendencyArcLength(const model::StringConfig& string, double curvature) {
+  const double length = model::StringLength(string);
+  double bha = 0.0;
+  for (const model::Component& component : string.components) {
+    if (component.type == model::ComponentType::Pipe) break;
+    bha += component.length * component.count;
+  }
+  if (!(curvature > 0.0)) return length;
+  const double quarter_turn = 0.5 * kPi / curvature;
+  return std::min({length, std::max(bha, quarter_turn), 0.9 * kPi / curvature});
+}
+
+std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const model::ModelInput& input) {
+  if (!input.trajectory || input.hole.empty()) {
+    return std::make_pair(std::string("well"), std::string("a tendency needs a well (survey and hole): the bit "
+                                                            "drills a hole, the string lies in it"));
+  }
+  if (input.string.components.empty() || input.string.components.front().type != model::ComponentType::Bit) {
+    return std::make_pair(std::string("string"),
+                          std::string("a tendency needs a bit at the bottom of the string (its first component, type bit)"));
+  }
+  if (!(input.operation.weight_on_bit > 0.0)) {
+    return std::make_pair(std::string("operation.wob"),
+                          std::string("a tendency needs a weight on bit above 0 (or a hook load that leaves one): the "
+                                      "bit's side force acts against it"));
+  }
+  if (!input.supports.empty()) {
+    return std::make_pair(std::string("supports"),
+                          std::string("a tendency holds the bit at the hole's centre on the default well supports: "
+                                      "remove `supports`"));
+  }
+  return std::nullopt;
+}
+
+TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
+                           const TendencySettings& settings, const model::BuiltModel* case_model,
+                           const StaticResult* case_equilibrium) {
+  if (const auto problem = TendencyInputProblem(input)) throw InputError({}, problem->first, problem->second);
+  if (!(settings.steerability >= 0.0) || !std::isfinite(settings.steerability)) {
+    throw InputError({}, "analyses.tendency.steerability", "the steerability must be a number >= 0");
+  }
+  Search search(input, build, statics, settings);
+  if (case_model && case_equilibrium) search.StartFrom(*case_model, *case_equilibrium);
+
+  Vec2 kappa = AsVector(CurvatureAtBit(*input.trajectory, input.bit_md));
+  kappa = kappa.cwiseMax(-kTendencyCurvatureLimit).cwiseMin(kTendencyCurvatureLimit);
+  const auto deviation_at = [&](const Vec2& at) { return Deviation(search.Evaluate(at).point); };
+  Vec2 d = deviation_at(kappa);
+  // The Jacobian ∂d/∂κ by forward differences, then Broyden's update with every step.
+  Mat2 jacobian;
+  for (int j = 0; j < 2; ++j) {
+    Vec2 step = Vec2::Zero();
+    step[j] = kappa[j] + kTendencyDifferenceStep > kTendencyCurvatureLimit ? -kTendencyDifferenceStep
+                                                                           : kTendencyDifferenceStep;
+    jacobian.col(j) = (deviation_at(kappa + step) - d) / step[j];
+  }
+  std::size_t answer = 0;  // index of the current point in search.evaluated()
+  int outward = 0;         // consecutive steps that wanted to leave the range
+  bool converged = false;
+  while (static_cast<int>(search.evaluated().size()) < kTendencyEvaluations) {
+    if (std::abs(jacobian.determinant()) < 1e-300 || !jacobian.allFinite()) {
+      throw SolverError("tendency: the bit's deviation does not change with the hole's curvature (a singular Jacobian)");
+    }
+    Vec2 step = -jacobian.inverse() * d;
+    if (step.norm() < kTendencyCurvatureTolerance) {
+      converged = true;
+      break;
+    }
+    if (step.norm() > kTendencyStepLimit) step *= kTendencyStepLimit / step.norm();
+    const Vec2 wanted = KeepInBrackets(search.evaluated(), kappa, kappa + step);
+    const Vec2 bounded = wanted.cwiseMax(-kTendencyCurvatureLimit).cwiseMin(kTendencyCurvatureLimit);
+    outward = (bounded - wanted).norm() > 0.0 && (bounded - kappa).norm() < kTendencyCurvatureTolerance ? outward + 1 : 0;
+    if (outward >= 2) break;
+    step = bounded - kappa;
+    const Vec2 d_next = deviation_at(bounded);
+    // Broyden: J ← J + ((Δd − J Δκ) Δκᵀ) / (Δκᵀ Δκ).
+    jacobian += ((d_next - d) - jacobian * step) * step.transpose() / step.squaredNorm();
+    kappa = bounded;
+    d = d_next;
+    answer = search.evaluated().size() - 1;
+  }
+  if (!converged) {
+    // No root found: the deviation at both ends of the range says which way the bit goes there.
+    const Vec2 low(-kTendencyCurvatureLimit, kappa.y()), high(kTendencyCurvatureLimit, kappa.y());
+    const TendencyPoint at_low = search.Evaluate(low).point;
+    const TendencyPoint at_high = search.Evaluate(high).point;
+    throw SolverError(fmt::format("tendency: no steady curvature within ±30 deg/100 ft after {} statics: {}; {}",
+                                  search.evaluated().size(), DescribeEnd(at_low), DescribeEnd(at_high)));
+  }
+  Evaluated& steady = search.evaluated()[answer];
+  TendencyResult result;
+  result.curvature = steady.point.curvature;
+  result.inclination = input.trajectory->Inclination(input.bit_md);
+  result.azimuth = input.trajectory->Azimuth(input.bit_md);
+  result.build_rate = result.curvature.build;
+  const double sine = std::sin(result.inclination);
+  result.turn_rate = sine > 1e-3 ? result.curvature.right / sine : 0.0;
+  result.dogleg_severity = std::hypot(result.curvature.build, result.curvature.right);
+  result.steerability = settings.steerability;
+  result.weight_on_bit = input.operation.weight_on_bit;
+  result.arc_length = TendencyArcLength(input.string, result.dogleg_severity);
+  for (const Evaluated& e : search.evaluated()) result.trace.push_back(e.point);
+  result.steady_index = static_cast<int>(answer);
+  result.equilibrium = std::move(steady.equilibrium);
+  return result;
+}
+
+}  // namespace drillflex::analyses

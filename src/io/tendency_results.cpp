@@ -1,0 +1,44 @@
+// "tendency" and tendency.csv: the steady build and turn rates (analyses/tendency_analysis.hpp).
+#include "io/analysis_results.hpp"
+
+namespace drillflex::io {
+
+using nlohmann::json;
+using units::Quantity;
+
+void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, ResultFiles& files) {
+  auto out = [&](double si, Quantity quantity) { return units::FromSI(si, quantity, c.output_units); };
+  const std::string rate_unit(units::DefaultUnit(Quantity::DoglegSeverity, c.output_units));
+  const std::string force_unit(units::DefaultUnit(Quantity::Force, c.output_units));
+  CsvTable table({"build_curvature", "right_curvature", "build_force", "walk_force", "tilt_build", "tilt_right",
+                  "deviation_build", "deviation_right"},
+                 {rate_unit, rate_unit, force_unit, force_unit, "deg", "deg", "deg", "deg"});
+  for (const analyses::TendencyPoint& point : result.trace) {
+    table.AddRow({out(point.curvature.build, Quantity::DoglegSeverity),
+                  out(point.curvature.right, Quantity::DoglegSeverity), out(point.bit.build_force, Quantity::Force),
+                  out(point.bit.walk_force, Quantity::Force), out(point.bit.tilt, Quantity::Angle),
+                  out(point.bit.tilt_right, Quantity::Angle), out(point.deviation_build, Quantity::Angle),
+                  out(point.deviation_right, Quantity::Angle)});
+  }
+  files.Add("tendency.csv", table.ToString());
+  const analyses::BitReport& bit = result.trace.at(static_cast<std::size_t>(result.steady_index)).bit;
+  files.json()["tendency"] = {
+      {"build_rate", out(result.build_rate, Quantity::DoglegSeverity)},
+      {"turn_rate", out(result.turn_rate, Quantity::DoglegSeverity)},
+      {"right_curvature", out(result.curvature.right, Quantity::DoglegSeverity)},
+      {"dogleg_severity", out(result.dogleg_severity, Quantity::DoglegSeverity)},
+      {"inclination", out(result.inclination, Quantity::Angle)},
+      {"azimuth", out(result.azimuth, Quantity::Angle)},
+      {"steerability", result.steerability},
+      {"weight_on_bit", out(result.weight_on_bit, Quantity::WeightOnBit)},
+      {"arc_length", out(result.arc_length, Quantity::Length)},
+      {"statics", result.trace.size()},
+      {"bit",
+       {{"side_force", out(bit.side_force, Quantity::Force)},
+        {"build_force", out(bit.build_force, Quantity::Force)},
+        {"walk_force", out(bit.walk_force, Quantity::Force)},
+        {"tilt", out(bit.tilt, Quantity::Angle)},
+        {"tilt_right", out(bit.tilt_right, Quantity::Angle)}}}};
+}
+
+}  // namespace drillflex::io

@@ -1,0 +1,165 @@
+// Directional tendency (analyses/tendency_analysis.hpp, tendency_hole.hpp).
+//
+// The steady hole: ends at the case's bit with its direction, is the circle of the asked curvature
+// above it (checked against the circle's closed form), straight above the arc. The carry into a hole
+// is the identity into the same hole.
+//
+// The steady curvature's limits (tendency.md): with S → ∞ (1e6) the curvature is the one at which a
+// static in a hole drawn at that curvature, independently of the tendency's own hole (its survey
+// written from I(σ) = I_bit − κ σ), has no build force at the bit: the force changes sign between
+// κ* ∓ 0.01°/100 ft; with S = 0 the bit's tilt changes sign there.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "analyses/tendency_analysis.hpp"
+#include "cms/reduction_cache.hpp"
+#include "core/error.hpp"
+#include "fe/material.hpp"
+#include "field_parts.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+using testing::kFt;
+using testing::kIn;
+using testing::kLbf;
+using testing::Part;
+
+constexpr double kBitMd = 3000.0 * kFt;
+constexpr double kInclination = 40.0 * kDegree;
+constexpr double kAzimuth = 90.0 * kDegree;
+
+// A packed rotary BHA (bit, near-bit stabilizer, 30 ft collar, string stabilizer, two collars), not
+// rotating, 25 klbf on the bit, in a straight hole at 40° toward the east, 10 ppg mud.
+model::ModelInput PackedBha() {
+  model::ModelInput input;
+  model::Component stabilizer = Part(model::ComponentType::Stabilizer, 6.75, 2.8125, 5.0);
+  stabilizer.blade_diameter = 8.375 * kIn;
+  stabilizer.blade_length = 1.5 * kFt;
+  input.string.components = {Part(model::ComponentType::Bit, 8.5, 2.0, 1.0), stabilizer,
+                             Part(model::ComponentType::Collar, 6.75, 2.8125, 30.0), stabilizer,
+                             Part(model::ComponentType::Collar, 6.75, 2.8125, 30.0, 2)};
+  input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, 7850.0};
+  input.gravity = 9.81;
+  input.fluid = model::FluidConfig{1198.0, 0.02, {}, -1.0};
+  input.settings.elements_per_body = 6;
+  input.settings.modes_per_body = 4;
+  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, kInclination, kAzimuth},
+                                                            {4000.0 * kFt, kInclination, kAzimuth}});
+  input.hole = {well::HoleSection{{}, 8.5 * kIn, {}}};
+  input.bit_md = kBitMd;
+  input.operation.weight_on_bit = 25000.0 * kLbf;
+  return input;
+}
+
+// The hole building at `build` (1/m) over the string and 30 m above it, straight above that: its
+// survey written from the inclination along the arc, I(σ) = I_bit − κ σ (σ up from the bit).
+model::ModelInput InBuildingHole(model::ModelInput input, double build) {
+  const double arc = model::StringLength(input.string) + 30.0;
+  std::vector<well::SurveyStation> stations = {{0.0, kInclination - build * arc, kAzimuth}};
+  for (int i = 40; i >= 0; --i) {
+    const double sigma = arc * i / 40.0;
+    stations.push_back({kBitMd - sigma, kInclination - build * sigma, kAzimuth});
+  }
+  input.trajectory.emplace(stations);
+  return input;
+}
+
+const ModelFactory& Factory() {
+  static cms::ReductionCache cache;
+  static const ModelFactory build = [](const model::ModelInput& input) { return model::BuildSystemModel(input, cache); };
+  return build;
+}
+
+BitReport BitIn(const model::ModelInput& input) {
+  const model::BuiltModel built = Factory()(input);
+  const StaticResult result = RunStaticInWell(input, built, StaticSettings{});
+  return *result.bit;
+}
+
+TEST(TendencyHole, EndsAtTheBitAndIsTheCircleOfItsCurvature) {
+  const model::ModelInput input = PackedBha();
+  const HoleCurvature curvature{3.0 * kDegreesPer100Ft, -1.5 * kDegreesPer100Ft};
+  const double arc = 60.0, top = kBitMd - 100.0;
+  const well::Trajectory hole = ConstantCurvatureHole(*input.trajectory, kBitMd, top, arc, curvature);
+  const well::PathFrame bit = input.trajectory->Frame(kBitMd);
+  EXPECT_LT((hole.Position(kBitMd) - input.trajectory->Position(kBitMd)).norm(), 1e-9);
+  EXPECT_LT((hole.Tangent(kBitMd) - bit.tangent).norm(), 1e-12);
+  const Vec3 kappa = curvature.build * bit.high_side + curvature.right * bit.right;
+  const double k = kappa.norm();
+  const Vec3 n = kappa / k;
+  for (const double sigma : {0.5, 17.0, 42.0, 59.5}) {
+    const Vec3 expected = input.trajectory->Position(kBitMd) - std::sin(k * sigma) / k * bit.tangent +
+                          (1.0 - std::cos(k * sigma)) / k * n;
+    EXPECT_LT((hole.Position(kBitMd - sigma) - expected).norm(), 1e-9) << sigma;
+    EXPECT_NEAR(hole.Curvature(kBitMd - sigma).norm(), k, 1e-12 * k + 1e-15);
+  }
+  EXPECT_LT((hole.Curvature(kBitMd - 1e-3) - kappa).norm(), 1e-5 * k);
+  // Straight above the arc, along its top tangent.
+  EXPECT_LT(hole.Curvature(top + 10.0).norm(), 1e-12);
+  EXPECT_LT((hole.Tangent(top + 10.0) - hole.Tangent(kBitMd - arc)).norm(), 1e-12);
+  const HoleCurvature read = CurvatureAtBit(hole, kBitMd);
+  EXPECT_NEAR(read.build, curvature.build, 1e-9 * k);
+  EXPECT_NEAR(read.right, curvature.right, 1e-9 * k);
+}
+
+TEST(TendencyHole, CarryingIntoTheSameHoleChangesNothing) {
+  model::ModelInput input = PackedBha();
+  const model::BuiltModel built = Factory()(input);
+  const StaticResult result = RunStaticInWell(input, built, StaticSettings{});
+  const VecX carried = CarryIntoHole(built.system, result.q, built.system, kBitMd, *input.trajectory, *input.trajectory);
+  EXPECT_LT((carried - result.q).lpNorm<Eigen::Infinity>(), 1e-12);
+}
+
+// The steady curvature with S, and the statics that bracket its limit's criterion `criterion`.
+template <class Criterion>
+void ExpectSteadyCurvatureBrackets(double steerability, Criterion criterion, const char* what) {
+  const model::ModelInput input = PackedBha();
+  TendencySettings settings;
+  settings.steerability = steerability;
+  const TendencyResult result = RunTendency(input, Factory(), StaticSettings{}, settings);
+  const double steady = result.curvature.build;
+  for (const TendencyPoint& point : result.trace) {
+    std::printf("[ measure  ]   %+.5f deg/100 ft: deviation %+.4e rad (force %+.4g N, tilt %+.4e rad)\n",
+                point.curvature.build / kDegreesPer100Ft, point.deviation_build, point.bit.build_force, point.bit.tilt);
+  }
+  const double below = criterion(BitIn(InBuildingHole(input, steady - 0.01 * kDegreesPer100Ft)));
+  const double above = criterion(BitIn(InBuildingHole(input, steady + 0.01 * kDegreesPer100Ft)));
+  std::printf("[ measure  ] S = %g: steady %.4f deg/100 ft build, %.2e right (%zu statics); %s at -0.01: %.4g, "
+              "at +0.01: %.4g\n",
+              steerability, steady / kDegreesPer100Ft, result.curvature.right / kDegreesPer100Ft, result.trace.size(),
+              what, below, above);
+  EXPECT_LT(below * above, 0.0) << what << " keeps its sign across the steady curvature ± 0.01 deg/100 ft";
+  EXPECT_NEAR(result.curvature.right, 0.0, 1e-3 * kDegreesPer100Ft);  // a plane well, not rotating: no walk
+  EXPECT_NEAR(result.build_rate, steady, 1e-15);
+  EXPECT_NEAR(result.turn_rate, 0.0, 1e-3 * kDegreesPer100Ft);
+  EXPECT_LE(result.trace.size(), 8u);
+}
+
+TEST(Tendency, ZeroSideForceCriterionWhenTheBitSteersAtWill) {
+  ExpectSteadyCurvatureBrackets(1e6, [](const BitReport& bit) { return bit.build_force; }, "build force");
+}
+
+TEST(Tendency, BitAxisCriterionWhenTheBitCannotSteer) {
+  ExpectSteadyCurvatureBrackets(0.0, [](const BitReport& bit) { return bit.tilt; }, "tilt");
+}
+
+TEST(Tendency, RefusesAStringItCannotTake) {
+  model::ModelInput input = PackedBha();
+  input.operation.weight_on_bit = 0.0;
+  ASSERT_TRUE(TendencyInputProblem(input).has_value());
+  EXPECT_EQ(TendencyInputProblem(input)->first, "operation.wob");
+  EXPECT_THROW(RunTendency(input, Factory(), StaticSettings{}, TendencySettings{}), InputError);
+  input = PackedBha();
+  input.string.components.front().type = model::ComponentType::Collar;
+  EXPECT_EQ(TendencyInputProblem(input)->first, "string");
+  input = PackedBha();
+  input.trajectory.reset();
+  EXPECT_EQ(TendencyInputProblem(input)->first, "well");
+  EXPECT_FALSE(TendencyInputProblem(PackedBha()).has_value());
+}
+
+}  // namespace
+}  // namespace drillflex::analyses
