@@ -9,13 +9,14 @@
 from drillflex import units
 from drillflex.case import Case
 from drillflex.errors import ConvergenceError, DrillflexError, InputError, UnitError
-from drillflex.results import (BucklingResult, ModesResult, Record, StaticResult, TransientResult,
+from drillflex.results import (BucklingResult, ModesResult, Record, StaticResult, TendencyResult, TransientResult,
                                VibrationResult)
 from drillflex.roadmap import RoadmapResult, roadmap
-from drillflex.runs import buckling, modes, run, static, transient, vibration
+from drillflex.runs import buckling, modes, run, static, tendency, transient, vibration
 
 __all__ = [
-    "Case", "units", "static", "modes", "vibration", "buckling", "transient", "run", "roadmap",
-    "StaticResult", "ModesResult", "VibrationResult", "BucklingResult", "TransientResult", "RoadmapResult", "Record",
+    "Case", "units", "static", "modes", "vibration", "buckling", "transient", "tendency", "run", "roadmap",
+    "StaticResult", "ModesResult", "VibrationResult", "BucklingResult", "TransientResult", "TendencyResult",
+    "RoadmapResult", "Record",
     "DrillflexError", "InputError", "UnitError", "ConvergenceError",
 ]

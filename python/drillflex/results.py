@@ -54,6 +54,9 @@ class StaticResult(Result):
     ``pipe_above``: with the pipe above the model (``model.top: string_above``), a Record ``s``,
     ``force``, ``moment`` (what it holds the top with, string frame), ``tension`` (the top's tension
     at rest it takes) and ``buckled``; else None.
+    ``mwd``: in a well with an MWD (or ``analyses.static.mwd_at``), a Record ``s``, ``md``,
+    ``axis_inclination``, ``hole_inclination``, ``sag`` (axis − hole, rad: subtract it from the survey's
+    inclination), ``axis_azimuth``, ``hole_azimuth``; else None.
     ``bit``: in a well, a Record ``side_force``, ``build_force`` (> 0 builds), ``walk_force``
     (> 0 walks right), ``tilt`` (rad), ``inclination_tendency``, ``azimuth_tendency``,
     ``tendency_threshold`` (N); else None.
@@ -66,6 +69,7 @@ class StaticResult(Result):
         fields["reactions"] = _records(fields["reactions"])
         fields["bit"] = Record(**fields["bit"]) if fields["bit"] is not None else None
         fields["pipe_above"] = Record(**fields["pipe_above"]) if fields["pipe_above"] is not None else None
+        fields["mwd"] = Record(**fields["mwd"]) if fields["mwd"] is not None else None
         super().__init__(run, fields)
 
 
@@ -142,6 +146,26 @@ class BucklingResult(Result):
         fields = run.buckling_fields()
         if fields["sinusoidal"] is not None:
             fields["sinusoidal"] = Record(**fields["sinusoidal"])
+        super().__init__(run, fields)
+
+
+class TendencyResult(Result):
+    """The steady build and turn rates the BHA drills at the bit's depth (``drillflex.tendency``).
+
+    ``build_rate`` (dI/ds) and ``turn_rate`` (dA/ds; 0 in a vertical hole), ``right_curvature`` and
+    ``dogleg_severity``, all in rad/m (× 180/π × 30.48 for deg/100 ft); ``inclination`` and ``azimuth``
+    at the bit (rad); ``steerability``, ``weight_on_bit`` (N), ``arc_length`` (m); ``trace``: a Record a
+    static of the search (``build_curvature``, ``right_curvature``, ``build_force``, ``walk_force``,
+    ``side_force``, ``tilt``, ``tilt_right``, ``deviation_build``, ``deviation_right``, ``method``),
+    the answer at ``steady_index``; ``bit``: that Record.
+    """
+
+    analysis = "tendency"
+
+    def __init__(self, run: _core.Run) -> None:
+        fields = run.tendency_fields()
+        fields["trace"] = [Record(**point) for point in fields["trace"]]
+        fields["bit"] = fields["trace"][fields["steady_index"]]
         super().__init__(run, fields)
 
 

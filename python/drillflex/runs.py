@@ -7,7 +7,8 @@ from typing import Any, Callable, Dict, Optional, Sequence, Union
 from drillflex import _core
 from drillflex.case import CaseLike, as_case
 from drillflex.errors import ConvergenceError
-from drillflex.results import BucklingResult, ModesResult, StaticResult, TransientResult, VibrationResult
+from drillflex.results import (BucklingResult, ModesResult, StaticResult, TendencyResult, TransientResult,
+                               VibrationResult)
 from drillflex.tables import results_dict
 
 # progress(analysis, done, total): the running analysis ("transient") and how far it is (the
@@ -41,6 +42,11 @@ def buckling(case: CaseLike, *, progress: Progress = None, log: Log = None) -> B
     return BucklingResult(_run(case, ["buckling"], progress, log))
 
 
+def tendency(case: CaseLike, *, progress: Progress = None, log: Log = None) -> TendencyResult:
+    """The steady build and turn rates of the case's BHA (its ``analyses.tendency`` settings)."""
+    return TendencyResult(_run(case, ["tendency"], progress, log))
+
+
 def transient(case: CaseLike, *, progress: Progress = None, log: Log = None) -> TransientResult:
     """The time integration of the case's ``analyses.transient``."""
     return TransientResult(_run(case, ["transient"], progress, log))
@@ -50,7 +56,7 @@ def run(analyses: Union[str, Sequence[str]], case: CaseLike, *, progress: Progre
         log: Log = None) -> Dict[str, Any]:
     """What the command line's results.json holds after ``drillflex <analyses> CASE``, as a dict.
 
-    ``analyses``: "static", "modes", "vibration", "buckling", "transient", a list of them, or "run"
+    ``analyses``: "static", "modes", "vibration", "buckling", "transient", "tendency", a list of them, or "run"
     (those the case lists). Values are in the case's output units, as in the file; its lists of
     numbers and of records are numpy arrays (drillflex.tables), and ``tables`` holds each CSV table
     the command line writes beside it.

@@ -16,7 +16,7 @@ namespace py = pybind11;
 // The analyses in the order a run makes them (the command line's `run`).
 inline constexpr pipeline::Analysis kAnalyses[] = {pipeline::Analysis::Static, pipeline::Analysis::Modes,
                                                    pipeline::Analysis::Vibration, pipeline::Analysis::Buckling,
-                                                   pipeline::Analysis::Transient};
+                                                   pipeline::Analysis::Transient, pipeline::Analysis::Tendency};
 
 // A case as Python holds it: immutable once read, shared by the runs made from it.
 struct CaseHandle {
@@ -44,6 +44,7 @@ void BindStaticResult(py::class_<RunHandle>& run);
 void BindModesResult(py::class_<RunHandle>& run);
 void BindVibrationResult(py::class_<RunHandle>& run);
 void BindBucklingResult(py::class_<RunHandle>& run);
+void BindTendencyResult(py::class_<RunHandle>& run);
 void BindTransientResult(py::class_<RunHandle>& run);
 
 }  // namespace drillflex::python

@@ -111,6 +111,15 @@ void BindStaticResult(py::class_<RunHandle>& run) {
     } else {
       fields["pipe_above"] = py::none();
     }
+    if (result.mwd) {
+      const analyses::MwdSag& mwd = *result.mwd;
+      fields["mwd"] = py::dict(py::arg("s") = mwd.s, py::arg("md") = mwd.md,
+                               py::arg("axis_inclination") = mwd.axis_inclination,
+                               py::arg("hole_inclination") = mwd.hole_inclination, py::arg("sag") = mwd.sag,
+                               py::arg("axis_azimuth") = mwd.axis_azimuth, py::arg("hole_azimuth") = mwd.hole_azimuth);
+    } else {
+      fields["mwd"] = py::none();
+    }
     return fields;
   });
 }

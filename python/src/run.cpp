@@ -16,7 +16,7 @@ pipeline::Analysis ParseAnalysis(const std::string& name) {
   for (const pipeline::Analysis analysis : kAnalyses) {
     if (name == pipeline::AnalysisName(analysis)) return analysis;
   }
-  throw py::value_error("unknown analysis '" + name + "': expected static, modes, vibration, buckling or transient");
+  throw py::value_error("unknown analysis '" + name + "': expected static, modes, vibration, buckling, transient or tendency");
 }
 
 // `analyses`: names of analyses, or ["run"] for those the case lists.
@@ -30,6 +30,7 @@ pipeline::AnalysisRequest Request(const io::Case& c, const std::vector<std::stri
       case pipeline::Analysis::Buckling: request.buckling = true; break;
       case pipeline::Analysis::Vibration: request.vibration = true; break;
       case pipeline::Analysis::Transient: request.transient = true; break;
+      case pipeline::Analysis::Tendency: request.tendency = true; break;
     }
   }
   if (!request.Any()) throw py::value_error("no analysis to run");
@@ -106,6 +107,7 @@ void BindRun(py::module_& m) {
   BindVibrationResult(run);
   BindBucklingResult(run);
   BindTransientResult(run);
+  BindTendencyResult(run);
 
   m.def("run", &Run, py::arg("case"), py::arg("analyses"), py::arg("progress") = py::none(), py::arg("log") = py::none(),
         py::arg("keep_finished") = false,

@@ -20,6 +20,9 @@ enum class StaticMethod { StrategyChain, DynamicRelaxation };
 struct StaticSettings {
   StaticMethod method = StaticMethod::StrategyChain;
   int max_iterations = 200;
+  // Where the MWD's inclination sensor sits, m from the bit (analyses/mwd_sag.hpp); none: the middle of
+  // the string's first MWD component.
+  std::optional<double> mwd_at;
   // Where the solver's progress goes (one line per stage and Newton iteration); none when empty.
   std::function<void(const std::string&)> log;
 };

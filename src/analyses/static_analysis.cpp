@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/mwd_sag.hpp"
 #include "analyses/static_solve.hpp"
 #include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
@@ -235,7 +236,14 @@ StaticResult RunStatic(const model::BuiltModel& built, const StaticSettings& set
 StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltModel& built,
                              const StaticSettings& settings, const model::LoadParameters& parameters,
                              const VecX* start) {
-  return ToStaticResult(built, SolveStaticEquilibrium(input, built, settings, parameters, start), parameters);
+  StaticResult result =
+      ToStaticResult(built, SolveStaticEquilibrium(input, built, settings, parameters, start), parameters);
+  if (input.trajectory) {
+    if (const auto sensor = MwdSensorAt(input.string, settings.mwd_at)) {
+      result.mwd = ComputeMwdSag(result.nodes, *input.trajectory, *sensor);
+    }
+  }
+  return result;
 }
 
 std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q,

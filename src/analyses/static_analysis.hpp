@@ -60,6 +60,17 @@ struct PipeAboveReaction {
   bool buckled = false;        // compressed beyond its F_sin: it holds nothing
 };
 
+// The MWD sensor's sag (analyses/mwd_sag.hpp): its axis against the hole's at the sensor.
+struct MwdSag {
+  double s = 0.0;                     // the sensor, m from the bit
+  double md = 0.0;                    // its MD, m
+  double axis_inclination = 0.0;      // what the sensor reads, rad
+  double hole_inclination = 0.0;      // the hole's at the sensor's MD, rad
+  double sag = 0.0;                   // axis − hole, rad (> 0: the sensor reads high; subtract it)
+  double axis_azimuth = 0.0;          // rad, [0, 2π)
+  double hole_azimuth = 0.0;          // rad, [0, 2π)
+};
+
 // A wall contact that carries force (model/wall_contact.hpp), for output.
 struct ContactReport {
   double s = 0.0;                 // m from the bit
@@ -93,6 +104,7 @@ struct StaticResult {
   std::optional<PipeAboveReaction> pipe_above;  // with the pipe above the model (model.top)
   std::vector<ContactReport> contacts;     // wall contacts carrying force, from the bit upward
   std::optional<BitReport> bit;            // in a well, with a support at the bit
+  std::optional<MwdSag> mwd;               // in a well, with an MWD component or analyses.static.mwd_at
   // How the equilibrium was found (results.json `static.method_used`; analyses/static_solve.hpp):
   // "newton" (load stepping), "energy-minimum" (the energy trust region from the resting start),
   // "energy-minimum+friction" (then continued in the sliding friction), "continuation" (Newton from

@@ -13,9 +13,6 @@
 namespace drillflex::analyses {
 namespace {
 
-// The hole above the model's top that the steady hole keeps straight: enough for the pipe above
-// (model/string_above.hpp) to read the hole's curvature at the top from the arc or the line.
-constexpr double kHoleAboveTop = 30.0;  // m
 
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
@@ -40,7 +37,7 @@ class Search {
          const TendencySettings& settings)
       : input_(input), build_(build), statics_(statics), settings_(settings),
         bit_md_(input.bit_md), model_length_(model::StringLength(input.string)),
-        top_md_(std::max(0.0, input.bit_md - model_length_ - kHoleAboveTop)) {}
+        top_md_(std::max(0.0, input.bit_md - model_length_ - kTendencyHoleAboveTop)) {}
 
   // The case's own equilibrium, in the case's hole: the first static's start.
   void StartFrom(const model::BuiltModel& case_model, const StaticResult& equilibrium) {
@@ -130,13 +127,15 @@ std::string DescribeEnd(const TendencyPoint& point) {
 
 // Newton's proposal with each component kept inside the bracket the statics so far give it: the
 // nearest curvatures on either side of the current one where that component of the deviation has
-// the other sign. Outside it (a contact that opened or closed between), the component goes to the
+// the other sign (among the statics at about the current value of the other component). Outside it (a contact that opened or closed between), the component goes to the
 // bracket's regula falsi point, kept a tenth of the bracket from its ends so that the bracket shrinks.
 Vec2 KeepInBrackets(const std::vector<Evaluated>& evaluated, const Vec2& current, Vec2 proposal) {
   for (int j = 0; j < 2; ++j) {
     const Evaluated* positive = nullptr;
     const Evaluated* negative = nullptr;
     for (const Evaluated& e : evaluated) {
+      // Only statics at (about) the current value of the other component bracket this one.
+      if (std::abs(AsVector(e.point.curvature)[1 - j] - current[1 - j]) > kTendencyWarmStep) continue;
       const double value = Deviation(e.point)[j];
       const Evaluated*& side = value > 0.0 ? positive : negative;
       if (value == 0.0) continue;
@@ -148,7 +147,7 @@ Vec2 KeepInBrackets(const std::vector<Evaluated>& evaluated, const Vec2& current
     if (!positive || !negative) continue;
     const double a = AsVector(positive->point.curvature)[j], b = AsVector(negative->point.curvature)[j];
     const double lo = std::min(a, b), hi = std::max(a, b);
-    if (proposal[j] > lo && proposal[j] < hi) continue;
+    if (hi - lo < kTendencyCurvatureTolerance || (proposal[j] > lo && proposal[j] < hi)) continue;
     const double da = Deviation(positive->point)[j], db = Deviation(negative->point)[j];
     const double falsi = a - da * (b - a) / (db - da);
     proposal[j] = std::clamp(falsi, lo + 0.1 * (hi - lo), hi - 0.1 * (hi - lo));
@@ -159,7 +158,7 @@ Vec2 KeepInBrackets(const std::vector<Evaluated>& evaluated, const Vec2& current
 }  // namespace
 
 double TendencyArcLength(const model::StringConfig& string, double curvature) {
-  const double length = model::StringLength(string);
+  const double length = model::StringLength(string) + kTendencyHoleAboveTop;
   double bha = 0.0;
   for (const model::Component& component : string.components) {
     if (component.type == model::ComponentType::Pipe) break;

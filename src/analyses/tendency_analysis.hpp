@@ -84,8 +84,13 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
 // The reasons `input` cannot have a tendency, as (key, message) for an InputError; none when it can.
 std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const model::ModelInput& input);
 
-// The length over which the steady hole is an arc: the modelled string, but no longer than a quarter
-// turn of the arc, and no shorter than the BHA (the string below its first drill pipe), m.
+// The hole above the model's top that the steady hole has too: the BHA drilled it, so the arc goes on
+// there, and the pipe above the top (model/string_above.hpp) lies in it.
+inline constexpr double kTendencyHoleAboveTop = 30.0;  // m
+
+// The length over which the steady hole is an arc: the modelled string and kTendencyHoleAboveTop above
+// it, but no longer than a quarter turn of the arc (straight above that), and no shorter than the BHA
+// (the string below its first drill pipe), m.
 double TendencyArcLength(const model::StringConfig& string, double curvature);
 
 }  // namespace drillflex::analyses

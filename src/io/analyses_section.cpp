@@ -13,8 +13,10 @@ using units::Quantity;
 
 analyses::StaticSettings ReadStatic(const YamlView& node) {
   node.ExpectMap("the static analysis settings");
-  node.AllowOnlyKeys({"method", "max_iterations"});
+  node.AllowOnlyKeys({"method", "max_iterations", "mwd_at"});
   analyses::StaticSettings settings;
+  settings.mwd_at = node.OptionalQuantity("mwd_at", Quantity::Length);
+  if (settings.mwd_at && *settings.mwd_at < 0.0) node.Child("mwd_at").Fail("expected a distance from the bit of at least 0");
   if (const auto method = node.OptionalChild("method")) {
     const std::string name = method->AsString();
     if (name == "newton") settings.method = analyses::StaticMethod::StrategyChain;

@@ -203,6 +203,16 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
                                             {"tension", out(pipe.tension, Quantity::Force)},
                                             {"buckled", pipe.buckled}};
   }
+  if (result.mwd) {
+    const analyses::MwdSag& mwd = *result.mwd;
+    files.json()["static"]["mwd"] = {{"s", out(mwd.s, Quantity::Length)},
+                                     {"md", out(mwd.md, Quantity::Length)},
+                                     {"axis_inclination", out(mwd.axis_inclination, Quantity::Angle)},
+                                     {"hole_inclination", out(mwd.hole_inclination, Quantity::Angle)},
+                                     {"sag", out(mwd.sag, Quantity::Angle)},
+                                     {"axis_azimuth", out(mwd.axis_azimuth, Quantity::Angle)},
+                                     {"hole_azimuth", out(mwd.hole_azimuth, Quantity::Angle)}};
+  }
 }
 
 void AddModesResults(const Case& c, const analyses::ModesResult& result, ResultFiles& files) {

@@ -102,6 +102,9 @@ void ReadMotorKeys(const YamlView& item, model::Component& component) {
   if (component.bend_angle && (*component.bend_angle < 0.0 || *component.bend_angle > 5.0 * kDegree)) {
     item.Child("bend").Fail("expected a bend angle between 0 and 5 deg");
   }
+  if (component.toolface && (*component.toolface < 0.0 || *component.toolface > 2.0 * kPi)) {
+    item.Child("toolface").Fail("expected a toolface between 0 and 360 deg (0 the high side, 90 the right)");
+  }
   if (component.bend_angle && !component.bend_to_bit) {
     item.Child("bend").Fail("a bent motor needs 'bend_to_bit', the distance from the bit to the bend");
   }

@@ -22,6 +22,14 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
   }
   files.Add("tendency.csv", table.ToString());
   const analyses::BitReport& bit = result.trace.at(static_cast<std::size_t>(result.steady_index)).bit;
+  // Where the BHA touches the wall in the steady hole.
+  json contacts = json::array();
+  for (const analyses::ContactReport& contact : result.equilibrium.contacts) {
+    contacts.push_back({{"s", out(contact.s, Quantity::Length)},
+                        {"md", out(contact.md, Quantity::Length)},
+                        {"normal_force", out(contact.normal_force, Quantity::Force)},
+                        {"high_side_angle", out(contact.high_side_angle, Quantity::Angle)}});
+  }
   files.json()["tendency"] = {
       {"build_rate", out(result.build_rate, Quantity::DoglegSeverity)},
       {"turn_rate", out(result.turn_rate, Quantity::DoglegSeverity)},
@@ -33,6 +41,7 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
       {"weight_on_bit", out(result.weight_on_bit, Quantity::WeightOnBit)},
       {"arc_length", out(result.arc_length, Quantity::Length)},
       {"statics", result.trace.size()},
+      {"contacts", contacts},
       {"bit",
        {{"side_force", out(bit.side_force, Quantity::Force)},
         {"build_force", out(bit.build_force, Quantity::Force)},

@@ -127,6 +127,13 @@ void WriteStatic(std::ostream& out, const io::Case& c, const analyses::StaticRes
                              lateral_y, Show(c, reaction.force.y(), Quantity::Force), lateral_z,
                              Show(c, reaction.force.z(), Quantity::Force));
   }
+  if (result.mwd) {
+    const analyses::MwdSag& mwd = *result.mwd;
+    out << fmt::format("  MWD sensor at {} from the bit: its axis at {} inclination, the hole at {}: sag {} (subtract it "
+                       "from the survey's inclination)\n",
+                       Show(c, mwd.s, Quantity::Length), Show(c, mwd.axis_inclination, Quantity::Angle, 6),
+                       Show(c, mwd.hole_inclination, Quantity::Angle, 6), Show(c, mwd.sag, Quantity::Angle, 3));
+  }
   if (result.pipe_above) {
     const analyses::PipeAboveReaction& pipe = *result.pipe_above;
     if (pipe.buckled) {

@@ -72,6 +72,10 @@ SweepOutcome SummarizeRun(const CaseResults& results) {
   SweepOutcome outcome;
   outcome.converged = true;
   if (results.static_result) SummarizeStatic(results, outcome);
+  if (results.tendency) {
+    outcome.build_rate = results.tendency->build_rate;
+    outcome.turn_rate = results.tendency->turn_rate;
+  }
   if (results.vibration && !results.vibration->critical_speeds.empty()) {
     double lowest = std::numeric_limits<double>::infinity();
     for (const auto& critical : results.vibration->critical_speeds) lowest = std::min(lowest, critical.rotary_speed);

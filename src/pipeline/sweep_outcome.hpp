@@ -29,6 +29,9 @@ struct SweepOutcome {
   // transient's end).
   double hook_load = kNotComputed;
   double surface_torque = kNotComputed;
+  // rad/m: the steady build and turn rates (tendency).
+  double build_rate = kNotComputed;
+  double turn_rate = kNotComputed;
 };
 
 // What the rig sees of a static equilibrium: the tension at the surface (N; the top support's axial

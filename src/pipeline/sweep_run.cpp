@@ -40,6 +40,8 @@ constexpr HeadlineColumn kHeadlines[] = {
     {"whirl_speed", Quantity::RotarySpeed, &SweepOutcome::whirl_speed},
     {"hook_load", Quantity::Force, &SweepOutcome::hook_load},
     {"surface_torque", Quantity::Moment, &SweepOutcome::surface_torque},
+    {"build_rate", Quantity::DoglegSeverity, &SweepOutcome::build_rate},
+    {"turn_rate", Quantity::DoglegSeverity, &SweepOutcome::turn_rate},
 };
 
 // The words of a row, after the figures: (column, member).

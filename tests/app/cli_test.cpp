@@ -271,6 +271,48 @@ TEST(Cli, VibrationWritesTheCriticalSpeedMapAndPrintsCriticalRpmsAndWindows) {
   EXPECT_FALSE(json.contains("modes"));
 }
 
+// The bundled example's steady build and turn rates: results.json `tendency` in deg/100 ft, and at
+// the steady curvature the bit drills along the hole (d = tilt + S F / WOB = 0, in degrees here);
+// tendency.csv one row a static of the search.
+TEST(Cli, TendencyWritesTheSteadyBuildAndTurnRates) {
+  const fs::path out = FreshDirectory("tendency");
+  const RunResult result = RunDrillflex("tendency " + kExample + " --no-report -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("tendency: builds"));
+  std::ifstream json_file(out / "results.json");
+  const auto json = nlohmann::json::parse(json_file);
+  const auto& tendency = json["tendency"];
+  const double build = tendency["build_rate"], steerability = tendency["steerability"];
+  EXPECT_GT(build, 0.0);  // a near-bit stabilizer's fulcrum: the bundled BHA builds
+  EXPECT_LT(build, 10.0);
+  const auto& bit = tendency["bit"];
+  const double wob_lbf = 1000.0 * tendency["weight_on_bit"].get<double>();
+  const double deviation =
+      bit["tilt"].get<double>() + steerability * bit["build_force"].get<double>() / wob_lbf * 180.0 / M_PI;
+  EXPECT_LT(std::abs(deviation), 1e-4);
+  const std::string csv = drillflex::test_cli::ReadFile(out / "tendency.csv");
+  EXPECT_THAT(csv, HasSubstr("build_curvature,right_curvature"));
+  EXPECT_THAT(csv, HasSubstr("deg/100ft,deg/100ft"));
+}
+
+TEST(Cli, TendencyRefusesWhatItCannotTakeBeforeSolving) {
+  const fs::path out = FreshDirectory("tendency-bad");
+  // No well: named, nothing solved or written.
+  const RunResult no_well = RunDrillflex("tendency " + WriteCase("tendency-no-well", kCollarYaml).string() + " -o " +
+                                         out.string());
+  EXPECT_EQ(no_well.status, 2) << no_well.output;
+  EXPECT_THAT(no_well.output, HasSubstr("a tendency needs a well"));
+  EXPECT_FALSE(fs::exists(out));
+  // A steerability below 0: the file, its line and the key.
+  const fs::path path = WriteCase("tendency-steerability",
+                                  std::string(kCollarYaml) + "analyses:\n  tendency: {steerability: -0.1}\n");
+  const RunResult negative = RunDrillflex("tendency " + path.string() + " -o " + out.string());
+  EXPECT_EQ(negative.status, 2) << negative.output;
+  EXPECT_THAT(negative.output, HasSubstr("case.yaml:9:"));
+  EXPECT_THAT(negative.output, HasSubstr("analyses.tendency.steerability"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(Cli, VibrationWithAnUnknownMotorSpeedExitsWithTwoAndWritesNothing) {
   const fs::path out = FreshDirectory("vibration-motor");
   const fs::path path = WriteCase(

@@ -177,3 +177,24 @@ def test_units_convert() -> None:
     assert feet == pytest.approx([1.0, 10.0])
     assert drillflex.units.convert(1.0, "klbf", "N") == pytest.approx(4448.2216152605)
     assert drillflex.units.convert([60.0], "rpm", "rad/s")[0] == pytest.approx(2 * np.pi)
+
+
+def test_tendency_typed_result(example: drillflex.Case) -> None:
+    td = drillflex.tendency(example)
+    per_100_ft = 180.0 / np.pi * 30.48  # rad/m to deg/100 ft
+    # The same run's results.json, in the case's field units.
+    stored = json.loads(td.run.results_json()[0])["tendency"]
+    assert td.build_rate * per_100_ft == pytest.approx(stored["build_rate"], rel=1e-12)
+    assert td.turn_rate * per_100_ft == pytest.approx(stored["turn_rate"], rel=1e-12)
+    assert stored["statics"] == len(td.trace)
+    # At the steady curvature the bit drills along the hole: d = tilt + S F / WOB = 0.
+    bit = td.bit
+    assert abs(bit.tilt + td.steerability * bit.build_force / td.weight_on_bit) < 1e-6
+    assert abs(bit.tilt_right + td.steerability * bit.walk_force / td.weight_on_bit) < 1e-6
+    assert "tendency: builds" in str(td)
+
+
+def test_tendency_refuses_a_negative_steerability(example: drillflex.Case) -> None:
+    with pytest.raises(drillflex.InputError) as raised:
+        drillflex.tendency(example.with_values({"analyses.tendency.steerability": "-0.1"}))
+    assert "steerability" in str(raised.value)

@@ -1,0 +1,116 @@
+// V9 of validation.md: the directional tendency (analyses/tendency_analysis.hpp).
+//
+// 1. Three-point geometry: a bent motor whose bit, pad and stabilizer are at full gauge, weightless,
+//    with S -> oo: the steady curvature is the circle through the three points, 2 θ (L − b)/(L (L − a))
+//    (v9-tendency/three-point.yaml), within 0.2 %, toward the toolface. Measured at toolfaces 0, 90 and
+//    180: −0.03 %, 88.8° (the high side turns by ΔA cos I along a hole that turns: about 1.2° over the
+//    BHA here), 180°.
+// 2. MADSim's turn-loading static (v9-tendency/madsim-turn.yaml): the bit's, the near-bit pad's and the
+//    stabilizer's contact forces and the largest bending moment within 15 % of MADSim's (measured
+//    +12.4 %, +12.9 %, −10.2 %, +12.6 %).
+// 3. MADSim's sliding motor yield (v9-tendency/madsim-motor.yaml) against WOB and steerability: the yield
+//    rises with WOB from 5 to 35 klbf and moves by less than 0.5°/100 ft from a steerability of 5 % to
+//    25 %, as MADSim's does (13.53 → 15.16, and 14.87 → 14.69 at 30 klbf). The level is not MADSim's:
+//    23.1°/100 ft against 14.87 at 30 klbf (docs/validation.md says what was checked and what is open).
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "validation_support.hpp"
+
+namespace drillflex::validation {
+namespace {
+
+constexpr double kDegreesPerRadian = 57.29577951308232;
+
+// The case `relative` with `from` replaced by `to`, written beside its results; its path.
+std::string Variant(const std::string& relative, const std::string& from, const std::string& to,
+                    const std::string& name) {
+  std::ifstream in(CasePath(relative));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  const std::filesystem::path path = std::filesystem::path(ResultsDirectory(relative) + "-" + name + ".yaml");
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+nlohmann::json RunFile(const std::string& command, const std::string& path) {
+  const std::string output = path + ".results";
+  std::filesystem::remove_all(output);
+  const std::string line = fmt::format("{} {} {} --no-report -o {} > {}.log 2>&1", DRILLFLEX_EXE, command, path, output, output);
+  if (std::system(line.c_str()) != 0) {
+    ADD_FAILURE() << line << " failed";
+    return nlohmann::json::object();
+  }
+  std::ifstream file(output + "/results.json");
+  return nlohmann::json::parse(file);
+}
+
+TEST(V9Tendency, ThreePointMotorIsTheCircleThroughItsContacts) {
+  const double bend = 1.0, a = 2.75, b = 4.75, L = 14.75;  // deg, ft
+  const double three_point = 2.0 * bend * (L - b) / (L * (L - a)) * 100.0;  // deg/100 ft
+  for (const double toolface : {0.0, 90.0, 180.0}) {
+    const std::string path = Variant("v9-tendency/three-point.yaml", "toolface: 0",
+                                     fmt::format("toolface: {:g}", toolface), fmt::format("tf{:g}", toolface));
+    const auto results = RunFile("tendency", path);
+    ASSERT_TRUE(results.contains("tendency"));
+    const auto& t = results["tendency"];
+    const double build = t["build_rate"], right = t["right_curvature"], dogleg = t["dogleg_severity"];
+    const double direction = std::atan2(right, build) * kDegreesPerRadian;
+    std::printf("V9 three-point, toolface %g: dogleg %.4f deg/100 ft (three-point %.4f, %+.3f %%), toward %.2f deg\n",
+                toolface, dogleg, three_point, 100.0 * RelativeError(dogleg, three_point), direction);
+    EXPECT_LT(std::abs(RelativeError(dogleg, three_point)), 2e-3);
+    EXPECT_LT(std::abs(std::remainder(direction - toolface, 360.0)), 1.5);
+  }
+}
+
+TEST(V9Tendency, MadsimTurnLoadingStaticWithinFifteenPercent) {
+  const auto results = RunCase("static", "v9-tendency/madsim-turn.yaml");
+  ASSERT_TRUE(results.contains("static"));
+  const auto& st = results["static"];
+  double pad = 0.0, stabilizer = 0.0, peak_moment = 0.0, peak_at = 0.0;
+  for (const auto& contact : st["contacts"]) {
+    const double s = contact["s"];
+    if (std::abs(s - 2.75) < 0.6) pad += contact["normal_force"].get<double>();
+    if (std::abs(s - 36.75) < 0.6) stabilizer += contact["normal_force"].get<double>();
+  }
+  for (const auto& node : st["nodes"]) {
+    if (node["bending_moment"].get<double>() > peak_moment) {
+      peak_moment = node["bending_moment"];
+      peak_at = node["s"];
+    }
+  }
+  const double bit = st["bit"]["side_force"];
+  std::printf("V9 MADSim turn: bit %.0f lbf (%+.1f %%), pad %.0f lbf (%+.1f %%), stabilizer %.0f lbf (%+.1f %%), "
+              "largest bending moment %.0f ft*lbf at %.2f ft (%+.1f %%)\n",
+              bit, 100.0 * RelativeError(bit, 14800.0), pad, 100.0 * RelativeError(pad, 17342.0), stabilizer,
+              100.0 * RelativeError(stabilizer, 2187.0), peak_moment, peak_at, 100.0 * RelativeError(peak_moment, 40574.0));
+  EXPECT_LT(std::abs(RelativeError(bit, 14800.0)), 0.15);
+  EXPECT_LT(std::abs(RelativeError(pad, 17342.0)), 0.15);
+  EXPECT_LT(std::abs(RelativeError(stabilizer, 2187.0)), 0.15);
+  EXPECT_LT(std::abs(RelativeError(peak_moment, 40574.0)), 0.15);
+  EXPECT_NEAR(peak_at, 2.75, 0.3);  // at the near-bit pad, as MADSim's
+}
+
+double Yield(const std::string& replace, const std::string& with, const std::string& name) {
+  const auto results = RunFile("tendency", Variant("v9-tendency/madsim-motor.yaml", replace, with, name));
+  return results.contains("tendency") ? results["tendency"]["build_rate"].get<double>() : std::nan("");
+}
+
+TEST(V9Tendency, MadsimMotorYieldRisesWithWobAndHardlyMovesWithSteerability) {
+  const double at_5 = Yield("wob: 30,", "wob: 5,", "wob5");
+  const double at_35 = Yield("wob: 30,", "wob: 35,", "wob35");
+  const double s5 = Yield("steerability: 0.05", "steerability: 0.05", "s5");
+  const double s25 = Yield("steerability: 0.05", "steerability: 0.25", "s25");
+  std::printf("V9 MADSim motor yield: WOB 5 klbf %.2f deg/100 ft (MADSim 13.53), 35 klbf %.2f (15.16); at 30 klbf "
+              "S 5 %% %.2f (14.87), 25 %% %.2f (14.69)\n",
+              at_5, at_35, s5, s25);
+  EXPECT_GT(at_35, at_5 + 0.5);
+  EXPECT_LT(std::abs(s25 - s5), 0.5);
+}
+
+}  // namespace
+}  // namespace drillflex::validation
