@@ -163,6 +163,9 @@ inline constexpr double kDefaultSteerability = 0.05;
 // What a directional tendency is asked (case key analyses.tendency; analyses/tendency_analysis.hpp).
 struct TendencySettings {
   double steerability = kDefaultSteerability;  // S ≥ 0: lateral over axial drillability (1e6: zero side force)
+  // The steady rates also against WOB, inclination and the stabilizers' gauge
+  // (analyses/tendency_sensitivity.hpp): ten more tendencies.
+  bool sensitivities = false;
 };
 
 struct AnalysesConfig {

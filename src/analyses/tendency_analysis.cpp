@@ -193,7 +193,7 @@ std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const mo
 
 TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
                            const TendencySettings& settings, const model::BuiltModel* case_model,
-                           const StaticResult* case_equilibrium) {
+                           const StaticResult* case_equilibrium, std::optional<HoleCurvature> first) {
   if (const auto problem = TendencyInputProblem(input)) throw InputError({}, problem->first, problem->second);
   if (!(settings.steerability >= 0.0) || !std::isfinite(settings.steerability)) {
     throw InputError({}, "analyses.tendency.steerability", "the steerability must be a number >= 0");
@@ -201,7 +201,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   Search search(input, build, statics, settings);
   if (case_model && case_equilibrium) search.StartFrom(*case_model, *case_equilibrium);
 
-  Vec2 kappa = AsVector(CurvatureAtBit(*input.trajectory, input.bit_md));
+  Vec2 kappa = AsVector(first.value_or(CurvatureAtBit(*input.trajectory, input.bit_md)));
   kappa = kappa.cwiseMax(-kTendencyCurvatureLimit).cwiseMin(kTendencyCurvatureLimit);
   const auto deviation_at = [&](const Vec2& at) { return Deviation(search.Evaluate(at).point); };
   Vec2 d = deviation_at(kappa);

@@ -45,6 +45,18 @@ inline constexpr double kTendencyDifferenceStep = 0.01 * kDegreesPer100Ft;
 inline constexpr double kTendencyWarmStep = 0.05 * kDegreesPer100Ft;
 inline constexpr int kTendencyEvaluations = 24;
 
+// The steady rates against one of the BHA's handles (analyses/tendency_sensitivity.hpp).
+struct TendencyCurve {
+  std::vector<double> values;      // the handle's values (SI: N, rad, m)
+  std::vector<double> build_rate;  // rad/m; NaN where that tendency failed
+  std::vector<double> turn_rate;   // rad/m
+};
+struct TendencySensitivities {
+  TendencyCurve weight_on_bit;     // the case's WOB × 0.5, 0.75, 1, 1.25, 1.5
+  TendencyCurve inclination;       // the bit's inclination −10°, −5°, 0, +5°, +10° (within 0–90°)
+  TendencyCurve gauge_reduction;   // every blade's OD less 0, 1/16 in, 1/8 in
+};
+
 // One static of the search: the hole's curvature and what the bit does in it.
 struct TendencyPoint {
   HoleCurvature curvature;      // 1/m
@@ -67,6 +79,7 @@ struct TendencyResult {
   std::vector<TendencyPoint> trace;  // every static of the search, in order
   int steady_index = 0;              // the answer's in `trace`
   StaticResult equilibrium;       // in the steady hole
+  std::optional<TendencySensitivities> sensitivities;  // when the settings ask for them
 };
 
 // Builds a model for an input (the pipeline's, with the case's reductions).
@@ -77,9 +90,11 @@ using ModelFactory = std::function<model::BuiltModel(const model::ModelInput&)>;
 // own model and equilibrium (in the case's hole): the first static starts from it. Throws InputError
 // (no file: the caller names it) for a string the tendency cannot take, and SolverError when a static
 // fails or no curvature within ±30°/100 ft is steady (with d and the side force at both ends).
+// `first`: the curvature the search starts from (default: the case hole's own at the bit).
 TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
                            const TendencySettings& settings, const model::BuiltModel* case_model = nullptr,
-                           const StaticResult* case_equilibrium = nullptr);
+                           const StaticResult* case_equilibrium = nullptr,
+                           std::optional<HoleCurvature> first = std::nullopt);
 
 // The reasons `input` cannot have a tendency, as (key, message) for an InputError; none when it can.
 std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const model::ModelInput& input);

@@ -282,8 +282,11 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::
   if (const auto item = node.PresentChild("roadmap")) config.roadmap = ReadRoadmap(*item);
   if (const auto item = node.PresentChild("tendency")) {
     item->ExpectMap("the tendency settings");
-    item->AllowOnlyKeys({"steerability"});
+    item->AllowOnlyKeys({"steerability", "sensitivities"});
     config.tendency = analyses::TendencySettings{};
+    if (const auto sensitivities = item->OptionalChild("sensitivities")) {
+      config.tendency->sensitivities = sensitivities->AsBool();
+    }
     if (const auto steerability = item->OptionalChild("steerability")) {
       config.tendency->steerability = steerability->AsQuantity(units::Quantity::Dimensionless);
       if (!(config.tendency->steerability >= 0.0)) {

@@ -51,7 +51,8 @@ json UnitNames(const Out& out) {
   return {{"length", out.Unit(Quantity::Length)},         {"diameter", out.Unit(Quantity::Diameter)},
           {"force", out.Unit(Quantity::Force)},           {"wob", out.Unit(Quantity::WeightOnBit)},
           {"moment", out.Unit(Quantity::Moment)},         {"stress", out.Unit(Quantity::Stress)},
-          {"rpm", out.Unit(Quantity::RotarySpeed)},       {"system", std::string(units::SystemName(out.system))}};
+          {"rpm", out.Unit(Quantity::RotarySpeed)},       {"dogleg", out.Unit(Quantity::DoglegSeverity)},
+          {"system", std::string(units::SystemName(out.system))}};
 }
 
 // JSON inside <script type="application/json">: "</" would end the element early.

@@ -1,6 +1,8 @@
 // "tendency" and tendency.csv: the steady build and turn rates (analyses/tendency_analysis.hpp).
 #include "io/analysis_results.hpp"
 
+#include <cmath>
+
 namespace drillflex::io {
 
 using nlohmann::json;
@@ -13,7 +15,12 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
   CsvTable table({"build_curvature", "right_curvature", "build_force", "walk_force", "tilt_build", "tilt_right",
                   "deviation_build", "deviation_right"},
                  {rate_unit, rate_unit, force_unit, force_unit, "deg", "deg", "deg", "deg"});
+  json trace = json::array();
   for (const analyses::TendencyPoint& point : result.trace) {
+    trace.push_back({{"build_curvature", out(point.curvature.build, Quantity::DoglegSeverity)},
+                     {"right_curvature", out(point.curvature.right, Quantity::DoglegSeverity)},
+                     {"deviation_build", out(point.deviation_build, Quantity::Angle)},
+                     {"deviation_right", out(point.deviation_right, Quantity::Angle)}});
     table.AddRow({out(point.curvature.build, Quantity::DoglegSeverity),
                   out(point.curvature.right, Quantity::DoglegSeverity), out(point.bit.build_force, Quantity::Force),
                   out(point.bit.walk_force, Quantity::Force), out(point.bit.tilt, Quantity::Angle),
@@ -42,12 +49,31 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
       {"arc_length", out(result.arc_length, Quantity::Length)},
       {"statics", result.trace.size()},
       {"contacts", contacts},
+      {"trace", trace},
       {"bit",
        {{"side_force", out(bit.side_force, Quantity::Force)},
         {"build_force", out(bit.build_force, Quantity::Force)},
         {"walk_force", out(bit.walk_force, Quantity::Force)},
         {"tilt", out(bit.tilt, Quantity::Angle)},
         {"tilt_right", out(bit.tilt_right, Quantity::Angle)}}}};
+  if (result.sensitivities) {
+    // A failed point is null (NaN in SI).
+    const auto rates = [&](const std::vector<double>& values) {
+      json list = json::array();
+      for (const double v : values) list.push_back(std::isfinite(v) ? json(out(v, Quantity::DoglegSeverity)) : json());
+      return list;
+    };
+    const auto curve = [&](const analyses::TendencyCurve& c, Quantity quantity) {
+      json values = json::array();
+      for (const double v : c.values) values.push_back(out(v, quantity));
+      return json{{"values", values}, {"build_rate", rates(c.build_rate)}, {"turn_rate", rates(c.turn_rate)}};
+    };
+    const analyses::TendencySensitivities& s = *result.sensitivities;
+    json gauge = curve(s.gauge_reduction, Quantity::Diameter);
+    files.json()["tendency"]["sensitivities"] = {{"weight_on_bit", curve(s.weight_on_bit, Quantity::WeightOnBit)},
+                                                 {"inclination", curve(s.inclination, Quantity::Angle)},
+                                                 {"gauge_reduction", gauge}};
+  }
 }
 
 }  // namespace drillflex::io

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/tendency_sensitivity.hpp"
 #include "analyses/transient_start_places.hpp"
 #include "core/error.hpp"
 #include "core/profile.hpp"
@@ -80,10 +81,15 @@ analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_mode
   const analyses::ModelFactory build = [&case_model](const model::ModelInput& input) {
     return BuildModel(input, *case_model.cache);
   };
+  const analyses::TendencySettings settings = c.analyses.tendency.value_or(analyses::TendencySettings{});
+  const analyses::StaticSettings statics = CaseStaticSettings(c, observer);
   try {
-    return analyses::RunTendency(case_model.input, build, CaseStaticSettings(c, observer),
-                                 c.analyses.tendency.value_or(analyses::TendencySettings{}),
-                                 equilibrium ? &case_model.built : nullptr, equilibrium);
+    analyses::TendencyResult result = analyses::RunTendency(case_model.input, build, statics, settings,
+                                                            equilibrium ? &case_model.built : nullptr, equilibrium);
+    if (settings.sensitivities) {
+      result.sensitivities = analyses::ComputeTendencySensitivities(case_model.input, build, statics, settings, result);
+    }
+    return result;
   } catch (const InputError& e) {  // the string the tendency cannot take: name the case file
     if (!e.location().file.empty()) throw;
     throw InputError({c.file, e.location().line, e.location().column}, e.key_path(), e.message());

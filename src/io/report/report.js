@@ -669,6 +669,36 @@
     }
   }
 
+  // ---- tendency ----------------------------------------------------------------------------------
+  function tendencySection(nav) {
+    const t = R.tendency;
+    const s = section('tendency', 'Directional tendency');
+    nav.appendChild(el('a', {href: '#tendency', text: 'tendency'}));
+    const p = el('p');
+    const verb = (rate, up, down) => (rate >= 0 ? up : down);
+    p.append(`The steady curvature, where the bit drills along the hole it is in (bit steerability ${num(t.steerability, 3)}, WOB ${num(t.weight_on_bit, 4)} ${U.wob}, at ${num(t.inclination, 4)}° inclination): `,
+             verb(t.build_rate, 'builds ', 'drops '), value(Math.abs(t.build_rate), U.dogleg, 'tendency.build_rate'), ' and ',
+             verb(t.turn_rate, 'turns right ', 'turns left '), value(Math.abs(t.turn_rate), U.dogleg, 'tendency.turn_rate'),
+             ` (dogleg ${num(t.dogleg_severity, 4)} ${U.dogleg}; ${t.statics} statics). There the bit pushes the formation with ${num(t.bit.side_force, 4)} ${U.force} (build ${num(t.bit.build_force, 4)}, walk ${num(t.bit.walk_force, 4)}) and tilts ${num(t.bit.tilt, 3)}° toward the high side.`);
+    s.appendChild(p);
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    const trace = t.trace || [];
+    if (trace.length) {
+      plot(grid, {title: 'The search: the bit\'s sideways penetration against the hole\'s build', x: `build curvature (${U.dogleg})`, y: 'deviation toward the high side (deg)',
+        series: [{label: 'statics', x: column(trace, 'build_curvature'), y: column(trace, 'deviation_build'), points: true, width: 0}],
+        vLines: [{x: t.build_rate, label: `steady ${num(t.build_rate, 4)}`, color: '#d62728'}]});
+    }
+    const sens = t.sensitivities;
+    if (sens) {
+      const rates = (curve, label) => [{label: 'build rate', x: curve.values, y: curve.build_rate, points: true, width: 2, color: COLORS[0]},
+                                      {label: 'turn rate', x: curve.values, y: curve.turn_rate, points: true, width: 2, color: COLORS[1]}];
+      plot(grid, {title: 'Against the weight on bit', x: `WOB (${U.wob})`, y: `rate (${U.dogleg})`, series: rates(sens.weight_on_bit)});
+      plot(grid, {title: 'Against the inclination', x: 'inclination at the bit (deg)', y: `rate (${U.dogleg})`, series: rates(sens.inclination)});
+      plot(grid, {title: 'Against the stabilizers\' gauge', x: `every blade's OD less (${U.diameter})`, y: `rate (${U.dogleg})`, series: rates(sens.gauge_reduction)});
+    }
+  }
+
   // ---- transient ---------------------------------------------------------------------------------
   function transientSection(nav) {
     const t = D.transient;
@@ -833,6 +863,7 @@
   if (R.campbell) guarded('Campbell', () => campbellSection(nav));
   part('vibration', R.vibration, () => vibrationSection(nav));
   part('buckling', R.buckling, () => bucklingSection(nav));
+  part('tendency', R.tendency, () => tendencySection(nav));
   part('transient', D.transient, () => transientSection(nav));
   if (R.roadmap) guarded('roadmap', () => roadmapSection(nav));
   if (R.stability) guarded('stability map', () => stabilitySection(nav));
