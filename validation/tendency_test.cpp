@@ -63,6 +63,7 @@ TEST(V9Tendency, ThreePointMotorIsTheCircleThroughItsContacts) {
     std::printf("V9 three-point, toolface %g: dogleg %.4f deg/100 ft (three-point %.4f, %+.3f %%), toward %.2f deg\n",
                 toolface, dogleg, three_point, 100.0 * RelativeError(dogleg, three_point), direction);
     EXPECT_LT(std::abs(RelativeError(dogleg, three_point)), 2e-3);
+    EXPECT_NEAR(t["three_point"]["dogleg_severity"].get<double>(), three_point, 1e-9 * three_point);  // reported beside
     EXPECT_LT(std::abs(std::remainder(direction - toolface, 360.0)), 1.5);
   }
 }

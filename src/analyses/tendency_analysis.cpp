@@ -261,6 +261,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   for (const Evaluated& e : search.evaluated()) result.trace.push_back(e.point);
   result.steady_index = static_cast<int>(answer);
   result.equilibrium = std::move(steady.equilibrium);
+  result.three_point = ComputeThreePointYield(input.string);
   return result;
 }
 

@@ -26,6 +26,7 @@
 #include "analyses/analysis_settings.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/tendency_hole.hpp"
+#include "analyses/three_point_yield.hpp"
 #include "model/builder.hpp"
 
 namespace drillflex::analyses {
@@ -80,6 +81,7 @@ struct TendencyResult {
   int steady_index = 0;              // the answer's in `trace`
   StaticResult equilibrium;       // in the steady hole
   std::optional<TendencySensitivities> sensitivities;  // when the settings ask for them
+  std::optional<ThreePointYield> three_point;          // a bent motor's geometric yield, beside
 };
 
 // Builds a model for an input (the pipeline's, with the case's reductions).

@@ -56,6 +56,14 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
         {"walk_force", out(bit.walk_force, Quantity::Force)},
         {"tilt", out(bit.tilt, Quantity::Angle)},
         {"tilt_right", out(bit.tilt_right, Quantity::Angle)}}}};
+  if (result.three_point) {
+    const analyses::ThreePointYield& yield = *result.three_point;
+    files.json()["tendency"]["three_point"] = {{"dogleg_severity", out(yield.curvature, Quantity::DoglegSeverity)},
+                                               {"toolface", out(yield.toolface, Quantity::Angle)},
+                                               {"pad", out(yield.pad, Quantity::Length)},
+                                               {"bend", out(yield.bend, Quantity::Length)},
+                                               {"stabilizer", out(yield.stabilizer, Quantity::Length)}};
+  }
   if (result.sensitivities) {
     // A failed point is null (NaN in SI).
     const auto rates = [&](const std::vector<double>& values) {

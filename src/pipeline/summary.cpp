@@ -340,6 +340,14 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
                      Show(c, steady.bit.side_force, Quantity::Force), Show(c, steady.bit.build_force, Quantity::Force),
                      Show(c, steady.bit.walk_force, Quantity::Force), Show(c, steady.bit.tilt, Quantity::Angle, 4),
                      Show(c, steady.bit.tilt_right, Quantity::Angle, 4));
+  if (result.three_point) {
+    const analyses::ThreePointYield& yield = *result.three_point;
+    out << fmt::format("  three-point geometric yield {} toward toolface {} (bit, {} at {}, the bend at {}, the blades at {}; "
+                       "rigid, no clearance)\n",
+                       Show(c, yield.curvature, Quantity::DoglegSeverity, 4), Show(c, yield.toolface, Quantity::Angle, 4),
+                       yield.pad < yield.bend ? "the pad" : "the bend", Show(c, yield.pad, Quantity::Length, 4),
+                       Show(c, yield.bend, Quantity::Length, 4), Show(c, yield.stabilizer, Quantity::Length, 4));
+  }
 }
 
 void WriteSummary(std::ostream& out, const io::Case& c, Analysis analysis, const CaseResults& results) {

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "analyses/tendency_analysis.hpp"
 #include "cms/reduction_cache.hpp"
@@ -144,6 +145,34 @@ TEST(Tendency, ZeroSideForceCriterionWhenTheBitSteersAtWill) {
 
 TEST(Tendency, BitAxisCriterionWhenTheBitCannotSteer) {
   ExpectSteadyCurvatureBrackets(0.0, [](const BitReport& bit) { return bit.tilt; }, "tilt");
+}
+
+// A 5° bend 1.5 ft from the bit and full-gauge blades 5.75 ft up: its three-point yield is 174°/100 ft.
+// No curvature within ±30°/100 ft is steady: the search says so, with the bit's deviation and side
+// force at both ends (both deviations toward the high side: the bit wants more build than 30°/100 ft).
+TEST(Tendency, NoSteadyCurvatureWithinThirtyDegreesSaysSoWithBothEnds) {
+  model::ModelInput input = PackedBha();
+  model::Component motor = Part(model::ComponentType::Motor, 6.75, 4.0, 4.0);
+  motor.bend_angle = 5.0 * kDegree;
+  motor.bend_to_bit = 1.5 * kFt;
+  motor.toolface = 0.0;
+  model::Component stabilizer = Part(model::ComponentType::Stabilizer, 6.75, 3.0, 2.0);
+  stabilizer.blade_diameter = 8.5 * kIn;
+  stabilizer.blade_length = 0.5 * kFt;
+  input.string.components = {Part(model::ComponentType::Bit, 8.5, 1.25, 0.75), motor, stabilizer,
+                             Part(model::ComponentType::Collar, 6.75, 2.8125, 30.0)};
+  input.operation.weight_on_bit = 20000.0 * kLbf;
+  try {
+    RunTendency(input, Factory(), StaticSettings{}, TendencySettings{});
+    ADD_FAILURE() << "a steady curvature was found";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    std::printf("[ measure  ] %s\n", message.c_str());
+    EXPECT_NE(message.find("no steady curvature within ±30 deg/100 ft"), std::string::npos) << message;
+    EXPECT_NE(message.find("at -30 deg/100 ft the bit deviates +"), std::string::npos) << message;
+    EXPECT_NE(message.find("at +30 deg/100 ft the bit deviates +"), std::string::npos) << message;
+    EXPECT_NE(message.find("side force"), std::string::npos) << message;
+  }
 }
 
 TEST(Tendency, RefusesAStringItCannotTake) {
