@@ -68,6 +68,18 @@ TEST(V9Tendency, ThreePointMotorIsTheCircleThroughItsContacts) {
   }
 }
 
+// The same motor rotating (60 rpm): its bend sweeps every toolface and the deviation averaged over
+// them vanishes in the hole of no curvature (by the geometry's symmetry): the BHA drills straight.
+TEST(V9Tendency, ThreePointMotorRotatingDrillsStraight) {
+  const auto results = RunFile("tendency", Variant("v9-tendency/three-point.yaml", "rpm: 0", "rpm: 60", "rotating"));
+  ASSERT_TRUE(results.contains("tendency"));
+  const auto& t = results["tendency"];
+  std::printf("V9 three-point rotating: dogleg %.3g deg/100 ft over %d toolfaces\n", t["dogleg_severity"].get<double>(),
+              t["toolfaces"].get<int>());
+  EXPECT_EQ(t["toolfaces"].get<int>(), 4);
+  EXPECT_LT(t["dogleg_severity"].get<double>(), 0.01);
+}
+
 TEST(V9Tendency, MadsimTurnLoadingStaticWithinFifteenPercent) {
   const auto results = RunCase("static", "v9-tendency/madsim-turn.yaml");
   ASSERT_TRUE(results.contains("static"));

@@ -21,6 +21,7 @@ void BindTendencyResult(py::class_<RunHandle>& run) {
     fields["weight_on_bit"] = result.weight_on_bit;
     fields["arc_length"] = result.arc_length;
     fields["steady_index"] = result.steady_index;
+    fields["toolfaces"] = result.toolfaces;
     py::list trace;
     for (const analyses::TendencyPoint& point : result.trace) {
       trace.append(py::dict(py::arg("build_curvature") = point.curvature.build,

@@ -22,44 +22,102 @@ HoleCurvature AsCurvature(const Vec2& v) { return {v.x(), v.y()}; }
 
 double InDegreesPer100Ft(double curvature) { return curvature / kDegreesPer100Ft; }
 
-// One evaluated curvature with what a later static starts from.
-struct Evaluated {
-  TendencyPoint point;
+// A static solved in a hole, with what a later static of the same variant starts from.
+struct Solved {
+  Vec2 curvature;
   well::Trajectory hole;
   std::shared_ptr<const model::BuiltModel> built;
   VecX q;
+};
+
+// One evaluated curvature: the point (averaged over the variants) and the first variant's equilibrium.
+struct Evaluated {
+  TendencyPoint point;
   StaticResult equilibrium;
 };
+
+// The strings whose deviation a point averages: the case's alone, or a rotating bent motor's bend at
+// kRotatingToolfaces toolfaces a quarter turn apart (the bend sweeps them all in a revolution; four
+// samples average the deviation exactly up to its third harmonic in the toolface).
+constexpr int kRotatingToolfaces = 4;
+
+std::vector<model::ModelInput> Variants(const model::ModelInput& input) {
+  if (!(input.operation.rotary_speed > 0.0)) return {input};
+  for (std::size_t i = 0; i < input.string.components.size(); ++i) {
+    const model::Component& component = input.string.components[i];
+    if (!component.bend_angle || !(*component.bend_angle > 0.0)) continue;
+    std::vector<model::ModelInput> variants;
+    for (int k = 0; k < kRotatingToolfaces; ++k) {
+      model::ModelInput variant = input;
+      variant.string.components[i].toolface = std::fmod(component.toolface.value_or(0.0) + 2.0 * kPi * k / kRotatingToolfaces, 2.0 * kPi);
+      variants.push_back(std::move(variant));
+    }
+    return variants;
+  }
+  return {input};
+}
 
 class Search {
  public:
   Search(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
          const TendencySettings& settings)
-      : input_(input), build_(build), statics_(statics), settings_(settings),
-        bit_md_(input.bit_md), model_length_(model::StringLength(input.string)),
+      : input_(input), build_(build), statics_(statics), settings_(settings), variants_(Variants(input)),
+        solved_(variants_.size()), bit_md_(input.bit_md), model_length_(model::StringLength(input.string)),
         top_md_(std::max(0.0, input.bit_md - model_length_ - kTendencyHoleAboveTop)) {}
 
-  // The case's own equilibrium, in the case's hole: the first static's start.
-  void StartFrom(const model::BuiltModel& case_model, const StaticResult& equilibrium) {
-    case_model_ = &case_model;
-    case_q_ = equilibrium.q;
-  }
+  int variant_count() const { return static_cast<int>(variants_.size()); }
 
   const Evaluated& Evaluate(const Vec2& kappa) {
-    model::ModelInput hole_input = input_;
     const double arc = TendencyArcLength(input_.string, kappa.norm());
-    hole_input.trajectory = ConstantCurvatureHole(*input_.trajectory, bit_md_, top_md_, arc, AsCurvature(kappa));
-    auto built = std::make_shared<const model::BuiltModel>(build_(hole_input));
-    std::optional<VecX> start;
-    const Evaluated* nearest = Nearest(kappa);
-    if (nearest && (AsVector(nearest->point.curvature) - kappa).norm() > kTendencyWarmStep) nearest = nullptr;
-    if (nearest) {
-      start = CarryIntoHole(nearest->built->system, nearest->q, built->system, bit_md_, nearest->hole,
-                            *hole_input.trajectory);
-    } else if (case_model_ && kappa.isZero(0.0) == false && false) {
-      start = CarryIntoHole(case_model_->system, case_q_, built->system, bit_md_, *input_.trajectory,
-                            *hole_input.trajectory);
+    const well::Trajectory hole = ConstantCurvatureHole(*input_.trajectory, bit_md_, top_md_, arc, AsCurvature(kappa));
+    TendencyPoint point;
+    point.curvature = AsCurvature(kappa);
+    StaticResult first;
+    const double share = 1.0 / static_cast<double>(variants_.size());
+    for (std::size_t v = 0; v < variants_.size(); ++v) {
+      StaticResult equilibrium = Solve(v, kappa, hole);
+      const BitReport& bit = *equilibrium.bit;
+      point.bit.build_force += share * bit.build_force;
+      point.bit.walk_force += share * bit.walk_force;
+      point.bit.tilt += share * bit.tilt;
+      point.bit.tilt_right += share * bit.tilt_right;
+      if (v == 0) {
+        point.method = equilibrium.method;
+        first = std::move(equilibrium);
+      }
     }
+    point.bit.side_force = std::hypot(point.bit.build_force, point.bit.walk_force);
+    const double per_force = settings_.steerability / input_.operation.weight_on_bit;
+    point.deviation_build = point.bit.tilt + per_force * point.bit.build_force;
+    point.deviation_right = point.bit.tilt_right + per_force * point.bit.walk_force;
+    if (statics_.log) {
+      statics_.log(fmt::format("tendency: {:+.4f} deg/100 ft build, {:+.4f} right: side force {:+.4g} N build, "
+                               "{:+.4g} N right; tilt {:+.4e}, {:+.4e} rad; deviation {:+.4e}, {:+.4e} rad ({}{})",
+                               InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), point.bit.build_force,
+                               point.bit.walk_force, point.bit.tilt, point.bit.tilt_right, point.deviation_build,
+                               point.deviation_right, point.method,
+                               variants_.size() > 1 ? fmt::format(", the mean of {} toolfaces", variants_.size()) : ""));
+    }
+    evaluated_.push_back(Evaluated{std::move(point), std::move(first)});
+    return evaluated_.back();
+  }
+
+  std::vector<Evaluated>& evaluated() { return evaluated_; }
+
+ private:
+  // The static of variant v in `hole` (of curvature kappa): from the nearest of its own statics
+  // carried into the hole when it is within kTendencyWarmStep, else from the string resting on the wall.
+  StaticResult Solve(std::size_t v, const Vec2& kappa, const well::Trajectory& hole) {
+    model::ModelInput hole_input = variants_[v];
+    hole_input.trajectory = hole;
+    auto built = std::make_shared<const model::BuiltModel>(build_(hole_input));
+    const Solved* nearest = nullptr;
+    for (const Solved& solved : solved_[v]) {
+      const double distance = (solved.curvature - kappa).norm();
+      if (distance <= kTendencyWarmStep && (!nearest || distance < (nearest->curvature - kappa).norm())) nearest = &solved;
+    }
+    std::optional<VecX> start;
+    if (nearest) start = CarryIntoHole(nearest->built->system, nearest->q, built->system, bit_md_, nearest->hole, hole);
     StaticResult equilibrium;
     try {
       equilibrium = RunStaticInWell(hole_input, *built, statics_, 1.0, start ? &*start : nullptr);
@@ -69,51 +127,19 @@ class Search {
                                     InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), e.what()));
     }
     if (!equilibrium.bit) throw LogicError("RunTendency: the static has no bit report");
-    TendencyPoint point;
-    point.curvature = AsCurvature(kappa);
-    point.bit = *equilibrium.bit;
-    const double per_force = settings_.steerability / input_.operation.weight_on_bit;
-    point.deviation_build = point.bit.tilt + per_force * point.bit.build_force;
-    point.deviation_right = point.bit.tilt_right + per_force * point.bit.walk_force;
-    point.method = equilibrium.method;
-    if (statics_.log) {
-      statics_.log(fmt::format("tendency: {:+.4f} deg/100 ft build, {:+.4f} right: side force {:+.4g} N build, "
-                               "{:+.4g} N right; tilt {:+.4e}, {:+.4e} rad; deviation {:+.4e}, {:+.4e} rad ({})",
-                               InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), point.bit.build_force,
-                               point.bit.walk_force, point.bit.tilt, point.bit.tilt_right, point.deviation_build,
-                               point.deviation_right, point.method));
-    }
-    VecX q = equilibrium.q;
-    evaluated_.push_back(
-        Evaluated{std::move(point), *hole_input.trajectory, std::move(built), std::move(q), std::move(equilibrium)});
-    return evaluated_.back();
-  }
-
-  std::vector<Evaluated>& evaluated() { return evaluated_; }
-
- private:
-  const Evaluated* Nearest(const Vec2& kappa) const {
-    const Evaluated* nearest = nullptr;
-    double best = std::numeric_limits<double>::infinity();
-    for (const Evaluated& e : evaluated_) {
-      const double distance = (AsVector(e.point.curvature) - kappa).norm();
-      if (distance < best) {
-        best = distance;
-        nearest = &e;
-      }
-    }
-    return nearest;
+    solved_[v].push_back(Solved{kappa, hole, std::move(built), equilibrium.q});
+    return equilibrium;
   }
 
   const model::ModelInput& input_;
   const ModelFactory& build_;
   const StaticSettings& statics_;
   const TendencySettings& settings_;
+  const std::vector<model::ModelInput> variants_;
+  std::vector<std::vector<Solved>> solved_;  // per variant
   const double bit_md_;
   const double model_length_;
   const double top_md_;
-  const model::BuiltModel* case_model_ = nullptr;
-  VecX case_q_;
   std::vector<Evaluated> evaluated_;
 };
 
@@ -192,14 +218,12 @@ std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const mo
 }
 
 TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
-                           const TendencySettings& settings, const model::BuiltModel* case_model,
-                           const StaticResult* case_equilibrium, std::optional<HoleCurvature> first) {
+                           const TendencySettings& settings, std::optional<HoleCurvature> first) {
   if (const auto problem = TendencyInputProblem(input)) throw InputError({}, problem->first, problem->second);
   if (!(settings.steerability >= 0.0) || !std::isfinite(settings.steerability)) {
     throw InputError({}, "analyses.tendency.steerability", "the steerability must be a number >= 0");
   }
   Search search(input, build, statics, settings);
-  if (case_model && case_equilibrium) search.StartFrom(*case_model, *case_equilibrium);
 
   Vec2 kappa = AsVector(first.value_or(CurvatureAtBit(*input.trajectory, input.bit_md)));
   kappa = kappa.cwiseMax(-kTendencyCurvatureLimit).cwiseMin(kTendencyCurvatureLimit);
@@ -258,6 +282,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   result.steerability = settings.steerability;
   result.weight_on_bit = input.operation.weight_on_bit;
   result.arc_length = TendencyArcLength(input.string, result.dogleg_severity);
+  result.toolfaces = search.variant_count();
   for (const Evaluated& e : search.evaluated()) result.trace.push_back(e.point);
   result.steady_index = static_cast<int>(answer);
   result.equilibrium = std::move(steady.equilibrium);

@@ -77,6 +77,7 @@ struct TendencyResult {
   double steerability = 0.0;
   double weight_on_bit = 0.0;     // N
   double arc_length = 0.0;        // m: the steady hole's arc above the bit
+  int toolfaces = 1;              // the bend's toolfaces a rotating bent motor's deviation is averaged over
   std::vector<TendencyPoint> trace;  // every static of the search, in order
   int steady_index = 0;              // the answer's in `trace`
   StaticResult equilibrium;       // in the steady hole
@@ -88,15 +89,15 @@ struct TendencyResult {
 using ModelFactory = std::function<model::BuiltModel(const model::ModelInput&)>;
 
 // The steady curvature of the string of `input` (a string in a well, with a bit and a WOB, on the
-// default supports) at its bit depth. `case_model` and `case_equilibrium`, when given, are the case's
-// own model and equilibrium (in the case's hole): the first static starts from it. Throws InputError
-// (no file: the caller names it) for a string the tendency cannot take, and SolverError when a static
-// fails or no curvature within ±30°/100 ft is steady (with d and the side force at both ends).
-// `first`: the curvature the search starts from (default: the case hole's own at the bit).
+// default supports) at its bit depth. A rotating bent motor (operation.rpm > 0) averages the bit's
+// deviation over its bend at four toolfaces a quarter turn apart. Throws InputError (no file: the
+// caller names it) for a string the tendency cannot take, and SolverError when a static fails or no
+// curvature within ±30°/100 ft is steady (with d and the side force at both ends). `first`: the
+// curvature the search starts from (default: the case hole's own at the bit). (The case's own
+// equilibrium is no start: carried from the case's hole, which is not an arc, into the steady one it
+// misfit the stiff couplings and the bit's support by more than Newton from a neighbour recovers.)
 TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
-                           const TendencySettings& settings, const model::BuiltModel* case_model = nullptr,
-                           const StaticResult* case_equilibrium = nullptr,
-                           std::optional<HoleCurvature> first = std::nullopt);
+                           const TendencySettings& settings, std::optional<HoleCurvature> first = std::nullopt);
 
 // The reasons `input` cannot have a tendency, as (key, message) for an InputError; none when it can.
 std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const model::ModelInput& input);

@@ -17,7 +17,7 @@ void AddPoint(const model::ModelInput& input, const ModelFactory& build, const S
               const TendencySettings& settings, const TendencyResult& base, double value, TendencyCurve& curve) {
   curve.values.push_back(value);
   try {
-    const TendencyResult result = RunTendency(input, build, statics, settings, nullptr, nullptr, base.curvature);
+    const TendencyResult result = RunTendency(input, build, statics, settings, base.curvature);
     curve.build_rate.push_back(result.build_rate);
     curve.turn_rate.push_back(result.turn_rate);
   } catch (const SolverError&) {

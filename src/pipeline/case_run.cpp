@@ -76,16 +76,14 @@ model::BuiltModel BuildModel(const model::ModelInput& input, cms::ReductionCache
   return model::BuildSystemModel(input, cache);
 }
 
-analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_model,
-                                         const analyses::StaticResult* equilibrium, const RunObserver& observer) {
+analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_model, const RunObserver& observer) {
   const analyses::ModelFactory build = [&case_model](const model::ModelInput& input) {
     return BuildModel(input, *case_model.cache);
   };
   const analyses::TendencySettings settings = c.analyses.tendency.value_or(analyses::TendencySettings{});
   const analyses::StaticSettings statics = CaseStaticSettings(c, observer);
   try {
-    analyses::TendencyResult result = analyses::RunTendency(case_model.input, build, statics, settings,
-                                                            equilibrium ? &case_model.built : nullptr, equilibrium);
+    analyses::TendencyResult result = analyses::RunTendency(case_model.input, build, statics, settings);
     if (settings.sensitivities) {
       result.sensitivities = analyses::ComputeTendencySensitivities(case_model.input, build, statics, settings, result);
     }
@@ -309,9 +307,7 @@ CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const Run
   }
   if (request.tendency) {
     Attempt(Analysis::Tendency, options, results, [&] {
-      const analyses::StaticResult* start =
-          results.static_result && !static_failed ? &*results.static_result : nullptr;
-      results.tendency = RunCaseTendency(c, results.model, start, observer);
+      results.tendency = RunCaseTendency(c, results.model, observer);
       Finished(observer, Analysis::Tendency, results);
     });
   }

@@ -93,10 +93,9 @@ CaseModel BuildCaseModel(const io::Case& c);
 // its own hole) with the reductions of `cache`: the one place model::BuildSystemModel is called.
 model::BuiltModel BuildModel(const model::ModelInput& input, cms::ReductionCache& cache);
 
-// The case's directional tendency (analyses/tendency_analysis.hpp) with its settings; `equilibrium`:
-// the case's static equilibrium when one was solved (the search's first start), else null.
-analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_model,
-                                         const analyses::StaticResult* equilibrium, const RunObserver& observer = {});
+// The case's directional tendency (analyses/tendency_analysis.hpp) with its settings, and its
+// sensitivities when they ask for them (analyses/tendency_sensitivity.hpp).
+analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_model, const RunObserver& observer = {});
 
 // The static settings of the case, with the observer's log.
 analyses::StaticSettings CaseStaticSettings(const io::Case& c, const RunObserver& observer);

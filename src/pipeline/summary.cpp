@@ -334,7 +334,12 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
                      Show(c, result.turn_rate, Quantity::DoglegSeverity, 4),
                      Show(c, result.dogleg_severity, Quantity::DoglegSeverity, 4),
                      Show(c, result.inclination, Quantity::Angle, 4), Show(c, result.azimuth, Quantity::Angle, 4),
-                     result.steerability, Show(c, result.weight_on_bit, Quantity::WeightOnBit), result.trace.size());
+                     result.steerability, Show(c, result.weight_on_bit, Quantity::WeightOnBit),
+                     result.trace.size() * static_cast<std::size_t>(result.toolfaces));
+  if (result.toolfaces > 1) {
+    out << fmt::format("  the bent motor rotating: the bit's deviation averaged over its bend at {} toolfaces\n",
+                       result.toolfaces);
+  }
   out << fmt::format("  bit at the steady curvature: side force {} (build {}, walk {}), tilt {} toward the high side, "
                      "{} toward the right\n",
                      Show(c, steady.bit.side_force, Quantity::Force), Show(c, steady.bit.build_force, Quantity::Force),
