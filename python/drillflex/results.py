@@ -157,7 +157,9 @@ class TendencyResult(Result):
     at the bit (rad); ``steerability``, ``weight_on_bit`` (N), ``arc_length`` (m); ``trace``: a Record a
     static of the search (``build_curvature``, ``right_curvature``, ``build_force``, ``walk_force``,
     ``side_force``, ``tilt``, ``tilt_right``, ``deviation_build``, ``deviation_right``, ``method``),
-    the answer at ``steady_index``; ``bit``: that Record.
+    the answer at ``steady_index``; ``bit``: that Record; ``toolfaces`` (4: a rotating bent motor's
+    mean), ``statics``; ``steering``: with a push-the-bit system, a Record ``steer``, ``natural_build``,
+    ``natural_right``, ``full_build``, ``full_right`` (curvatures, rad/m), else None.
     """
 
     analysis = "tendency"
@@ -166,6 +168,8 @@ class TendencyResult(Result):
         fields = run.tendency_fields()
         fields["trace"] = [Record(**point) for point in fields["trace"]]
         fields["bit"] = fields["trace"][fields["steady_index"]]
+        if fields["steering"] is not None:
+            fields["steering"] = Record(**fields["steering"])
         super().__init__(run, fields)
 
 

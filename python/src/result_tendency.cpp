@@ -22,6 +22,15 @@ void BindTendencyResult(py::class_<RunHandle>& run) {
     fields["arc_length"] = result.arc_length;
     fields["steady_index"] = result.steady_index;
     fields["toolfaces"] = result.toolfaces;
+    fields["statics"] = result.statics;
+    if (result.steering) {
+      const analyses::SteeringRates& steering = *result.steering;
+      fields["steering"] = py::dict(py::arg("steer") = steering.steer, py::arg("natural_build") = steering.natural.build,
+                                    py::arg("natural_right") = steering.natural.right,
+                                    py::arg("full_build") = steering.full.build, py::arg("full_right") = steering.full.right);
+    } else {
+      fields["steering"] = py::none();
+    }
     py::list trace;
     for (const analyses::TendencyPoint& point : result.trace) {
       trace.append(py::dict(py::arg("build_curvature") = point.curvature.build,

@@ -160,12 +160,24 @@ struct RoadmapSettings {
 // example (docs/validation.md) uses 5–25 %. Set the bit's own where it is known.
 inline constexpr double kDefaultSteerability = 0.05;
 
+// A push-the-bit rotary steerable system (case key analyses.tendency.rss): pads at `at` pushing the
+// bit toward the toolface with `force`. Its housing holds the toolface still while the string turns;
+// it steers a fraction `steer` of the time (the duty cycle: 0 neutral, 1 full steer).
+struct RssSettings {
+  double at = 0.0;        // m from the bit: the pads
+  double force = 0.0;     // N
+  double toolface = 0.0;  // rad: 0 the high side, π/2 the right
+  double steer = 1.0;     // the duty cycle, 0–1
+  int source_line = 0;
+};
+
 // What a directional tendency is asked (case key analyses.tendency; analyses/tendency_analysis.hpp).
 struct TendencySettings {
   double steerability = kDefaultSteerability;  // S ≥ 0: lateral over axial drillability (1e6: zero side force)
   // The steady rates also against WOB, inclination and the stabilizers' gauge
   // (analyses/tendency_sensitivity.hpp): ten more tendencies.
   bool sensitivities = false;
+  std::optional<RssSettings> rss;
 };
 
 struct AnalysesConfig {

@@ -36,36 +36,60 @@ struct Evaluated {
   StaticResult equilibrium;
 };
 
-// The strings whose deviation a point averages: the case's alone, or a rotating bent motor's bend at
-// kRotatingToolfaces toolfaces a quarter turn apart (the bend sweeps them all in a revolution; four
-// samples average the deviation exactly up to its third harmonic in the toolface).
+// The strings whose deviation a point averages, with their weights: the case's alone; a rotating bent
+// motor's bend at kRotatingToolfaces toolfaces a quarter turn apart (the bend sweeps them all in a
+// revolution; four samples average the deviation exactly up to its third harmonic in the toolface);
+// a rotary steerable system neutral for 1 − steer of the time and steering for `steer` of it.
 constexpr int kRotatingToolfaces = 4;
 
-std::vector<model::ModelInput> Variants(const model::ModelInput& input) {
-  if (!(input.operation.rotary_speed > 0.0)) return {input};
+struct Variant {
+  model::ModelInput input;
+  double weight = 1.0;
+};
+
+// The string with the RSS steering: the pads' force toward the toolface at `at` (string frame: y right,
+// z high side; a dead load, its direction kept in space as the housing keeps it).
+model::ModelInput Steering(model::ModelInput input, const RssSettings& rss) {
+  model::Load pads;
+  pads.at = rss.at;
+  pads.force = Vec3(0.0, rss.force * std::sin(rss.toolface), rss.force * std::cos(rss.toolface));
+  input.loads.push_back(pads);
+  return input;
+}
+
+std::vector<Variant> Variants(const model::ModelInput& input, const TendencySettings& settings) {
+  if (settings.rss) {
+    std::vector<Variant> variants;
+    if (settings.rss->steer < 1.0) variants.push_back({input, 1.0 - settings.rss->steer});
+    if (settings.rss->steer > 0.0) variants.push_back({Steering(input, *settings.rss), settings.rss->steer});
+    return variants;
+  }
+  if (!(input.operation.rotary_speed > 0.0)) return {{input, 1.0}};
   for (std::size_t i = 0; i < input.string.components.size(); ++i) {
     const model::Component& component = input.string.components[i];
     if (!component.bend_angle || !(*component.bend_angle > 0.0)) continue;
-    std::vector<model::ModelInput> variants;
+    std::vector<Variant> variants;
     for (int k = 0; k < kRotatingToolfaces; ++k) {
       model::ModelInput variant = input;
-      variant.string.components[i].toolface = std::fmod(component.toolface.value_or(0.0) + 2.0 * kPi * k / kRotatingToolfaces, 2.0 * kPi);
-      variants.push_back(std::move(variant));
+      variant.string.components[i].toolface =
+          std::fmod(component.toolface.value_or(0.0) + 2.0 * kPi * k / kRotatingToolfaces, 2.0 * kPi);
+      variants.push_back({std::move(variant), 1.0 / kRotatingToolfaces});
     }
     return variants;
   }
-  return {input};
+  return {{input, 1.0}};
 }
 
 class Search {
  public:
   Search(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
          const TendencySettings& settings)
-      : input_(input), build_(build), statics_(statics), settings_(settings), variants_(Variants(input)),
+      : input_(input), build_(build), statics_(statics), settings_(settings), variants_(Variants(input, settings)),
         solved_(variants_.size()), bit_md_(input.bit_md), model_length_(model::StringLength(input.string)),
         top_md_(std::max(0.0, input.bit_md - model_length_ - kTendencyHoleAboveTop)) {}
 
   int variant_count() const { return static_cast<int>(variants_.size()); }
+  int toolfaces() const { return settings_.rss ? 1 : variant_count(); }
 
   const Evaluated& Evaluate(const Vec2& kappa) {
     const double arc = TendencyArcLength(input_.string, kappa.norm());
@@ -73,8 +97,8 @@ class Search {
     TendencyPoint point;
     point.curvature = AsCurvature(kappa);
     StaticResult first;
-    const double share = 1.0 / static_cast<double>(variants_.size());
     for (std::size_t v = 0; v < variants_.size(); ++v) {
+      const double share = variants_[v].weight;
       StaticResult equilibrium = Solve(v, kappa, hole);
       const BitReport& bit = *equilibrium.bit;
       point.bit.build_force += share * bit.build_force;
@@ -96,7 +120,7 @@ class Search {
                                InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), point.bit.build_force,
                                point.bit.walk_force, point.bit.tilt, point.bit.tilt_right, point.deviation_build,
                                point.deviation_right, point.method,
-                               variants_.size() > 1 ? fmt::format(", the mean of {} toolfaces", variants_.size()) : ""));
+                               variants_.size() > 1 ? fmt::format(", the mean of {} statics", variants_.size()) : ""));
     }
     evaluated_.push_back(Evaluated{std::move(point), std::move(first)});
     return evaluated_.back();
@@ -108,7 +132,7 @@ class Search {
   // The static of variant v in `hole` (of curvature kappa): from the nearest of its own statics
   // carried into the hole when it is within kTendencyWarmStep, else from the string resting on the wall.
   StaticResult Solve(std::size_t v, const Vec2& kappa, const well::Trajectory& hole) {
-    model::ModelInput hole_input = variants_[v];
+    model::ModelInput hole_input = variants_[v].input;
     hole_input.trajectory = hole;
     auto built = std::make_shared<const model::BuiltModel>(build_(hole_input));
     const Solved* nearest = nullptr;
@@ -135,7 +159,7 @@ class Search {
   const ModelFactory& build_;
   const StaticSettings& statics_;
   const TendencySettings& settings_;
-  const std::vector<model::ModelInput> variants_;
+  const std::vector<Variant> variants_;
   std::vector<std::vector<Solved>> solved_;  // per variant
   const double bit_md_;
   const double model_length_;
@@ -268,7 +292,8 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
     const TendencyPoint at_low = search.Evaluate(low).point;
     const TendencyPoint at_high = search.Evaluate(high).point;
     throw SolverError(fmt::format("tendency: no steady curvature within ±30 deg/100 ft after {} statics: {}; {}",
-                                  search.evaluated().size(), DescribeEnd(at_low), DescribeEnd(at_high)));
+                                  search.evaluated().size() * static_cast<std::size_t>(search.variant_count()),
+                                  DescribeEnd(at_low), DescribeEnd(at_high)));
   }
   Evaluated& steady = search.evaluated()[answer];
   TendencyResult result;
@@ -282,8 +307,9 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   result.steerability = settings.steerability;
   result.weight_on_bit = input.operation.weight_on_bit;
   result.arc_length = TendencyArcLength(input.string, result.dogleg_severity);
-  result.toolfaces = search.variant_count();
+  result.toolfaces = search.toolfaces();
   for (const Evaluated& e : search.evaluated()) result.trace.push_back(e.point);
+  result.statics = static_cast<int>(result.trace.size()) * search.variant_count();
   result.steady_index = static_cast<int>(answer);
   result.equilibrium = std::move(steady.equilibrium);
   result.three_point = ComputeThreePointYield(input.string);

@@ -58,6 +58,15 @@ struct TendencySensitivities {
   TendencyCurve gauge_reduction;   // every blade's OD less 0, 1/16 in, 1/8 in
 };
 
+// A rotary steerable system's rates as directional drillers read them: the natural tendency (0 %
+// steer), full steer (100 %), and the yield per unit of steer between them (the rate is linear in the
+// steer: the deviation is the steer-weighted mean of the neutral and the steering strings').
+struct SteeringRates {
+  double steer = 0.0;
+  HoleCurvature natural;  // build and right curvature at 0 % steer, 1/m
+  HoleCurvature full;     // at 100 %
+};
+
 // One static of the search: the hole's curvature and what the bit does in it.
 struct TendencyPoint {
   HoleCurvature curvature;      // 1/m
@@ -78,6 +87,8 @@ struct TendencyResult {
   double weight_on_bit = 0.0;     // N
   double arc_length = 0.0;        // m: the steady hole's arc above the bit
   int toolfaces = 1;              // the bend's toolfaces a rotating bent motor's deviation is averaged over
+  int statics = 0;                // of the search: trace × the statics a point averages
+  std::optional<SteeringRates> steering;  // with a rotary steerable system
   std::vector<TendencyPoint> trace;  // every static of the search, in order
   int steady_index = 0;              // the answer's in `trace`
   StaticResult equilibrium;       // in the steady hole

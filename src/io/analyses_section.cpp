@@ -247,6 +247,30 @@ analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
   return settings;
 }
 
+// `rss: {type: push, at, force, toolface, steer}` (point-the-bit is not offered: docs/validation.md V9).
+analyses::RssSettings ReadRss(const YamlView& node) {
+  node.ExpectMap("a rotary steerable system {type: push, at, force, toolface, steer}", false);
+  node.AllowOnlyKeys({"type", "at", "force", "toolface", "steer"});
+  analyses::RssSettings rss;
+  rss.source_line = node.location().line;
+  const std::string type = node.Child("type").AsString();
+  if (type != "push") {
+    node.Child("type").Fail(fmt::format("expected push (a push-the-bit system; point-the-bit is not modelled), got '{}'",
+                                        type));
+  }
+  rss.force = node.Positive("force", Quantity::Force);
+  rss.at = node.Positive("at", Quantity::Length);
+  rss.toolface = node.QuantityOr("toolface", Quantity::Angle, 0.0);
+  if (rss.toolface < 0.0 || rss.toolface > 2.0 * kPi) {
+    node.Child("toolface").Fail("expected a toolface between 0 and 360 deg (0 the high side, 90 the right)");
+  }
+  rss.steer = node.QuantityOr("steer", Quantity::Dimensionless, 1.0);
+  if (!(rss.steer >= 0.0 && rss.steer <= 1.0)) {
+    node.Child("steer").Fail("expected the steering ratio, the fraction of the time the system steers: 0 to 1");
+  }
+  return rss;
+}
+
 }  // namespace
 
 analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation) {
@@ -282,11 +306,12 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::
   if (const auto item = node.PresentChild("roadmap")) config.roadmap = ReadRoadmap(*item);
   if (const auto item = node.PresentChild("tendency")) {
     item->ExpectMap("the tendency settings");
-    item->AllowOnlyKeys({"steerability", "sensitivities"});
+    item->AllowOnlyKeys({"steerability", "sensitivities", "rss"});
     config.tendency = analyses::TendencySettings{};
     if (const auto sensitivities = item->OptionalChild("sensitivities")) {
       config.tendency->sensitivities = sensitivities->AsBool();
     }
+    if (const auto rss = item->OptionalChild("rss")) config.tendency->rss = ReadRss(*rss);
     if (const auto steerability = item->OptionalChild("steerability")) {
       config.tendency->steerability = steerability->AsQuantity(units::Quantity::Dimensionless);
       if (!(config.tendency->steerability >= 0.0)) {

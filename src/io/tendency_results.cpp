@@ -47,7 +47,7 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
       {"steerability", result.steerability},
       {"weight_on_bit", out(result.weight_on_bit, Quantity::WeightOnBit)},
       {"arc_length", out(result.arc_length, Quantity::Length)},
-      {"statics", result.trace.size() * static_cast<std::size_t>(result.toolfaces)},
+      {"statics", result.statics},
       {"toolfaces", result.toolfaces},
       {"contacts", contacts},
       {"trace", trace},
@@ -57,6 +57,20 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
         {"walk_force", out(bit.walk_force, Quantity::Force)},
         {"tilt", out(bit.tilt, Quantity::Angle)},
         {"tilt_right", out(bit.tilt_right, Quantity::Angle)}}}};
+  if (result.steering) {
+    const analyses::SteeringRates& steering = *result.steering;
+    const double sine = std::sin(result.inclination);
+    const auto turn = [&](double right) { return sine > 1e-3 ? right / sine : 0.0; };
+    files.json()["tendency"]["steering"] = {
+        {"steer", steering.steer},
+        {"natural", {{"build_rate", out(steering.natural.build, Quantity::DoglegSeverity)},
+                     {"turn_rate", out(turn(steering.natural.right), Quantity::DoglegSeverity)}}},
+        {"full", {{"build_rate", out(steering.full.build, Quantity::DoglegSeverity)},
+                  {"turn_rate", out(turn(steering.full.right), Quantity::DoglegSeverity)}}},
+        {"yield_per_steer",
+         {{"build_rate", out(steering.full.build - steering.natural.build, Quantity::DoglegSeverity)},
+          {"turn_rate", out(turn(steering.full.right - steering.natural.right), Quantity::DoglegSeverity)}}}};
+  }
   if (result.three_point) {
     const analyses::ThreePointYield& yield = *result.three_point;
     files.json()["tendency"]["three_point"] = {{"dogleg_severity", out(yield.curvature, Quantity::DoglegSeverity)},

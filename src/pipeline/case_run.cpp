@@ -84,6 +84,20 @@ analyses::TendencyResult RunCaseTendency(const io::Case& c, CaseModel& case_mode
   const analyses::StaticSettings statics = CaseStaticSettings(c, observer);
   try {
     analyses::TendencyResult result = analyses::RunTendency(case_model.input, build, statics, settings);
+    if (settings.rss) {
+      // The natural tendency and full steer, each from the case's steady curvature (the case's own steer is one of them).
+      analyses::SteeringRates steering;
+      steering.steer = settings.rss->steer;
+      const auto at_steer = [&](double steer) {
+        if (steer == settings.rss->steer) return result.curvature;
+        analyses::TendencySettings varied = settings;
+        varied.rss->steer = steer;
+        return analyses::RunTendency(case_model.input, build, statics, varied, result.curvature).curvature;
+      };
+      steering.natural = at_steer(0.0);
+      steering.full = at_steer(1.0);
+      result.steering = steering;
+    }
     if (settings.sensitivities) {
       result.sensitivities = analyses::ComputeTendencySensitivities(case_model.input, build, statics, settings, result);
     }

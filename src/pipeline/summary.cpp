@@ -334,8 +334,7 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
                      Show(c, result.turn_rate, Quantity::DoglegSeverity, 4),
                      Show(c, result.dogleg_severity, Quantity::DoglegSeverity, 4),
                      Show(c, result.inclination, Quantity::Angle, 4), Show(c, result.azimuth, Quantity::Angle, 4),
-                     result.steerability, Show(c, result.weight_on_bit, Quantity::WeightOnBit),
-                     result.trace.size() * static_cast<std::size_t>(result.toolfaces));
+                     result.steerability, Show(c, result.weight_on_bit, Quantity::WeightOnBit), result.statics);
   if (result.toolfaces > 1) {
     out << fmt::format("  the bent motor rotating: the bit's deviation averaged over its bend at {} toolfaces\n",
                        result.toolfaces);
@@ -345,6 +344,17 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
                      Show(c, steady.bit.side_force, Quantity::Force), Show(c, steady.bit.build_force, Quantity::Force),
                      Show(c, steady.bit.walk_force, Quantity::Force), Show(c, steady.bit.tilt, Quantity::Angle, 4),
                      Show(c, steady.bit.tilt_right, Quantity::Angle, 4));
+  if (result.steering) {
+    const analyses::SteeringRates& steering = *result.steering;
+    out << fmt::format("  rotary steerable at {:g} % steer: natural tendency {} build, {} right; full steer {} build, {} "
+                       "right; per unit of steer {} build, {} right (curvatures)\n",
+                       100.0 * steering.steer, Show(c, steering.natural.build, Quantity::DoglegSeverity, 4),
+                       Show(c, steering.natural.right, Quantity::DoglegSeverity, 4),
+                       Show(c, steering.full.build, Quantity::DoglegSeverity, 4),
+                       Show(c, steering.full.right, Quantity::DoglegSeverity, 4),
+                       Show(c, steering.full.build - steering.natural.build, Quantity::DoglegSeverity, 4),
+                       Show(c, steering.full.right - steering.natural.right, Quantity::DoglegSeverity, 4));
+  }
   if (result.three_point) {
     const analyses::ThreePointYield& yield = *result.three_point;
     out << fmt::format("  three-point geometric yield {} toward toolface {} (bit, {} at {}, the bend at {}, the blades at {}; "

@@ -175,6 +175,37 @@ TEST(Tendency, NoSteadyCurvatureWithinThirtyDegreesSaysSoWithBothEnds) {
   }
 }
 
+// A push-the-bit system: pads 2 ft from the bit pushing it toward the high side with 5 klbf, full steer,
+// S → ∞: the steady build is where a static in a hole drawn at that build, with the pads' force put on
+// the string as a load of its own, leaves the bit no build force (it changes sign across ± 0.01°/100 ft).
+// Neutral (steer 0) it is the BHA's own tendency, to the last digit; the pads build more.
+TEST(Tendency, PushTheBitSteersWithItsPadForce) {
+  const model::ModelInput input = PackedBha();
+  TendencySettings settings;
+  settings.steerability = 1e6;
+  const double own = RunTendency(input, Factory(), StaticSettings{}, settings).build_rate;
+  RssSettings rss;
+  rss.at = 2.0 * kFt;
+  rss.force = 5000.0 * kLbf;
+  rss.toolface = 0.0;
+  rss.steer = 0.0;
+  settings.rss = rss;
+  EXPECT_EQ(RunTendency(input, Factory(), StaticSettings{}, settings).build_rate, own);
+  settings.rss->steer = 1.0;
+  const double steered = RunTendency(input, Factory(), StaticSettings{}, settings).build_rate;
+  model::ModelInput padded = input;
+  model::Load pads;
+  pads.at = 2.0 * kFt;
+  pads.force = Vec3(0.0, 0.0, 5000.0 * kLbf);  // string frame: z the high side
+  padded.loads.push_back(pads);
+  const double below = BitIn(InBuildingHole(padded, steered - 0.01 * kDegreesPer100Ft)).build_force;
+  const double above = BitIn(InBuildingHole(padded, steered + 0.01 * kDegreesPer100Ft)).build_force;
+  std::printf("[ measure  ] own %.4f deg/100 ft, pads at full steer %.4f; build force at -0.01: %.4g N, at +0.01: %.4g N\n",
+              own / kDegreesPer100Ft, steered / kDegreesPer100Ft, below, above);
+  EXPECT_GT(steered, own + 1.0 * kDegreesPer100Ft);
+  EXPECT_LT(below * above, 0.0);
+}
+
 TEST(Tendency, RefusesAStringItCannotTake) {
   model::ModelInput input = PackedBha();
   input.operation.weight_on_bit = 0.0;
