@@ -155,10 +155,10 @@ struct RoadmapSettings {
 
 // The analyses a plain `run` performs, in the order static, modes, vibration, buckling, transient.
 // `roadmap` holds the settings of `drillflex roadmap` (a sweep of statics, not run by `run`).
-// The bit's steerability by default: 5 %. Measured values of PDC bits spread over an order of
-// magnitude around it with the gauge's length (Menand, Sellami & Simon, SPE/IADC 79795); MADSim's
-// example (docs/validation.md) uses 5–25 %. Set the bit's own where it is known.
-inline constexpr double kDefaultSteerability = 0.05;
+// The bit's steerability by default: 0.25, the top of MADSim's example range (5–25 %); at 0.05 the bit's
+// tilt outweighs its side force and a 45 ft pendulum at 30° builds (docs/method.md "Directional
+// tendency"), where every pendulum drops. Set the bit's own where it is known.
+inline constexpr double kDefaultSteerability = 0.25;
 
 // A push-the-bit rotary steerable system (case key analyses.tendency.rss): pads at `at` pushing the
 // bit toward the toolface with `force`. Its housing holds the toolface still while the string turns;

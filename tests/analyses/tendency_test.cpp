@@ -206,6 +206,46 @@ TEST(Tendency, PushTheBitSteersWithItsPadForce) {
   EXPECT_LT(below * above, 0.0);
 }
 
+// What every directional driller knows (issue 34's qualitative checks), at 30°, 8-1/2 in hole, S 0.05:
+// a near-bit stabilizer (a fulcrum) builds, a pendulum (the first stabilizer 45 ft up) drops, a second
+// stabilizer 30 ft above the near-bit one damps the fulcrum's build, more WOB lessens the pendulum's drop.
+model::ModelInput Assembly(const std::vector<double>& stabilizers_ft, double wob_klbf) {
+  model::ModelInput input = PackedBha();
+  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 30.0 * kDegree, kAzimuth},
+                                                            {4000.0 * kFt, 30.0 * kDegree, kAzimuth}});
+  input.operation.weight_on_bit = wob_klbf * 1000.0 * kLbf;
+  model::Component stabilizer = Part(model::ComponentType::Stabilizer, 6.75, 2.8125, 4.0);
+  stabilizer.blade_diameter = 8.4375 * kIn;
+  stabilizer.blade_length = 1.0 * kFt;
+  input.string.components = {Part(model::ComponentType::Bit, 8.5, 2.0, 1.0)};
+  double top = 1.0;  // ft
+  for (const double at : stabilizers_ft) {  // blades' middle at `at`
+    if (at - 2.0 > top) input.string.components.push_back(Part(model::ComponentType::Collar, 6.75, 2.8125, at - 2.0 - top));
+    input.string.components.push_back(stabilizer);
+    top = at + 2.0;
+  }
+  input.string.components.push_back(Part(model::ComponentType::Collar, 6.75, 2.8125, 120.0 - top));
+  return input;
+}
+
+double SteadyBuild(const model::ModelInput& input) {
+  return RunTendency(input, Factory(), StaticSettings{}, TendencySettings{}).build_rate / kDegreesPer100Ft;
+}
+
+TEST(Tendency, FulcrumBuildsPendulumDropsSecondStabilizerDampsWobLessensTheDrop) {
+  const double fulcrum = SteadyBuild(Assembly({3.0}, 25.0));
+  const double packed = SteadyBuild(Assembly({3.0, 33.0}, 25.0));
+  const double pendulum = SteadyBuild(Assembly({45.0}, 15.0));
+  const double pendulum_heavy = SteadyBuild(Assembly({45.0}, 35.0));
+  std::printf("[ measure  ] fulcrum %+.3f deg/100 ft, with a second stabilizer at 33 ft %+.3f; pendulum (45 ft) "
+              "%+.3f at 15 klbf, %+.3f at 35 klbf\n",
+              fulcrum, packed, pendulum, pendulum_heavy);
+  EXPECT_GT(fulcrum, 0.0);
+  EXPECT_LT(pendulum, 0.0);
+  EXPECT_LT(packed, fulcrum);
+  EXPECT_GT(pendulum_heavy, pendulum);
+}
+
 TEST(Tendency, RefusesAStringItCannotTake) {
   model::ModelInput input = PackedBha();
   input.operation.weight_on_bit = 0.0;
