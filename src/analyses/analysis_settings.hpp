@@ -171,6 +171,15 @@ struct RssSettings {
   int source_line = 0;
 };
 
+// The formation's anisotropy (case key analyses.tendency.formation): drillability across the bedding
+// against along it, h = (D_⊥ − D_∥)/(D_⊥ + D_∥) (> 0: the bit turns toward the bedding's normal, the
+// "updip" tendency), and the bedding's dip and the azimuth it dips toward.
+struct FormationSettings {
+  double anisotropy = 0.0;   // h, −1 < h < 1
+  double dip = 0.0;          // rad, 0 horizontal beds
+  double dip_azimuth = 0.0;  // rad, the direction the beds dip toward
+};
+
 // What a directional tendency is asked (case key analyses.tendency; analyses/tendency_analysis.hpp).
 struct TendencySettings {
   double steerability = kDefaultSteerability;  // S ≥ 0: lateral over axial drillability (1e6: zero side force)
@@ -178,6 +187,7 @@ struct TendencySettings {
   // (analyses/tendency_sensitivity.hpp): ten more tendencies.
   bool sensitivities = false;
   std::optional<RssSettings> rss;
+  std::optional<FormationSettings> formation;
 };
 
 struct AnalysesConfig {

@@ -86,7 +86,9 @@ class Search {
          const TendencySettings& settings)
       : input_(input), build_(build), statics_(statics), settings_(settings), variants_(Variants(input, settings)),
         solved_(variants_.size()), bit_md_(input.bit_md), model_length_(model::StringLength(input.string)),
-        top_md_(std::max(0.0, input.bit_md - model_length_ - kTendencyHoleAboveTop)) {}
+        top_md_(std::max(0.0, input.bit_md - model_length_ - kTendencyHoleAboveTop)),
+        formation_(settings.formation ? FormationDeviation(*settings.formation, input.trajectory->Frame(input.bit_md))
+                                      : HoleCurvature{}) {}
 
   int variant_count() const { return static_cast<int>(variants_.size()); }
   int toolfaces() const { return settings_.rss ? 1 : variant_count(); }
@@ -112,8 +114,8 @@ class Search {
     }
     point.bit.side_force = std::hypot(point.bit.build_force, point.bit.walk_force);
     const double per_force = settings_.steerability / input_.operation.weight_on_bit;
-    point.deviation_build = point.bit.tilt + per_force * point.bit.build_force;
-    point.deviation_right = point.bit.tilt_right + per_force * point.bit.walk_force;
+    point.deviation_build = point.bit.tilt + per_force * point.bit.build_force + formation_.build;
+    point.deviation_right = point.bit.tilt_right + per_force * point.bit.walk_force + formation_.right;
     if (statics_.log) {
       statics_.log(fmt::format("tendency: {:+.4f} deg/100 ft build, {:+.4f} right: side force {:+.4g} N build, "
                                "{:+.4g} N right; tilt {:+.4e}, {:+.4e} rad; deviation {:+.4e}, {:+.4e} rad ({}{})",
@@ -164,6 +166,7 @@ class Search {
   const double bit_md_;
   const double model_length_;
   const double top_md_;
+  const HoleCurvature formation_;  // δ, rad
   std::vector<Evaluated> evaluated_;
 };
 
@@ -206,6 +209,18 @@ Vec2 KeepInBrackets(const std::vector<Evaluated>& evaluated, const Vec2& current
 }
 
 }  // namespace
+
+HoleCurvature FormationDeviation(const FormationSettings& formation, const well::PathFrame& bit) {
+  // The bedding's normal: vertical for flat beds, tilted away from the dip's direction by the dip
+  // (global x north, y east, z down).
+  Vec3 normal(-std::sin(formation.dip) * std::cos(formation.dip_azimuth),
+              -std::sin(formation.dip) * std::sin(formation.dip_azimuth), std::cos(formation.dip));
+  const Vec3& b = bit.tangent;
+  if (b.dot(normal) < 0.0) normal = -normal;
+  const double cosine = b.dot(normal);
+  const Vec3 across = 2.0 * formation.anisotropy * cosine * (normal - cosine * b);
+  return {across.dot(bit.high_side), across.dot(bit.right)};
+}
 
 double TendencyArcLength(const model::StringConfig& string, double curvature) {
   const double length = model::StringLength(string) + kTendencyHoleAboveTop;

@@ -5,12 +5,15 @@
 // equilibrium gives the bit's side force F = (F_b, F_r), positive where the bit pushes the formation
 // toward the high side and the right, and the tilt θ = (θ_b, θ_r) of its axis against the hole's. The
 // bit cuts sideways as well as ahead: per unit of axial penetration it moves sideways by
-//   d(κ) = θ(κ) + S F(κ) / WOB,
+//   d(κ) = θ(κ) + S F(κ) / WOB (+ δ, the formation's),
 // S the bit's steerability, its lateral over its axial drillability (Menand, Sellami & Simon,
 // SPE/IADC 79795; Ho, SPE 16658, calls it the bit anisotropy index). Where d = 0 the bit drills along
 // the hole it is in and the hole keeps its curvature: that κ is the steady one. S → ∞ leaves F = 0,
 // the zero-side-force criterion (Jogi, Burgess & Bowling, SPE 14768; Williamson & Lubinski, SPE
 // 14764); S = 0 leaves θ = 0, the bit drilling along its own axis.
+//
+// A formation more drillable across its beds than along them adds its own term δ to d (below:
+// FormationDeviation), constant for the bit's place and direction.
 //
 // The root: Newton on d(κ) with a Jacobian of forward differences at the start and Broyden's update
 // after (Dennis & Schnabel §8.1), each evaluation one static in the hole of that κ, started from the
@@ -109,6 +112,14 @@ using ModelFactory = std::function<model::BuiltModel(const model::ModelInput&)>;
 // misfit the stiff couplings and the bit's support by more than Newton from a neighbour recovers.)
 TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& build, const StaticSettings& statics,
                            const TendencySettings& settings, std::optional<HoleCurvature> first = std::nullopt);
+
+// The formation's term δ of the bit's deviation (its build and right components at the bit, rad), for
+// a drilling direction along the hole's tangent b at the bit: with the bedding's normal n (b·n ≥ 0) and
+// drillabilities D_⊥ = 1 + h across the beds and D_∥ = 1 − h along them, the bit penetrates along
+// D_⊥ (b·n) n + D_∥ (b − (b·n) n), turned toward n by h sin 2α to first order in h (α the angle between
+// b and n; the anisotropic drillability of Lubinski & Woods' formation, Ho's formation index h): as a
+// vector across the hole, 2 h (b·n) (n − (b·n) b).
+HoleCurvature FormationDeviation(const FormationSettings& formation, const well::PathFrame& bit);
 
 // The reasons `input` cannot have a tendency, as (key, message) for an InputError; none when it can.
 std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const model::ModelInput& input);

@@ -271,6 +271,24 @@ analyses::RssSettings ReadRss(const YamlView& node) {
   return rss;
 }
 
+// `formation: {anisotropy, dip, dip_azimuth}`.
+analyses::FormationSettings ReadFormation(const YamlView& node) {
+  node.ExpectMap("the formation's anisotropy {anisotropy, dip, dip_azimuth}", false);
+  node.AllowOnlyKeys({"anisotropy", "dip", "dip_azimuth"});
+  analyses::FormationSettings formation;
+  formation.anisotropy = node.Quantity("anisotropy", Quantity::Dimensionless);
+  if (!(formation.anisotropy > -1.0 && formation.anisotropy < 1.0)) {
+    node.Child("anisotropy").Fail("expected the formation's anisotropy index, between -1 and 1 (0: isotropic)");
+  }
+  formation.dip = node.QuantityOr("dip", Quantity::Angle, 0.0);
+  if (formation.dip < 0.0 || formation.dip > 0.5 * kPi) node.Child("dip").Fail("expected a dip between 0 and 90 deg");
+  formation.dip_azimuth = node.QuantityOr("dip_azimuth", Quantity::Angle, 0.0);
+  if (formation.dip_azimuth < 0.0 || formation.dip_azimuth > 2.0 * kPi) {
+    node.Child("dip_azimuth").Fail("expected the azimuth the beds dip toward, between 0 and 360 deg");
+  }
+  return formation;
+}
+
 }  // namespace
 
 analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation) {
@@ -306,12 +324,13 @@ analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::
   if (const auto item = node.PresentChild("roadmap")) config.roadmap = ReadRoadmap(*item);
   if (const auto item = node.PresentChild("tendency")) {
     item->ExpectMap("the tendency settings");
-    item->AllowOnlyKeys({"steerability", "sensitivities", "rss"});
+    item->AllowOnlyKeys({"steerability", "sensitivities", "rss", "formation"});
     config.tendency = analyses::TendencySettings{};
     if (const auto sensitivities = item->OptionalChild("sensitivities")) {
       config.tendency->sensitivities = sensitivities->AsBool();
     }
     if (const auto rss = item->OptionalChild("rss")) config.tendency->rss = ReadRss(*rss);
+    if (const auto formation = item->OptionalChild("formation")) config.tendency->formation = ReadFormation(*formation);
     if (const auto steerability = item->OptionalChild("steerability")) {
       config.tendency->steerability = steerability->AsQuantity(units::Quantity::Dimensionless);
       if (!(config.tendency->steerability >= 0.0)) {

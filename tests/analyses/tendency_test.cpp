@@ -246,6 +246,35 @@ TEST(Tendency, FulcrumBuildsPendulumDropsSecondStabilizerDampsWobLessensTheDrop)
   EXPECT_GT(pendulum_heavy, pendulum);
 }
 
+// The formation's term: flat beds turn a hole at inclination I toward the vertical by h sin 2I (the
+// small-h form of the orthotropic drillability); beds normal to the hole, or parallel to it, not at all.
+TEST(Tendency, FormationTurnsTheHoleTowardTheBeddingsNormal) {
+  const double h = 0.01;
+  const well::PathFrame bit = PackedBha().trajectory->Frame(kBitMd);  // 40° toward the east
+  const HoleCurvature flat = FormationDeviation({h, 0.0, 0.0}, bit);
+  EXPECT_NEAR(flat.build, -h * std::sin(2.0 * kInclination), 1e-15);
+  EXPECT_NEAR(flat.right, 0.0, 1e-15);
+  // Beds dipping 40° toward the west: their normal is the hole's direction.
+  const HoleCurvature normal = FormationDeviation({h, kInclination, 270.0 * kDegree}, bit);
+  EXPECT_NEAR(std::hypot(normal.build, normal.right), 0.0, 1e-15);
+  // With S 0.25 the steady curvature is where tilt + S F / WOB = h sin 2I: a static in a hole drawn at it
+  // ∓ 0.01°/100 ft brackets that.
+  TendencySettings settings;
+  settings.steerability = 0.25;
+  settings.formation = FormationSettings{h, 0.0, 0.0};
+  const model::ModelInput input = PackedBha();
+  const TendencyResult result = RunTendency(input, Factory(), StaticSettings{}, settings);
+  const auto criterion = [&](double build) {
+    const BitReport report = BitIn(InBuildingHole(input, build));
+    return report.tilt + 0.25 * report.build_force / input.operation.weight_on_bit - h * std::sin(2.0 * kInclination);
+  };
+  const double below = criterion(result.build_rate - 0.01 * kDegreesPer100Ft);
+  const double above = criterion(result.build_rate + 0.01 * kDegreesPer100Ft);
+  std::printf("[ measure  ] h %.2f, flat beds: steady %.4f deg/100 ft; criterion at -0.01: %.3e, at +0.01: %.3e\n", h,
+              result.build_rate / kDegreesPer100Ft, below, above);
+  EXPECT_LT(below * above, 0.0);
+}
+
 TEST(Tendency, RefusesAStringItCannotTake) {
   model::ModelInput input = PackedBha();
   input.operation.weight_on_bit = 0.0;
