@@ -282,12 +282,20 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
 
 SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load,
                                        double cK, double cD, double cM) const {
+  SparseMat matrix;
+  IterationMatrixInto(matrix, t, q, v, a, load, cK, cD, cM);
+  return matrix;
+}
+
+void SystemModel::IterationMatrixInto(SparseMat& matrix, double t, const VecX& q, const VecX& v, const VecX& a,
+                                      LoadParameters load, double cK, double cD, double cM) const {
   const profile::Scope scope("model: iteration matrix");
   const auto poses = Poses(q);
   const bool parallel = bodies_.size() >= kParallelBodies;
   // cK ∂f/∂q + cD ∂f/∂v of an element, into contribution.stiffness.
   const auto element_block = [&](int e, ElementState& state, ElementContribution& contribution) {
     FillState(*elements_[e], poses, v, t, load, state);
+    contribution.damping_needed = cD != 0.0;
     elements_[e]->Evaluate(state, true, contribution);
     contribution.stiffness *= cK;
     if (cD != 0.0) contribution.stiffness.noalias() += cD * contribution.damping;
@@ -299,7 +307,7 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
     element_block(shared_elements_[i], state, contribution);
     shared_blocks[shared_elements_[i]] = std::move(contribution.stiffness);
   });
-  SparseMat matrix = iteration_pattern_.Zero();
+  iteration_pattern_.Prepare(matrix);
   ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
     thread_local ElementState state;
     thread_local ElementContribution contribution;
@@ -307,6 +315,7 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
     const Body& body = bodies_[b];
     const int n = body.velocity_count();
     const int index = static_cast<int>(b);
+    iteration_pattern_.ZeroColumns(index, matrix);  // only this body's task writes its columns
     local.setZero(n, n);
     // cK K_in + cD D_in + cM M of the inertia (exact, model/body_inertia_jacobian.hpp).
     AddInertiaMatrices(body, poses[b], v.segment(body.v_offset, n), a.segment(body.v_offset, n), cK, cD, cM, local);
@@ -326,7 +335,6 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
       if (element_bodies_[e].size() > 1) iteration_pattern_.AddColumns(shared_blocks[e], element_bodies_[e], index, matrix);
     }
   });
-  return matrix;
 }
 
 SparseMat SystemModel::MassMatrix(const VecX& q) const {

@@ -4,9 +4,14 @@
 // the block Cholesky (Golub & Van Loan, Matrix Computations, 4th ed., 2013, §4.5):
 //   S_0 = D_0,   C_k C_kᵀ = S_k,   W_k = L_k C_k⁻ᵀ,   S_{k+1} = D_{k+1} − W_k W_kᵀ;
 // solve C Cᵀ x = b by y_k = C_k⁻¹ (b_k − W_{k−1} y_{k−1}) down the string and
-// x_k = C_k⁻ᵀ (y_k − W_kᵀ x_{k+1}) back up. A is positive definite exactly when every S_k is (its
-// Schur complements are), so a failed block factorization says the matrix is not: the stability
-// test of the energy trust region (solvers/shifted_cholesky.hpp).
+// x_k = C_k⁻ᵀ (y_k − W_kᵀ x_{k+1}) back up. It runs from both ends toward the middle block
+// m = ⌊N/2⌋ (the "twisted" order of solvers/block_tridiagonal_lu.hpp: the Cholesky factorization of
+// the matrix with its blocks taken in the order 0 … m−1, N−1 … m+1, m), the two sweeps side by side on
+// two threads; from the bottom W'_k = L_{k−1}ᵀ C_k⁻ᵀ and S_{k−1} = D_{k−1} − W'_k W'_kᵀ, and
+// S_m = D_m − W_{m−1} W_{m−1}ᵀ − W'_{m+1} W'_{m+1}ᵀ. A is positive definite exactly when every S_k is
+// (its Schur complements in that order are; a symmetric permutation keeps definiteness), so a failed
+// block factorization says the matrix is not: the stability test of the energy trust region
+// (solvers/shifted_cholesky.hpp).
 //
 // Why: on a 740-body string (13 324 coordinates, half bandwidth 35) LAPACK's band Cholesky (dpbtrf,
 // level-2 updates in the reference BLAS) spends ~n·kd² multiply-adds through the band's zeros; the
@@ -18,6 +23,7 @@
 #include <cstddef>
 
 #include "core/types.hpp"
+#include "solvers/symmetric_block_matrix.hpp"
 
 namespace drillflex::solvers {
 
@@ -32,20 +38,26 @@ class BlockTridiagonalCholesky {
   // plus `shift` times `metric_values` (same pattern; null: none). False when it is not positive
   // definite (a block pivot ≤ 0); the factorization is then unusable.
   bool Factorize(const double* values, const double* metric_values, double shift);
+  // Factorizes H + σM given in block storage (M null: none; else of H's layout, and its blocks below
+  // the diagonal are read only when `metric_coupled`). Needs no Analyze. False when not positive
+  // definite.
+  bool Factorize(const SymmetricBlockMatrix& stiffness, const SymmetricBlockMatrix* metric, double shift,
+                 bool metric_coupled = true);
   // x ← A⁻¹ x with the last successful factorization.
   void SolveInPlace(VecX& x) const;
 
-  bool analysed() const { return analysed_; }
+  bool analysed() const { return assembled_.analysed(); }
 
  private:
+  void Layout(const std::vector<Eigen::Index>& starts);
+  SymmetricBlockMatrix assembled_;  // the matrix of the sparse Factorize, scattered into blocks
+  SymmetricBlockMatrix metric_assembled_;
   std::vector<Eigen::Index> starts_;
-  // Every block in one buffer, column major: D_k (its lower triangle becomes C_k), L_k = A(k+1, k)
-  // and T_k = W_kᵀ = C_k⁻¹ L_kᵀ (n_k × n_{k+1}).
+  // The factors in one buffer, column major: C_k (lower triangle) and, between blocks k and k + 1,
+  // T_k = C_k⁻¹ L_kᵀ (n_k × n_{k+1}) where k < m, V_{k+1} = C_{k+1}⁻¹ L_k (n_{k+1} × n_k) where k ≥ m.
   std::vector<double> storage_;
-  std::vector<std::size_t> diagonal_, below_, coupling_;  // offsets into storage_
-  std::size_t assembled_size_ = 0;  // storage_[0, this) holds the D_k and L_k
-  std::vector<std::ptrdiff_t> entry_;  // per stored entry of the pattern: its place, −1 above the diagonal
-  bool analysed_ = false;
+  std::vector<std::size_t> diagonal_, coupling_;  // offsets into storage_
+  std::size_t middle_ = 0;  // m = ⌊N/2⌋, where the two sweeps meet
   bool factorized_ = false;
   Eigen::Index size(std::size_t k) const { return starts_[k + 1] - starts_[k]; }
 };
