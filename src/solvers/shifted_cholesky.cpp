@@ -51,19 +51,22 @@ bool SamePattern(const SparseMat& a, const std::vector<int>& outer, const std::v
 }  // namespace
 
 void ShiftedCholesky::Build(const SparseMat& stiffness) {
-  SparseMat first = stiffness;
-  first.makeCompressed();
+  SparseMat copy;
+  if (!stiffness.isCompressed()) {
+    copy = stiffness;
+    copy.makeCompressed();
+  }
+  const SparseMat& first = stiffness.isCompressed() ? stiffness : copy;
   first_outer_.assign(first.outerIndexPtr(), first.outerIndexPtr() + first.outerSize() + 1);
   first_inner_.assign(first.innerIndexPtr(), first.innerIndexPtr() + first.nonZeros());
   factorized_ = false;
   block_modified_ = false;
-  SparseMat metric = metric_given_;
-  metric.makeCompressed();
+  metric_given_.makeCompressed();
   by_blocks_ = !blocks_.empty() && block_stiffness_.Analyze(first, blocks_, true) &&
-               block_metric_.Analyze(metric, blocks_, false);
+               block_metric_.Analyze(metric_given_, blocks_, false);
   if (by_blocks_) {
     block_stiffness_.Assign(first.valuePtr());
-    block_metric_.Assign(metric.valuePtr());
+    block_metric_.Assign(metric_given_.valuePtr());
     metric_coupled_ = !block_metric_.BlockDiagonal();
     return;
   }

@@ -11,6 +11,7 @@ namespace drillflex::solvers {
 
 using BlockMap = Eigen::Map<const MatX>;
 constexpr std::size_t kOutside = std::numeric_limits<std::size_t>::max();
+constexpr std::uint32_t kNotRead = std::numeric_limits<std::uint32_t>::max();
 
 bool SymmetricBlockMatrix::Analyze(const SparseMat& pattern, const std::vector<Eigen::Index>& starts,
                                    bool symmetrize) {
@@ -36,17 +37,19 @@ bool SymmetricBlockMatrix::Analyze(const SparseMat& pattern, const std::vector<E
       offset += static_cast<std::size_t>(block_size(k + 1) * block_size(k));
     }
   }
+  if (offset >= kNotRead || static_cast<std::size_t>(pattern.nonZeros()) >= kNotRead) return false;
   values_.assign(offset, 0.0);
-  slot_.assign(static_cast<std::size_t>(pattern.nonZeros()), -1);
-  weight_.assign(static_cast<std::size_t>(pattern.nonZeros()), 0.0);
+  symmetrize_ = symmetrize;
+  slot_.assign(static_cast<std::size_t>(pattern.nonZeros()), kNotRead);
+  diagonal_entries_.clear();
   for (Eigen::Index j = 0; j < n; ++j) {
     for (int p = pattern.outerIndexPtr()[j]; p < pattern.outerIndexPtr()[j + 1]; ++p) {
       const Eigen::Index i = pattern.innerIndexPtr()[p];
       if (i < j && !symmetrize) continue;  // the upper triangle mirrors the lower one
       const std::size_t slot = Slot(std::max(i, j), std::min(i, j));
       if (slot == kOutside) return false;
-      slot_[static_cast<std::size_t>(p)] = static_cast<std::ptrdiff_t>(slot);
-      weight_[static_cast<std::size_t>(p)] = symmetrize && i != j ? 0.5 : 1.0;
+      slot_[static_cast<std::size_t>(p)] = static_cast<std::uint32_t>(slot);
+      if (symmetrize && i == j) diagonal_entries_.push_back(static_cast<std::uint32_t>(p));
     }
   }
   analysed_ = true;
@@ -64,10 +67,13 @@ void SymmetricBlockMatrix::Assign(const double* values) {
   if (!analysed_) throw LogicError("SymmetricBlockMatrix::Assign before Analyze");
   std::fill(values_.begin(), values_.end(), 0.0);
   double* data = values_.data();
-  // Halves of a symmetrized pair: 0 + ½a + ½b is ½(a + b) to the last bit (scaling by ½ is exact).
+  // Halves of a symmetrized pair: 0 + ½a + ½b is ½(a + b) to the last bit (scaling by ½ is exact),
+  // and a diagonal entry's two halves are the entry.
+  const double weight = symmetrize_ ? 0.5 : 1.0;
   for (std::size_t p = 0; p < slot_.size(); ++p) {
-    if (slot_[p] >= 0) data[slot_[p]] += weight_[p] * values[p];
+    if (slot_[p] != kNotRead) data[slot_[p]] += weight * values[p];
   }
+  for (const std::uint32_t p : diagonal_entries_) data[slot_[p]] += 0.5 * values[p];
 }
 
 void SymmetricBlockMatrix::AddOuterProduct(const std::vector<int>& indices, const std::vector<double>& values,

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/types.hpp"
@@ -60,8 +61,11 @@ class SymmetricBlockMatrix {
   std::vector<std::size_t> block_of_;        // per row
   std::vector<std::size_t> diagonal_, below_;  // offsets of D_k and L_k in values_
   std::vector<double> values_;
-  std::vector<std::ptrdiff_t> slot_;  // per entry of the analysed pattern: its place, −1 not read
-  std::vector<double> weight_;        // and its share there (½ for each half of a symmetrized pair)
+  // Per entry of the analysed pattern: its place (kNotRead: an upper entry, not symmetrizing), each
+  // entry weighted ½ when symmetrizing, the diagonal's entries (`diagonal_entries_`) a second ½.
+  std::vector<std::uint32_t> slot_;
+  std::vector<std::uint32_t> diagonal_entries_;
+  bool symmetrize_ = false;
   bool analysed_ = false;
 };
 

@@ -30,12 +30,18 @@ MatX RandomUnsymmetric(unsigned seed) {
   return a;
 }
 
+// `a` in block storage (analysed and assigned); false when it does not fit the blocks.
+bool InBlocks(const MatX& a, bool symmetrize, SymmetricBlockMatrix& blocks) {
+  const SparseMat sparse = a.sparseView(0.0, 0.0);
+  if (!blocks.Analyze(sparse, kStarts, symmetrize)) return false;
+  blocks.Assign(sparse.valuePtr());
+  return true;
+}
+
 TEST(SymmetricBlockMatrix, MultipliesByTheSymmetricPart) {
   const MatX a = RandomUnsymmetric(1);
-  const SparseMat sparse = a.sparseView(0.0, 0.0);
   SymmetricBlockMatrix blocks;
-  ASSERT_TRUE(blocks.Analyze(sparse, kStarts, true));
-  blocks.Assign(sparse.valuePtr());
+  ASSERT_TRUE(InBlocks(a, true, blocks));
   const VecX x = VecX::LinSpaced(a.rows(), -1.0, 2.0);
   const VecX expected = 0.5 * (a + a.transpose()) * x;
   EXPECT_LT((blocks.Multiply(x) - expected).norm(), 1e-13 * expected.norm());
@@ -45,11 +51,9 @@ TEST(SymmetricBlockMatrix, MultipliesByTheSymmetricPart) {
 }
 
 TEST(SymmetricBlockMatrix, ReadsOnlyTheLowerTriangleUnlessSymmetrizing) {
-  MatX a = RandomUnsymmetric(2);
-  const SparseMat sparse = a.sparseView(0.0, 0.0);
+  const MatX a = RandomUnsymmetric(2);
   SymmetricBlockMatrix blocks;
-  ASSERT_TRUE(blocks.Analyze(sparse, kStarts, false));
-  blocks.Assign(sparse.valuePtr());
+  ASSERT_TRUE(InBlocks(a, false, blocks));
   const MatX lower = a.triangularView<Eigen::Lower>();
   const MatX symmetric = lower + lower.transpose() - MatX(a.diagonal().asDiagonal());
   const VecX x = VecX::Ones(a.rows());
@@ -58,10 +62,8 @@ TEST(SymmetricBlockMatrix, ReadsOnlyTheLowerTriangleUnlessSymmetrizing) {
 
 TEST(SymmetricBlockMatrix, AddsAnOuterProductWithinTheBlocks) {
   const MatX a = RandomUnsymmetric(3);
-  const SparseMat sparse = a.sparseView(0.0, 0.0);
   SymmetricBlockMatrix blocks;
-  ASSERT_TRUE(blocks.Analyze(sparse, kStarts, true));
-  blocks.Assign(sparse.valuePtr());
+  ASSERT_TRUE(InBlocks(a, true, blocks));
   const std::vector<double> kept = blocks.values();
   const std::vector<int> indices = {10, 4, 8};  // blocks 2 and 1: neighbours
   const std::vector<double> values = {0.5, -2.0, 1.5};
