@@ -207,11 +207,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
       }
     }
     double good = sigma;
-    // Where p(σ) at the first positive-definite shift is longer than the radius, the answer lies above
-    // that shift (‖p(σ)‖ falls as σ grows) and the threshold below it need not be known closely.
-    step.p = -cholesky.Solve(g);
-    const bool beyond = MassNorm(cholesky, step.p) > radius;
-    for (int k = 0; k < kBisections && failed > 0.0 && !beyond; ++k) {
+    for (int k = 0; k < kBisections && failed > 0.0; ++k) {
       const double middle = std::sqrt(failed * good);
       if (cholesky.Factorize(middle)) {
         good = middle;
