@@ -4,14 +4,11 @@
 // the block Cholesky (Golub & Van Loan, Matrix Computations, 4th ed., 2013, §4.5):
 //   S_0 = D_0,   C_k C_kᵀ = S_k,   W_k = L_k C_k⁻ᵀ,   S_{k+1} = D_{k+1} − W_k W_kᵀ;
 // solve C Cᵀ x = b by y_k = C_k⁻¹ (b_k − W_{k−1} y_{k−1}) down the string and
-// x_k = C_k⁻ᵀ (y_k − W_kᵀ x_{k+1}) back up. It runs from both ends toward the middle block
-// m = ⌊N/2⌋ (the "twisted" order of solvers/block_tridiagonal_lu.hpp: the Cholesky factorization of
-// the matrix with its blocks taken in the order 0 … m−1, N−1 … m+1, m), the two sweeps side by side on
-// two threads; from the bottom W'_k = L_{k−1}ᵀ C_k⁻ᵀ and S_{k−1} = D_{k−1} − W'_k W'_kᵀ, and
-// S_m = D_m − W_{m−1} W_{m−1}ᵀ − W'_{m+1} W'_{m+1}ᵀ. A is positive definite exactly when every S_k is
-// (its Schur complements in that order are; a symmetric permutation keeps definiteness), so a failed
-// block factorization says the matrix is not: the stability test of the energy trust region
-// (solvers/shifted_cholesky.hpp).
+// x_k = C_k⁻ᵀ (y_k − W_kᵀ x_{k+1}) back up. A is positive definite exactly when every S_k is (its
+// Schur complements are), so a failed block factorization says the matrix is not: the stability
+// test of the energy trust region (solvers/shifted_cholesky.hpp). One sweep on one thread: the two
+// sweeps of block_tridiagonal_lu.hpp side by side (tried) made the trust region slower on a shared
+// machine, each of its ~100 solves a solve then waiting on a second thread.
 //
 // Why: on a 740-body string (13 324 coordinates, half bandwidth 35) LAPACK's band Cholesky (dpbtrf,
 // level-2 updates in the reference BLAS) spends ~n·kd² multiply-adds through the band's zeros; the
@@ -53,11 +50,10 @@ class BlockTridiagonalCholesky {
   SymmetricBlockMatrix assembled_;  // the matrix of the sparse Factorize, scattered into blocks
   SymmetricBlockMatrix metric_assembled_;
   std::vector<Eigen::Index> starts_;
-  // The factors in one buffer, column major: C_k (lower triangle) and, between blocks k and k + 1,
-  // T_k = C_k⁻¹ L_kᵀ (n_k × n_{k+1}) where k < m, V_{k+1} = C_{k+1}⁻¹ L_k (n_{k+1} × n_k) where k ≥ m.
+  // The factors in one buffer, column major: C_k (lower triangle) and T_k = W_kᵀ = C_k⁻¹ L_kᵀ
+  // (n_k × n_{k+1}).
   std::vector<double> storage_;
   std::vector<std::size_t> diagonal_, coupling_;  // offsets into storage_
-  std::size_t middle_ = 0;  // m = ⌊N/2⌋, where the two sweeps meet
   bool factorized_ = false;
   Eigen::Index size(std::size_t k) const { return starts_[k + 1] - starts_[k]; }
 };

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 
 #include <fmt/format.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "core/error.hpp"
-#include "solvers/two_sweeps.hpp"
 
 namespace drillflex::solvers {
 
@@ -125,6 +128,37 @@ double SmallestPivot2(const Lu& lu) {
   const auto pivots = lu.matrixLU().diagonal();
   for (Eigen::Index j = 0; j < pivots.size(); ++j) smallest2 = std::min(smallest2, std::norm(pivots(j)));
   return smallest2;
+}
+
+// Below this many blocks both sweeps run on the calling thread: a thread's start costs more.
+constexpr std::size_t kParallelBlocks = 16;
+
+// Runs the two independent sweeps, side by side on two OpenMP threads when `parallel` and the caller
+// allows more than one thread, one after the other otherwise; an exception in either is rethrown here.
+template <typename First, typename Second>
+void RunBoth(bool parallel, const First& first, const Second& second) {
+#ifdef _OPENMP
+  parallel = parallel && omp_get_max_threads() > 1;
+#else
+  static_cast<void>(parallel);  // without OpenMP the pragma below is ignored: one after the other
+#endif
+  std::exception_ptr failure;
+  auto guarded = [&failure](const auto& task) {
+    try {
+      task();
+    } catch (...) {
+#pragma omp critical(drillflex_block_lu_failure)
+      if (!failure) failure = std::current_exception();
+    }
+  };
+#pragma omp parallel sections num_threads(2) if (parallel)
+  {
+#pragma omp section
+    guarded(first);
+#pragma omp section
+    guarded(second);
+  }
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace
