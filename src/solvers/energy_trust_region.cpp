@@ -81,7 +81,7 @@ class Minimizer {
   // Hintermüller, Ito & Kunisch 2002): with the set A the model is quadratic (H + Σ_A k a aᵀ), its
   // step predicts which contacts touch, and that is the next A, until the set repeats. Without
   // terms, Subproblem on `plain` (H at q).
-  Step ContactStep(ShiftedCholesky& plain, const VecX& g, double radius,
+  Step ContactStep(const SparseMat& k, ShiftedCholesky& plain, const VecX& g, double radius,
                    const std::vector<PenaltyTerm>& terms, EnergyTrustRegionResult& result);
   // The lowest eigenpair of (H, M) by inverse iteration on the factorization held (shift σ > −λ₁).
   std::pair<double, VecX> LowestMode(ShiftedCholesky& cholesky) const;
@@ -279,7 +279,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
   return step;
 }
 
-Step Minimizer::ContactStep(ShiftedCholesky& plain, const VecX& g,
+Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const VecX& g,
                             double radius, const std::vector<PenaltyTerm>& terms, EnergyTrustRegionResult& result) {
   const profile::Scope scope("solver: trust-region subproblem");
   if (terms.empty()) return Subproblem(plain, g, radius, result);
@@ -319,9 +319,7 @@ Step Minimizer::ContactStep(ShiftedCholesky& plain, const VecX& g,
     std::vector<Crossing> crossings;
     std::vector<double> moved(count);
     std::vector<char> on(count, 0);
-    // pᵀKp = pᵀHp: the quadratic form of the tangent is its symmetric part's (H as set, before the
-    // rounds' outer products).
-    double a0 = constant, a1 = smooth.dot(p), a2 = p.dot(plain.OriginalStiffnessTimes(p));
+    double a0 = constant, a1 = smooth.dot(p), a2 = p.dot(k * p);
     auto toggle = [&](std::size_t c, double sign) {
       const double stiffness = terms[c].stiffness, value = terms[c].value, m = moved[c];
       a0 += sign * 0.5 * stiffness * value * value;
@@ -480,7 +478,7 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     }
     ++result.iterations;
     const double scaled_radius = radius * std::sqrt(mass_scale);
-    Step step = ContactStep(cholesky, residual, scaled_radius, problem_.PenaltyTerms(result.q), result);
+    Step step = ContactStep(k, cholesky, residual, scaled_radius, problem_.PenaltyTerms(result.q), result);
     if (!step.failure.empty()) {
       result.factorizations += cholesky.factorizations() - counted;
       result.failure = step.failure;

@@ -12,7 +12,7 @@
 // goes to Eigen::SimplicialLLT with AMD. Given coordinate blocks that the matrix couples only to
 // their neighbours (a string's bodies), it is factorized by blocks instead
 // (solvers/block_tridiagonal_cholesky.hpp), which skips the band's zeros, and H and M are held in
-// block storage (solvers/symmetric_block_matrix.hpp) for the products too.
+// block storage (solvers/symmetric_block_matrix.hpp), H's products by blocks too.
 #pragma once
 
 #include <memory>
@@ -48,9 +48,8 @@ class ShiftedCholesky {
   // H back to what the constructor was given. Drops the factorization held.
   void RestoreStiffness();
 
-  // (H + Hᵀ)/2 x, with any outer products added; the same without them (H as last set); M x.
+  // (H + Hᵀ)/2 x, with any outer products added; M x.
   VecX StiffnessTimes(const VecX& x) const;
-  VecX OriginalStiffnessTimes(const VecX& x) const;
   VecX MetricTimes(const VecX& x) const;
   double shift() const { return shift_; }         // σ of the last successful factorization
   int factorizations() const { return count_; }   // attempted, successful or not
@@ -71,6 +70,7 @@ class ShiftedCholesky {
   bool by_blocks_ = false;
   // By blocks, H and M live in block storage (solvers/symmetric_block_matrix.hpp) instead of the
   // union pattern: H as set (`block_original_`, kept while outer products change `block_stiffness_`).
+  // M's products stay with M's own sparse pattern (MetricTimes).
   SymmetricBlockMatrix block_stiffness_, block_metric_;
   std::vector<double> block_original_;
   bool block_modified_ = false;  // outer products added since H was set

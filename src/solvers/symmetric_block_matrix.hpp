@@ -4,11 +4,11 @@
 // it, L_k = A(k+1, k), column major, one after the other (solvers/block_tridiagonal_cholesky.hpp
 // factorizes from them).
 //
-// Why: the trust region (solvers/energy_trust_region.hpp) multiplies by H and M a few dozen times
-// an iteration and factorizes H + σM up to twenty; through the compressed sparse matrix of the union
-// of H's and M's patterns (~940k entries on 965 bodies, three times M's own) every product walked
-// index arrays and every factorization scattered entry by entry into blocks. Here a matrix is
-// scattered once, when it is set, and its products are dense block products.
+// Why: the trust region (solvers/energy_trust_region.hpp) multiplies by H a few dozen times an
+// iteration and factorizes H + σM up to twenty; through the compressed sparse matrix of the union
+// of H's and M's patterns (~940k entries on 965 bodies) every product walked index arrays and every
+// factorization scattered entry by entry into blocks. Here a matrix is scattered once, when it is
+// set, and its products are dense block products.
 #pragma once
 
 #include <cstddef>

@@ -130,10 +130,10 @@ TEST_P(ShiftedCholeskyTest, OuterProductsSwitchOnAndBack) {
   EXPECT_FALSE(cholesky.has_factorization());
   cholesky.RestoreStiffness();
   EXPECT_EQ(Stiffness(cholesky, n), before);
-  // The tangent as set, through the outer products' rounds.
+  // Switched on and back again: the tangent as set, to the last bit.
   cholesky.AddOuterProduct(indices, values, 4.0);
-  const VecX x = VecX::LinSpaced(n, -1.0, 1.0);
-  EXPECT_LT((cholesky.OriginalStiffnessTimes(x) - before * x).norm(), 1e-14 * (before * x).norm());
+  cholesky.RestoreStiffness();
+  EXPECT_EQ(Stiffness(cholesky, n), before);
 }
 
 INSTANTIATE_TEST_SUITE_P(BandedWideAndByBlocks, ShiftedCholeskyTest,
