@@ -319,7 +319,7 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
     std::vector<Crossing> crossings;
     std::vector<double> moved(count);
     std::vector<char> on(count, 0);
-    double a0 = constant, a1 = smooth.dot(p), a2 = p.dot(k * p);
+    double a0 = constant, a1 = smooth.dot(p), a2 = p.dot(plain.TangentTimes(k, p));
     auto toggle = [&](std::size_t c, double sign) {
       const double stiffness = terms[c].stiffness, value = terms[c].value, m = moved[c];
       a0 += sign * 0.5 * stiffness * value * value;

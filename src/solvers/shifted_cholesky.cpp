@@ -62,6 +62,8 @@ void ShiftedCholesky::Build(const SparseMat& stiffness) {
   factorized_ = false;
   block_modified_ = false;
   metric_given_.makeCompressed();
+  tangent_runs_.Analyze(first);
+  metric_runs_.Analyze(metric_given_);
   by_blocks_ = !blocks_.empty() && block_stiffness_.Analyze(first, blocks_, true) &&
                block_metric_.Analyze(metric_given_, blocks_, false);
   if (by_blocks_) {
@@ -128,7 +130,7 @@ VecX ShiftedCholesky::MetricTimes(const VecX& x) const {
   // M's own pattern, summed as the union pattern was (its extra entries are zeros): the trust
   // region's norms to the last bit as before (a step's length decides its acceptance, and a
   // hook-loaded string's solve, tests/analyses/bit_bottom_static_test.cpp, is that sensitive).
-  return metric_given_ * x;
+  return metric_runs_.Multiply(metric_given_, x);
 }
 
 ShiftedCholesky::~ShiftedCholesky() = default;

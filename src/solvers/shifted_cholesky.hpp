@@ -20,6 +20,7 @@
 
 #include "core/types.hpp"
 #include "solvers/block_tridiagonal_cholesky.hpp"
+#include "solvers/column_runs.hpp"
 #include "solvers/symmetric_block_matrix.hpp"
 
 namespace drillflex::solvers {
@@ -48,9 +49,12 @@ class ShiftedCholesky {
   // H back to what the constructor was given. Drops the factorization held.
   void RestoreStiffness();
 
-  // (H + Hᵀ)/2 x, with any outer products added; M x.
+  // (H + Hᵀ)/2 x, with any outer products added; M x (summed as Eigen's sparse product sums it).
   VecX StiffnessTimes(const VecX& x) const;
   VecX MetricTimes(const VecX& x) const;
+  // K x for the tangent K last given (its pattern; the values may be of the matrix as it is now),
+  // summed as Eigen's sparse product sums it (solvers/column_runs.hpp).
+  VecX TangentTimes(const SparseMat& tangent, const VecX& x) const { return tangent_runs_.Multiply(tangent, x); }
   double shift() const { return shift_; }         // σ of the last successful factorization
   int factorizations() const { return count_; }   // attempted, successful or not
   bool has_factorization() const { return factorized_; }
@@ -74,6 +78,7 @@ class ShiftedCholesky {
   SymmetricBlockMatrix block_stiffness_, block_metric_;
   std::vector<double> block_original_;
   bool block_modified_ = false;  // outer products added since H was set
+  ColumnRuns tangent_runs_, metric_runs_;  // the products with K's and M's own patterns
   bool metric_coupled_ = true;   // M has blocks below the diagonal
   BlockTridiagonalCholesky block_factors_;
   bool banded_ = false;
