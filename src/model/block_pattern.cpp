@@ -55,6 +55,19 @@ BlockPattern::BlockPattern(const std::vector<Body>& bodies, const std::vector<st
   std::fill(zero_.valuePtr(), zero_.valuePtr() + nonzeros, 0.0);
 }
 
+void BlockPattern::Prepare(SparseMat& matrix) const {
+  const bool same = matrix.isCompressed() && matrix.rows() == zero_.rows() && matrix.cols() == zero_.cols() &&
+                    matrix.nonZeros() == zero_.nonZeros() &&
+                    std::equal(zero_.outerIndexPtr(), zero_.outerIndexPtr() + zero_.outerSize() + 1,
+                               matrix.outerIndexPtr());
+  if (!same) matrix = zero_;
+}
+
+void BlockPattern::ZeroColumns(int body, SparseMat& matrix) const {
+  const int* outer = matrix.outerIndexPtr();
+  std::fill(matrix.valuePtr() + outer[offsets_[body]], matrix.valuePtr() + outer[offsets_[body] + sizes_[body]], 0.0);
+}
+
 int BlockPattern::PositionInColumn(int row_body, int col_body) const {
   for (const auto& [a, position] : column_bodies_[col_body]) {
     if (a == row_body) return position;

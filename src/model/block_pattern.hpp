@@ -22,6 +22,13 @@ class BlockPattern {
 
   // The pattern with every value 0.
   SparseMat Zero() const { return zero_; }
+  // `matrix` given the pattern: kept as it is (its values stale) where it has the pattern's size,
+  // entries and column starts (a matrix Zero() gave before), else replaced by Zero(). Then
+  // ZeroColumns for every body makes it Zero().
+  void Prepare(SparseMat& matrix) const;
+  // Zeroes body `body`'s columns: one contiguous range of the values (column-major storage), so that
+  // the thread that assembles a body's columns clears them too, while they are in its cache.
+  void ZeroColumns(int body, SparseMat& matrix) const;
 
   // Adds `block`, over the concatenated velocity blocks of `body_indices` (in that order), into
   // `matrix` (a copy of Zero()). Throws LogicError for a pair of bodies outside the pattern.

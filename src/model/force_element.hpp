@@ -26,6 +26,9 @@ struct ElementContribution {
   VecX force;      // added to the residual
   MatX stiffness;  // ∂force/∂(position increment)
   MatX damping;    // ∂force/∂v
+  // False where the caller will not read `damping` (an iteration matrix with c_D = 0: statics): an
+  // element may then leave it zero and skip its cost.
+  bool damping_needed = true;
 };
 
 class ForceElement {

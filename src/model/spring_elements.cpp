@@ -28,6 +28,7 @@ void SpringContribution(const CouplingKinematics& k, const Vec6& stiffness, cons
   weighted.noalias() = stiffness.asDiagonal() * k.jacobian;
   out.stiffness.noalias() += k.jacobian.transpose().lazyProduct(weighted);
   out.stiffness += CouplingJacobianDerivative(k, force);
+  if (!out.damping_needed) return;  // half the products of a coupling's matrices (statics)
   weighted.noalias() = damping.asDiagonal() * k.jacobian;
   out.damping.noalias() += k.jacobian.transpose().lazyProduct(weighted);
 }

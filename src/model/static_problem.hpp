@@ -34,6 +34,10 @@ class StaticModelProblem : public solvers::StaticProblem {
                             double cM) const override {
     return model_.IterationMatrix(t, q, v, a, Load(), cK, cD, cM);
   }
+  void IterationMatrixInto(SparseMat& matrix, double t, const VecX& q, const VecX& v, const VecX& a, double cK,
+                           double cD, double cM) const override {
+    model_.IterationMatrixInto(matrix, t, q, v, a, Load(), cK, cD, cM);
+  }
   void SetLoadFactor(double load_factor) override {
     if (ramp_ == Ramp::kLoads) {
       load_.load_factor = base_.load_factor * load_factor;

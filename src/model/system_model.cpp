@@ -282,24 +282,34 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
 
 SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load,
                                        double cK, double cD, double cM) const {
+  SparseMat matrix;
+  IterationMatrixInto(matrix, t, q, v, a, load, cK, cD, cM);
+  return matrix;
+}
+
+void SystemModel::IterationMatrixInto(SparseMat& matrix, double t, const VecX& q, const VecX& v, const VecX& a,
+                                      LoadParameters load, double cK, double cD, double cM) const {
   const profile::Scope scope("model: iteration matrix");
   const auto poses = Poses(q);
   const bool parallel = bodies_.size() >= kParallelBodies;
   // cK ∂f/∂q + cD ∂f/∂v of an element, into contribution.stiffness.
   const auto element_block = [&](int e, ElementState& state, ElementContribution& contribution) {
     FillState(*elements_[e], poses, v, t, load, state);
+    contribution.damping_needed = cD != 0.0;
     elements_[e]->Evaluate(state, true, contribution);
     contribution.stiffness *= cK;
     if (cD != 0.0) contribution.stiffness.noalias() += cD * contribution.damping;
   };
+  // The elements have no mass: with c_K = c_D = 0 (the mass matrix alone) they add nothing.
+  const bool with_elements = cK != 0.0 || cD != 0.0;
   std::vector<MatX> shared_blocks(elements_.size());
-  ForEachIndex(shared_elements_.size(), parallel, [&](std::size_t i) {
+  ForEachIndex(with_elements ? shared_elements_.size() : 0, parallel, [&](std::size_t i) {
     thread_local ElementState state;
     ElementContribution contribution;
     element_block(shared_elements_[i], state, contribution);
     shared_blocks[shared_elements_[i]] = std::move(contribution.stiffness);
   });
-  SparseMat matrix = iteration_pattern_.Zero();
+  iteration_pattern_.Prepare(matrix);
   ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
     thread_local ElementState state;
     thread_local ElementContribution contribution;
@@ -307,6 +317,7 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
     const Body& body = bodies_[b];
     const int n = body.velocity_count();
     const int index = static_cast<int>(b);
+    iteration_pattern_.ZeroColumns(index, matrix);  // only this body's task writes its columns
     local.setZero(n, n);
     // cK K_in + cD D_in + cM M of the inertia (exact, model/body_inertia_jacobian.hpp).
     AddInertiaMatrices(body, poses[b], v.segment(body.v_offset, n), a.segment(body.v_offset, n), cK, cD, cM, local);
@@ -317,16 +328,17 @@ SparseMat SystemModel::IterationMatrix(double t, const VecX& q, const VecX& v, c
     // The body's own elements (wall contacts, loads, fluid) summed into its dense block first: one
     // scatter into the pattern a body instead of one an element (~10 contacts a body).
     for (int e : body_elements_[b]) {
-      if (element_bodies_[e].size() > 1) continue;
+      if (element_bodies_[e].size() > 1 || !with_elements) continue;
       element_block(e, state, contribution);
       local += contribution.stiffness;
     }
     iteration_pattern_.AddColumns(local, std::span<const int>(&index, 1), index, matrix);
     for (int e : body_elements_[b]) {
-      if (element_bodies_[e].size() > 1) iteration_pattern_.AddColumns(shared_blocks[e], element_bodies_[e], index, matrix);
+      if (element_bodies_[e].size() > 1 && with_elements) {
+        iteration_pattern_.AddColumns(shared_blocks[e], element_bodies_[e], index, matrix);
+      }
     }
   });
-  return matrix;
 }
 
 SparseMat SystemModel::MassMatrix(const VecX& q) const {
@@ -391,12 +403,17 @@ std::vector<solvers::PenaltyTerm> SystemModel::PenaltyTerms(const VecX& q, LoadP
   const profile::Scope scope("model: penalty terms");
   const auto poses = Poses(q);
   const VecX rest = VecX::Zero(num_velocities_);
-  std::vector<solvers::PenaltyTerm> terms;
-  VecX gradient;
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
+  // Each element on any thread into its own slot, gathered in the model's order.
+  std::vector<solvers::PenaltyTerm> slots(elements_.size());
+  std::vector<char> has(elements_.size(), 0);
+  ForEachIndex(elements_.size(), bodies_.size() >= kParallelBodies, [&](std::size_t e) {
+    thread_local ElementState state;
+    thread_local VecX gradient;
     const ForceElement& element = *elements_[e];
-    solvers::PenaltyTerm term;
-    if (!element.Penalty(StateOf(element, poses, rest, 0.0, load), term.value, term.stiffness, gradient)) continue;
+    FillState(element, poses, rest, 0.0, load, state);
+    solvers::PenaltyTerm& term = slots[e];
+    if (!element.Penalty(state, term.value, term.stiffness, gradient)) return;
+    has[e] = 1;
     int local = 0;
     for (const int b : element_bodies_[e]) {
       const Body& body = bodies_[b];
@@ -406,7 +423,10 @@ std::vector<solvers::PenaltyTerm> SystemModel::PenaltyTerms(const VecX& q, LoadP
         term.gradient.push_back(gradient[local]);
       }
     }
-    terms.push_back(std::move(term));
+  });
+  std::vector<solvers::PenaltyTerm> terms;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    if (has[e]) terms.push_back(std::move(slots[e]));
   }
   return terms;
 }

@@ -72,6 +72,11 @@ class SystemModel {
   // bodies sharing an element, structural zeros included, the same at every state.
   SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a, LoadParameters load, double cK,
                             double cD, double cM) const;
+  // The same into `matrix`: where it holds this model's pattern already (a matrix from an earlier
+  // call: the same size, entries and column starts), only its values are written, with no
+  // allocation or copy of the ~1e6-entry pattern; else it is replaced.
+  void IterationMatrixInto(SparseMat& matrix, double t, const VecX& q, const VecX& v, const VecX& a,
+                           LoadParameters load, double cK, double cD, double cM) const;
   // The bodies' mass, with the fluid lumps a transient's bodies carry (model/fluid_inertia.hpp).
   SparseMat MassMatrix(const VecX& q) const;
   // Kinetic energy: the bodies' and their fluid lumps'.

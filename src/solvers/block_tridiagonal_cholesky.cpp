@@ -12,76 +12,61 @@ using BlockMap = Eigen::Map<MatX>;
 using ConstBlockMap = Eigen::Map<const MatX>;
 
 bool BlockTridiagonalCholesky::Analyze(const SparseMat& pattern, const std::vector<Eigen::Index>& starts) {
-  analysed_ = factorized_ = false;
-  const Eigen::Index n = pattern.rows();
-  if (!pattern.isCompressed() || pattern.cols() != n || starts.size() < 2 || starts.front() != 0 ||
-      starts.back() != n || !std::is_sorted(starts.begin(), starts.end())) {
-    return false;
-  }
+  factorized_ = false;
+  return assembled_.Analyze(pattern, starts, false) && metric_assembled_.Analyze(pattern, starts, false);
+}
+
+bool BlockTridiagonalCholesky::Factorize(const double* values, const double* metric_values, double shift) {
+  if (!assembled_.analysed()) throw LogicError("BlockTridiagonalCholesky::Factorize before Analyze");
+  assembled_.Assign(values);
+  if (metric_values == nullptr) return Factorize(assembled_, nullptr, 0.0);
+  metric_assembled_.Assign(metric_values);
+  return Factorize(assembled_, &metric_assembled_, shift);
+}
+
+void BlockTridiagonalCholesky::Layout(const std::vector<Eigen::Index>& starts) {
+  if (starts == starts_ && !storage_.empty()) return;
   starts_ = starts;
   const std::size_t blocks = starts.size() - 1;
-  std::vector<std::size_t> block_of(static_cast<std::size_t>(n), 0);
-  for (std::size_t k = 0; k < blocks; ++k) {
-    if (size(k) <= 0) return false;
-    for (Eigen::Index i = starts[k]; i < starts[k + 1]; ++i) block_of[static_cast<std::size_t>(i)] = k;
-  }
   diagonal_.resize(blocks);
-  below_.resize(blocks > 0 ? blocks - 1 : 0);
-  coupling_.resize(below_.size());
+  coupling_.resize(blocks > 0 ? blocks - 1 : 0);
   std::size_t offset = 0;
   for (std::size_t k = 0; k < blocks; ++k) {
     diagonal_[k] = offset;
     offset += static_cast<std::size_t>(size(k) * size(k));
     if (k + 1 < blocks) {
-      below_[k] = offset;
-      offset += static_cast<std::size_t>(size(k + 1) * size(k));
+      coupling_[k] = offset;
+      offset += static_cast<std::size_t>(size(k) * size(k + 1));
     }
-  }
-  assembled_size_ = offset;
-  for (std::size_t k = 0; k + 1 < blocks; ++k) {
-    coupling_[k] = offset;
-    offset += static_cast<std::size_t>(size(k) * size(k + 1));
   }
   storage_.assign(offset, 0.0);
-  entry_.assign(static_cast<std::size_t>(pattern.nonZeros()), -1);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const std::size_t bj = block_of[static_cast<std::size_t>(j)];
-    for (int p = pattern.outerIndexPtr()[j]; p < pattern.outerIndexPtr()[j + 1]; ++p) {
-      const Eigen::Index i = pattern.innerIndexPtr()[p];
-      if (i < j) continue;  // the upper triangle mirrors the lower one
-      const std::size_t bi = block_of[static_cast<std::size_t>(i)];
-      if (bi != bj && bi != bj + 1) return false;
-      const Eigen::Index row = i - starts[bi], column = j - starts[bj];
-      const std::size_t base = bi == bj ? diagonal_[bj] : below_[bj];
-      entry_[static_cast<std::size_t>(p)] =
-          static_cast<std::ptrdiff_t>(base + static_cast<std::size_t>(column * size(bi) + row));
-    }
-  }
-  analysed_ = true;
-  return true;
 }
 
-bool BlockTridiagonalCholesky::Factorize(const double* values, const double* metric_values, double shift) {
-  if (!analysed_) throw LogicError("BlockTridiagonalCholesky::Factorize before Analyze");
-  factorized_ = false;
-  std::fill(storage_.begin(), storage_.begin() + static_cast<std::ptrdiff_t>(assembled_size_), 0.0);
-  double* data = storage_.data();
-  for (std::size_t p = 0; p < entry_.size(); ++p) {
-    if (entry_[p] < 0) continue;
-    data[entry_[p]] = values[p] + (metric_values != nullptr ? shift * metric_values[p] : 0.0);
+bool BlockTridiagonalCholesky::Factorize(const SymmetricBlockMatrix& stiffness, const SymmetricBlockMatrix* metric,
+                                         double shift, bool metric_coupled) {
+  if (!stiffness.analysed() || (metric != nullptr && !metric->SameLayout(stiffness))) {
+    throw LogicError("BlockTridiagonalCholesky::Factorize: a matrix not laid out in blocks, or two layouts");
   }
+  factorized_ = false;
+  Layout(stiffness.starts());
+  double* data = storage_.data();
   const std::size_t count = diagonal_.size();
   for (std::size_t k = 0; k < count; ++k) {
-    BlockMap block(data + diagonal_[k], size(k), size(k));
+    BlockMap block(data + diagonal_[k], size(k), size(k));  // D_k + σ M_k
+    block = ConstBlockMap(stiffness.diagonal_block(k), size(k), size(k));
+    if (metric != nullptr) block += shift * ConstBlockMap(metric->diagonal_block(k), size(k), size(k));
     if (k > 0) {  // S_k = D_k − W_{k−1} W_{k−1}ᵀ = D_k − T_{k−1}ᵀ T_{k−1} (lower triangle)
       const ConstBlockMap previous(data + coupling_[k - 1], size(k - 1), size(k));
       block.selfadjointView<Eigen::Lower>().rankUpdate(previous.transpose(), -1.0);
     }
     const Eigen::LLT<Eigen::Ref<MatX>> factor(block);  // in place: C_k in the lower triangle
     if (factor.info() != Eigen::Success) return false;
-    if (k + 1 < count) {  // T_k = C_k⁻¹ L_kᵀ
+    if (k + 1 < count) {  // T_k = C_k⁻¹ L_kᵀ (L_k + σ M's block below the diagonal)
       BlockMap coupling(data + coupling_[k], size(k), size(k + 1));
-      coupling = ConstBlockMap(data + below_[k], size(k + 1), size(k)).transpose();
+      coupling = ConstBlockMap(stiffness.below_block(k), size(k + 1), size(k)).transpose();
+      if (metric != nullptr && metric_coupled) {
+        coupling += shift * ConstBlockMap(metric->below_block(k), size(k + 1), size(k)).transpose();
+      }
       block.triangularView<Eigen::Lower>().solveInPlace(coupling);
     }
   }

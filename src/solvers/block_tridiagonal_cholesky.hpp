@@ -6,7 +6,9 @@
 // solve C Cᵀ x = b by y_k = C_k⁻¹ (b_k − W_{k−1} y_{k−1}) down the string and
 // x_k = C_k⁻ᵀ (y_k − W_kᵀ x_{k+1}) back up. A is positive definite exactly when every S_k is (its
 // Schur complements are), so a failed block factorization says the matrix is not: the stability
-// test of the energy trust region (solvers/shifted_cholesky.hpp).
+// test of the energy trust region (solvers/shifted_cholesky.hpp). One sweep on one thread: the two
+// sweeps of block_tridiagonal_lu.hpp side by side (tried) made the trust region slower on a shared
+// machine, each of its ~100 solves a solve then waiting on a second thread.
 //
 // Why: on a 740-body string (13 324 coordinates, half bandwidth 35) LAPACK's band Cholesky (dpbtrf,
 // level-2 updates in the reference BLAS) spends ~n·kd² multiply-adds through the band's zeros; the
@@ -18,6 +20,7 @@
 #include <cstddef>
 
 #include "core/types.hpp"
+#include "solvers/symmetric_block_matrix.hpp"
 
 namespace drillflex::solvers {
 
@@ -32,20 +35,25 @@ class BlockTridiagonalCholesky {
   // plus `shift` times `metric_values` (same pattern; null: none). False when it is not positive
   // definite (a block pivot ≤ 0); the factorization is then unusable.
   bool Factorize(const double* values, const double* metric_values, double shift);
+  // Factorizes H + σM given in block storage (M null: none; else of H's layout, and its blocks below
+  // the diagonal are read only when `metric_coupled`). Needs no Analyze. False when not positive
+  // definite.
+  bool Factorize(const SymmetricBlockMatrix& stiffness, const SymmetricBlockMatrix* metric, double shift,
+                 bool metric_coupled = true);
   // x ← A⁻¹ x with the last successful factorization.
   void SolveInPlace(VecX& x) const;
 
-  bool analysed() const { return analysed_; }
+  bool analysed() const { return assembled_.analysed(); }
 
  private:
+  void Layout(const std::vector<Eigen::Index>& starts);
+  SymmetricBlockMatrix assembled_;  // the matrix of the sparse Factorize, scattered into blocks
+  SymmetricBlockMatrix metric_assembled_;
   std::vector<Eigen::Index> starts_;
-  // Every block in one buffer, column major: D_k (its lower triangle becomes C_k), L_k = A(k+1, k)
-  // and T_k = W_kᵀ = C_k⁻¹ L_kᵀ (n_k × n_{k+1}).
+  // The factors in one buffer, column major: C_k (lower triangle) and T_k = W_kᵀ = C_k⁻¹ L_kᵀ
+  // (n_k × n_{k+1}).
   std::vector<double> storage_;
-  std::vector<std::size_t> diagonal_, below_, coupling_;  // offsets into storage_
-  std::size_t assembled_size_ = 0;  // storage_[0, this) holds the D_k and L_k
-  std::vector<std::ptrdiff_t> entry_;  // per stored entry of the pattern: its place, −1 above the diagonal
-  bool analysed_ = false;
+  std::vector<std::size_t> diagonal_, coupling_;  // offsets into storage_
   bool factorized_ = false;
   Eigen::Index size(std::size_t k) const { return starts_[k + 1] - starts_[k]; }
 };

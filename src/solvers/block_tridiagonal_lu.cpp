@@ -61,6 +61,16 @@ bool BlockTridiagonalLuOf<Scalar>::Analyze(Eigen::Index rows, Eigen::Index cols,
       return false;
     }
   }
+  // Consecutive entries that land in consecutive slots (a column's rows within one block) as runs.
+  runs_.clear();
+  for (std::size_t s = 0; s < slot_offsets_.size(); ++s) {
+    if (!runs_.empty() && runs_.back().from + runs_.back().length == s &&
+        runs_.back().to + runs_.back().length == slot_offsets_[s]) {
+      ++runs_.back().length;
+    } else {
+      runs_.push_back({s, slot_offsets_[s], 1});
+    }
+  }
   storage_.assign(size, Scalar(0.0));
   middle_ = blocks / 2;
   coupled_.assign(blocks, Matrix());
@@ -105,7 +115,7 @@ void BlockTridiagonalLuOf<Scalar>::Factorize(const Sparse& matrix) {
                                  "pattern ({} entries)", matrix.nonZeros(), slot_offsets_.size()));
   }
   const Scalar* values = matrix.valuePtr();
-  for (std::size_t s = 0; s < slot_offsets_.size(); ++s) storage_[slot_offsets_[s]] = values[s];
+  for (const Run& run : runs_) std::copy_n(values + run.from, run.length, storage_.data() + run.to);
   Factorize();
 }
 

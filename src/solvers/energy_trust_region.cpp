@@ -58,7 +58,9 @@ class Minimizer {
 
  private:
   VecX Residual(const VecX& q) const { return problem_.Residual(options_.time, q, zero_, zero_); }
-  double MassNorm(const SparseMat& m, const VecX& p) const { return std::sqrt(std::max(p.dot(m * p), 0.0)); }
+  double MassNorm(const ShiftedCholesky& cholesky, const VecX& p) const {
+    return std::sqrt(std::max(p.dot(cholesky.MetricTimes(p)), 0.0));
+  }
   // The subproblem min m(p), ‖p‖_M ≤ radius (unscaled mass norm), by Moré–Sorensen. `shift_hint` > 0:
   // a shift near the answer (the previous active-set round's): tried first, and where H + σM is
   // positive definite there and p(σ) is not inside the region the secular iteration goes on from it.
@@ -86,7 +88,7 @@ class Minimizer {
   // p + τz on the boundary ‖p + τz‖_M = radius, τ of the sign that lowers the model more.
   VecX ToBoundary(const ShiftedCholesky& cholesky, const VecX& g, const VecX& p, const VecX& z, double radius) const;
   double Predicted(const ShiftedCholesky& cholesky, const VecX& g, const VecX& p) const {
-    return -(g.dot(p) + 0.5 * p.dot(cholesky.stiffness() * p));
+    return -(g.dot(p) + 0.5 * p.dot(cholesky.StiffnessTimes(p)));
   }
   void Log(const std::string& line) const {
     if (options_.log) options_.log(line);
@@ -100,13 +102,13 @@ class Minimizer {
   int rounds_ = 0;            // active-set rounds of the last ContactStep (for the log)
   double current_lowest_ = std::numeric_limits<double>::quiet_NaN();  // λ₁ of the last subproblem's H (NaN: positive definite)
   SparseMat metric_;          // M at the start
+  SparseMat assembled_;       // the last tangent assembled (its storage reused from call to call)
   // H + σM at the iterate, kept across iterations (and H + σ_c M at a trial point for the correction)
   std::unique_ptr<ShiftedCholesky> tangent_;
 };
 
 std::pair<double, VecX> Minimizer::LowestMode(ShiftedCholesky& cholesky) const {
-  const SparseMat& m = cholesky.metric();
-  const Eigen::Index n = m.rows();
+  const Eigen::Index n = problem_.num_velocities();
   // A fixed start with every coordinate present (xorshift32, Marsaglia 2003).
   VecX z(n);
   std::uint32_t state = 2463534242u;
@@ -117,13 +119,13 @@ std::pair<double, VecX> Minimizer::LowestMode(ShiftedCholesky& cholesky) const {
     z[j] = static_cast<double>(state) / 4294967296.0 - 0.5;
   }
   for (int k = 0; k < kInverseIterations; ++k) {
-    z = cholesky.Solve(m * z);
-    const double norm = MassNorm(m, z);
+    z = cholesky.Solve(cholesky.MetricTimes(z));
+    const double norm = MassNorm(cholesky, z);
     if (!(norm > 0.0) || !std::isfinite(norm)) break;
     z /= norm;
   }
-  const double mass = z.dot(m * z);
-  const double curvature = mass > 0.0 ? z.dot(cholesky.stiffness() * z) / mass : 0.0;
+  const double mass = z.dot(cholesky.MetricTimes(z));
+  const double curvature = mass > 0.0 ? z.dot(cholesky.StiffnessTimes(z)) / mass : 0.0;
   return {curvature, z};
 }
 
@@ -132,8 +134,8 @@ bool Minimizer::SecondOrderCorrection(const VecX& residual, double shift, VecX& 
   const profile::Scope scope("solver: second-order correction");
   // The iterate's factorization is no longer needed once the step is formed: its object (and its
   // analysis of the pattern) takes the trial point's tangent.
-  const SparseMat k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
-  tangent_->SetStiffness(k);
+  problem_.IterationMatrixInto(assembled_, options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
+  tangent_->SetStiffness(assembled_);
   ShiftedCholesky& cholesky = *tangent_;
   const int factorized_before = cholesky.factorizations();
   const double step_shift = std::max(shift, kFirstShift * shift_scale_);
@@ -150,9 +152,8 @@ bool Minimizer::SecondOrderCorrection(const VecX& residual, double shift, VecX& 
 
 VecX Minimizer::ToBoundary(const ShiftedCholesky& cholesky, const VecX& g, const VecX& p, const VecX& z,
                            double radius) const {
-  const SparseMat& m = cholesky.metric();
-  const VecX mz = m * z;
-  const double a = z.dot(mz), b = 2.0 * p.dot(mz), c = p.dot(m * p) - radius * radius;
+  const VecX mz = cholesky.MetricTimes(z);
+  const double a = z.dot(mz), b = 2.0 * p.dot(mz), c = p.dot(cholesky.MetricTimes(p)) - radius * radius;
   if (!(a > 0.0)) return p;
   const double root = std::sqrt(std::max(b * b - 4.0 * a * c, 0.0));
   const VecX plus = p + ((-b + root) / (2.0 * a)) * z;
@@ -162,7 +163,6 @@ VecX Minimizer::ToBoundary(const ShiftedCholesky& cholesky, const VecX& g, const
 
 Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radius,
                            EnergyTrustRegionResult& result, double shift_hint) {
-  const SparseMat& m = cholesky.metric();
   Step step;
   current_lowest_ = std::numeric_limits<double>::quiet_NaN();
   double lower = 0.0;        // σ at or below which H + σM is not (known) positive definite / p too long
@@ -177,7 +177,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
   bool from_hint = false;
   if (shift_hint > 0.0 && cholesky.Factorize(shift_hint)) {
     step.p = -cholesky.Solve(g);
-    const double norm = MassNorm(m, step.p);
+    const double norm = MassNorm(cholesky, step.p);
     if (norm >= radius * (1.0 - kBoundaryTolerance)) {
       sigma = shift_hint;
       lower = norm > radius ? shift_hint : lower;
@@ -188,7 +188,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
     // the secular iteration below, from σ_hint
   } else if (cholesky.Factorize(0.0)) {
     step.p = -cholesky.Solve(g);
-    if (MassNorm(m, step.p) <= radius) {
+    if (MassNorm(cholesky, step.p) <= radius) {
       step.interior = true;
       step.predicted = Predicted(cholesky, g, step.p);
       return step;
@@ -225,7 +225,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
     lower = threshold;
     step.p = -cholesky.Solve(g);
     // The hard case: even at the threshold the step stays inside; go along z to the boundary.
-    if (MassNorm(m, step.p) <= radius && lowest < 0.0) {
+    if (MassNorm(cholesky, step.p) <= radius && lowest < 0.0) {
       step.p = ToBoundary(cholesky, g, step.p, z, radius);
       step.shift = sigma;
       step.negative_curvature = true;
@@ -237,15 +237,15 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
   // Secular iterations on φ(σ) = 1/Δ − 1/‖p(σ)‖ (Nocedal & Wright, Algorithm 4.3, in the M-norm:
   // d‖p‖²/dσ = −2 pᵀM (H + σM)⁻¹ M p), safeguarded by the bracket [lower, upper].
   for (int k = 0; k < kSecularIterations; ++k) {
-    const double norm = MassNorm(m, step.p);
+    const double norm = MassNorm(cholesky, step.p);
     if (std::abs(norm - radius) <= kBoundaryTolerance * radius) break;
     if (norm > radius) {
       lower = std::max(lower, sigma);
     } else {
       upper = std::min(upper, sigma);
     }
-    const VecX w = cholesky.Solve(m * step.p);
-    const double slope = step.p.dot(m * w);
+    const VecX w = cholesky.Solve(cholesky.MetricTimes(step.p));
+    const double slope = step.p.dot(cholesky.MetricTimes(w));
     double next = slope > 0.0 ? sigma + (norm * norm / slope) * (norm - radius) / radius : kInfinity;
     if (!(next > lower && next < upper)) {
       next = std::isfinite(upper) ? (lower > 0.0 ? std::sqrt(lower * upper) : 0.5 * upper)
@@ -257,7 +257,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
     }
     sigma = next;
     step.p = -cholesky.Solve(g);
-    if (indefinite && MassNorm(m, step.p) < radius && sigma <= threshold * (1.0 + 1e-3)) {
+    if (indefinite && MassNorm(cholesky, step.p) < radius && sigma <= threshold * (1.0 + 1e-3)) {
       step.p = ToBoundary(cholesky, g, step.p, z, radius);
       step.negative_curvature = true;
       break;
@@ -266,7 +266,7 @@ Step Minimizer::Subproblem(ShiftedCholesky& cholesky, const VecX& g, double radi
   // Still outside after the iterations: cut back to the boundary along p (a descent direction, since
   // H + σM is positive definite). Still inside with H indefinite: σ is at the threshold, whatever the
   // inverse iteration estimated it to be (near-double eigenvalues converge slowly): the hard case.
-  const double norm = MassNorm(m, step.p);
+  const double norm = MassNorm(cholesky, step.p);
   if (norm > radius * (1.0 + kBoundaryTolerance)) {
     step.p *= radius / norm;
   } else if (indefinite && !step.negative_curvature && norm < radius * (1.0 - kBoundaryTolerance)) {
@@ -319,7 +319,7 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
     std::vector<Crossing> crossings;
     std::vector<double> moved(count);
     std::vector<char> on(count, 0);
-    double a0 = constant, a1 = smooth.dot(p), a2 = p.dot(k * p);
+    double a0 = constant, a1 = smooth.dot(p), a2 = p.dot(plain.TangentTimes(k, p));
     auto toggle = [&](std::size_t c, double sign) {
       const double stiffness = terms[c].stiffness, value = terms[c].value, m = moved[c];
       a0 += sign * 0.5 * stiffness * value * value;
@@ -432,7 +432,8 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
   while (true) {
     const double norm = residual.norm();
     result.residual_norm = norm;
-    const SparseMat k = problem_.IterationMatrix(options_.time, result.q, zero_, zero_, 1.0, 0.0, 0.0);
+    problem_.IterationMatrixInto(assembled_, options_.time, result.q, zero_, zero_, 1.0, 0.0, 0.0);
+    const SparseMat& k = assembled_;
     // The metric: the mass matrix at the start (only the norm of a step and the shift's scale; its
     // slight change with the state does not matter, and it is not assembled again).
     if (metric_.size() == 0) {

@@ -33,12 +33,17 @@ bool IterationMatrixLu::FactorizeBlocks(const SparseMat& matrix) {
     analysed_ = true;
   }
   if (!block_pattern_fits_) return false;
+  // max |a_ij| in one pass; a NaN or an infinity makes the sum of the entries times 0 a NaN.
   const Eigen::Map<const VecX> values(matrix.valuePtr(), matrix.nonZeros());
-  if (!values.allFinite()) {
+  double largest = 0.0, poison = 0.0;
+  for (Eigen::Index j = 0; j < values.size(); ++j) {
+    largest = std::max(largest, std::abs(values[j]));
+    poison += 0.0 * values[j];
+  }
+  if (!std::isfinite(poison)) {
     throw SolverError(fmt::format("the {}x{} iteration matrix has non-finite entries", matrix.rows(), matrix.cols()));
   }
   blocks_.Factorize(matrix);
-  const double largest = values.size() > 0 ? values.cwiseAbs().maxCoeff() : 0.0;
   return blocks_.smallest_pivot() > options_.block_pivot_tolerance * largest;
 }
 

@@ -83,6 +83,7 @@ class NewtonStepper {
   SparseLinearSolver sparse_;   // when linear_solver_ refuses a nearly singular matrix
   bool by_sparse_lu_ = false;
   bool factorized_ = false;
+  SparseMat assembled_;  // the last iteration matrix (its storage reused from call to call)
   VecX Solve(const VecX& rhs) {
     if (by_sparse_lu_) return sparse_.Solve(rhs);
     VecX x = rhs;
@@ -96,9 +97,9 @@ class NewtonStepper {
 
 std::string NewtonStepper::Factorize(const VecX& q, double shift) {
   factorized_ = false;
-  SparseMat k;
+  SparseMat& k = assembled_;
   try {
-    k = problem_.IterationMatrix(options_.time, q, zero_, zero_, 1.0, 0.0, shift);
+    problem_.IterationMatrixInto(k, options_.time, q, zero_, zero_, 1.0, 0.0, shift);
     linear_solver_.Factorize(k);
     factorized_ = true;
     by_sparse_lu_ = false;

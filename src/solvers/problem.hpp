@@ -49,6 +49,12 @@ class Problem {
   // tangent space), D = ∂R/∂v, M = ∂R/∂a. Size num_velocities × num_velocities.
   virtual SparseMat IterationMatrix(double t, const VecX& q, const VecX& v, const VecX& a,
                                     double cK, double cD, double cM) const = 0;
+  // The same into `matrix`, which a problem may fill in place where it holds an earlier call's
+  // pattern (no allocation of a large matrix a call). Default: replaced by IterationMatrix.
+  virtual void IterationMatrixInto(SparseMat& matrix, double t, const VecX& q, const VecX& v, const VecX& a,
+                                   double cK, double cD, double cM) const {
+    matrix = IterationMatrix(t, q, v, a, cK, cD, cM);
+  }
 
   // True when the iteration matrix may be reused between iterations and steps (it does not
   // depend, or barely depends, on the state: e.g. a linear problem). A hint, never a duty.

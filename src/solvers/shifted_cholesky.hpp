@@ -11,7 +11,8 @@
 // case: its copies and permutations ~20 % of the solve, the numeric factorization 5 %). Any other
 // goes to Eigen::SimplicialLLT with AMD. Given coordinate blocks that the matrix couples only to
 // their neighbours (a string's bodies), it is factorized by blocks instead
-// (solvers/block_tridiagonal_cholesky.hpp), which skips the band's zeros.
+// (solvers/block_tridiagonal_cholesky.hpp), which skips the band's zeros, and H and M are held in
+// block storage (solvers/symmetric_block_matrix.hpp), H's products by blocks too.
 #pragma once
 
 #include <memory>
@@ -19,6 +20,8 @@
 
 #include "core/types.hpp"
 #include "solvers/block_tridiagonal_cholesky.hpp"
+#include "solvers/column_runs.hpp"
+#include "solvers/symmetric_block_matrix.hpp"
 
 namespace drillflex::solvers {
 
@@ -46,8 +49,12 @@ class ShiftedCholesky {
   // H back to what the constructor was given. Drops the factorization held.
   void RestoreStiffness();
 
-  const SparseMat& stiffness() const { return stiffness_; }  // (H + Hᵀ)/2 with any outer products added
-  const SparseMat& metric() const { return metric_; }
+  // (H + Hᵀ)/2 x, with any outer products added; M x (summed as Eigen's sparse product sums it).
+  VecX StiffnessTimes(const VecX& x) const;
+  VecX MetricTimes(const VecX& x) const;
+  // K x for the tangent K last given (its pattern; the values may be of the matrix as it is now),
+  // summed as Eigen's sparse product sums it (solvers/column_runs.hpp).
+  VecX TangentTimes(const SparseMat& tangent, const VecX& x) const { return tangent_runs_.Multiply(tangent, x); }
   double shift() const { return shift_; }         // σ of the last successful factorization
   int factorizations() const { return count_; }   // attempted, successful or not
   bool has_factorization() const { return factorized_; }
@@ -65,6 +72,14 @@ class ShiftedCholesky {
   std::unique_ptr<Factors> factors_;
   std::vector<Eigen::Index> blocks_;
   bool by_blocks_ = false;
+  // By blocks, H and M live in block storage (solvers/symmetric_block_matrix.hpp) instead of the
+  // union pattern: H as set (`block_original_`, kept while outer products change `block_stiffness_`).
+  // M's products stay with M's own sparse pattern (MetricTimes).
+  SymmetricBlockMatrix block_stiffness_, block_metric_;
+  std::vector<double> block_original_;
+  bool block_modified_ = false;  // outer products added since H was set
+  ColumnRuns tangent_runs_, metric_runs_;  // the products with K's and M's own patterns
+  bool metric_coupled_ = true;   // M has blocks below the diagonal
   BlockTridiagonalCholesky block_factors_;
   bool banded_ = false;
   int half_bandwidth_ = 0;
