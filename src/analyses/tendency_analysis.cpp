@@ -13,7 +13,6 @@
 namespace drillflex::analyses {
 namespace {
 
-
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
@@ -41,6 +40,7 @@ struct Evaluated {
 // revolution; four samples average the deviation exactly up to its third harmonic in the toolface);
 // a rotary steerable system neutral for 1 − steer of the time and steering for `steer` of it.
 constexpr int kRotatingToolfaces = 4;
+constexpr std::size_t kKeptStatics = 3;  // a variant's statics kept as warm starts
 
 struct Variant {
   model::ModelInput input;
@@ -153,7 +153,11 @@ class Search {
                                     InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), e.what()));
     }
     if (!equilibrium.bit) throw LogicError("RunTendency: the static has no bit report");
-    solved_[v].push_back(Solved{kappa, hole, std::move(built), equilibrium.q});
+    // The last few only: a warm start is a neighbour of a recent point (the differences of the first,
+    // the last step's), and each keeps a model (hundreds of MB over a search on a long string).
+    std::vector<Solved>& kept = solved_[v];
+    kept.push_back(Solved{kappa, hole, std::move(built), equilibrium.q});
+    if (kept.size() > kKeptStatics) kept.erase(kept.begin());
     return equilibrium;
   }
 

@@ -134,7 +134,6 @@ void ExpectSteadyCurvatureBrackets(double steerability, Criterion criterion, con
               what, below, above);
   EXPECT_LT(below * above, 0.0) << what << " keeps its sign across the steady curvature ± 0.01 deg/100 ft";
   EXPECT_NEAR(result.curvature.right, 0.0, 1e-3 * kDegreesPer100Ft);  // a plane well, not rotating: no walk
-  EXPECT_NEAR(result.build_rate, steady, 1e-15);
   EXPECT_NEAR(result.turn_rate, 0.0, 1e-3 * kDegreesPer100Ft);
   EXPECT_LE(result.trace.size(), 8u);
 }
