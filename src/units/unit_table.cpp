@@ -70,6 +70,10 @@ constexpr std::array kSymbols{
     UnitSymbol{"MN", 1e6, kForce},
     UnitSymbol{"lbf", kPoundForce, kForce, kFold},
     UnitSymbol{"klbf", 1e3 * kPoundForce, kForce, kFold},
+    // The kilogram-force, 1 kg x standard gravity 9.80665 m/s² (3rd CGPM, 1901; NIST SP 811), and the
+    // Energistics (WITSML) symbol of 1000 of them (a tonne-force), in which rigs log hook load and WOB.
+    UnitSymbol{"kgf", 9.80665, kForce},
+    UnitSymbol{"kkgf", 9.80665e3, kForce},
     // pressure and stress
     UnitSymbol{"Pa", 1.0, kPressure, kFold},
     UnitSymbol{"mPa", 1e-3, kPressure},  // for mPa*s

@@ -135,7 +135,7 @@ TEST(ParseUnit, EveryListedUnitHasItsExactFactorAndDimension) {
   }
 }
 
-// The Energistics unit symbols WITSML's trajectory, tubular and wbGeometry objects write in `uom`
+// The Energistics unit symbols WITSML's trajectory, tubular, wbGeometry and log objects write in `uom`
 // (Energistics Unit of Measure Dictionary: dega, ftUS, lbm, the dot for a product), each with its
 // exact factor: the US survey foot is 1200/3937 m, the degree of angle π/180 rad.
 TEST(ParseUnit, EnergisticsSymbolsOfTheWitsmlObjects) {
@@ -151,6 +151,10 @@ TEST(ParseUnit, EnergisticsSymbolsOfTheWitsmlObjects) {
       {"kN.m", 1e3, Dimension{2, 1, -2, 0}, "N*m"}, {"psi", 6894.757293168361, Dimension{-1, 1, -2, 0}, "Pa"},
       {"klbf", 4448.2216152605, kForce, "N"}, {"lbf/ft", 4.4482216152605 / 0.3048, Dimension{0, 1, -2, 0}, "N/m"},
       {"in2", 0.00064516, Dimension{2, 0, 0, 0}, "m2"},
+      // A log's curves (rig readings): hook load and WOB in kgf and kkgf (1000 kgf, a tonne-force:
+      // 1 kgf = 9.80665 N), torque in kN.m or kft.lbf, rotary speed in rpm.
+      {"kgf", 9.80665, kForce, "N"}, {"kkgf", 9806.65, kForce, "N"},
+      {"kft.lbf", 304.8 * 4.4482216152605, Dimension{2, 1, -2, 0}, "N*m"}, {"rpm", kRpm, kRotarySpeed, "rad/s"},
   };
   for (const Conversion& conversion : symbols) {
     SCOPED_TRACE(conversion.unit);
