@@ -13,9 +13,6 @@
 namespace drillflex::io {
 namespace {
 
-constexpr std::string_view kNamespace1411 = "http://www.witsml.org/schemas/1series";
-constexpr std::string_view kNamespace20 = "http://www.energistics.org/energyml/data/witsmlv2";
-
 // Metadata that says nothing of the mechanics; never warned about.
 constexpr std::string_view kMetadata[] = {"commonData", "customData",   "extensionAny", "extensionNameValue",
                                           "citation",   "nameTag",      "vendor",       "model",
@@ -210,12 +207,12 @@ WitsmlDocument ReadWitsml(std::string_view text, const std::string& file_name) {
   WitsmlDocument document;
   document.file = file_name;
   const std::string space = NamespaceOf(source.root());
-  if (space == kNamespace1411) ReadVersion1411(source, document);
-  else if (space == kNamespace20) ReadVersion20(source, document);
+  if (space == kWitsml1411Namespace) ReadVersion1411(source, document);
+  else if (space == kWitsml20Namespace) ReadVersion20(source, document);
   else {
     source.Fail(source.root(),
                 fmt::format("namespace '{}' is not read: expected WITSML 1.4.1.1 ({}) or 2.0 ({})", space,
-                            kNamespace1411, kNamespace20));
+                            kWitsml1411Namespace, kWitsml20Namespace));
   }
   return document;
 }

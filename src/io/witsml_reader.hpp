@@ -15,6 +15,10 @@
 
 namespace drillflex::io {
 
+// The namespaces of the versions read: 1.4.1.1's on its plural root, 2.0's on the object.
+inline constexpr std::string_view kWitsml1411Namespace = "http://www.witsml.org/schemas/1series";
+inline constexpr std::string_view kWitsml20Namespace = "http://www.energistics.org/energyml/data/witsmlv2";
+
 class WitsmlReader {
  public:
   WitsmlReader(const XmlSource& source, WitsmlDocument& document)
