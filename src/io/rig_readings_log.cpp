@@ -65,7 +65,8 @@ struct Column {
 class LogReader {
  public:
   LogReader(const LogTable& table, const RigReadingsOptions& options) : table_(table), options_(options) {
-    for (const auto& [key, mnemonic] : options.mnemonics) {
+    for (const auto& entry : options.mnemonics) {  // (clang 14 lambdas take no structured binding)
+      const std::string& key = entry.first;
       const auto known = std::find_if(std::begin(kRoleInfo), std::end(kRoleInfo),
                                       [&](const RoleInfo& info) { return key == info.key; });
       if (known == std::end(kRoleInfo)) {
