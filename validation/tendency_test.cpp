@@ -5,13 +5,16 @@
 //    (v9-tendency/three-point.yaml), within 0.2 %, toward the toolface. Measured at toolfaces 0, 90 and
 //    180: −0.03 %, 88.8° (the high side turns by ΔA cos I along a hole that turns: about 1.2° over the
 //    BHA here), 180°.
-// 2. MADSim's turn-loading static (v9-tendency/madsim-turn.yaml): the bit's, the near-bit pad's and the
-//    stabilizer's contact forces and the largest bending moment within 15 % of MADSim's (measured
-//    +12.4 %, +12.9 %, −10.2 %, +12.6 %).
+// 2. MADSim's turn-loading static (v9-tendency/madsim-turn.yaml, the top guided as MADSim's): the bit's,
+//    the near-bit pad's and the stabilizer's contact forces, the largest bending moment and the top's
+//    within 15 % of MADSim's (measured +12.4 %, +13.0 %, −11.6 %, +12.6 %, +11.2 %; the top free carried
+//    11 403 ft·lbf there, −55 %).
 // 3. MADSim's sliding motor yield (v9-tendency/madsim-motor.yaml) against WOB and steerability: the yield
 //    rises with WOB from 5 to 35 klbf and moves by less than 0.5°/100 ft from a steerability of 5 % to
 //    25 %, as MADSim's does (13.53 → 15.16, and 14.87 → 14.69 at 30 klbf). The level is not MADSim's:
-//    23.1°/100 ft against 14.87 at 30 klbf (docs/validation.md says what was checked and what is open).
+//    23.1°/100 ft against 14.87 at 30 klbf. An independent planar beam-column of MADSim's own element
+//    table (v9-tendency/madsim_yield_reference.py) gives 22.5 there, and the yield at 30 klbf is asserted
+//    within 1.5°/100 ft of it (docs/validation.md says what was checked and what is open).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -84,13 +87,17 @@ TEST(V9Tendency, MadsimTurnLoadingStaticWithinFifteenPercent) {
   const auto results = RunCase("static", "v9-tendency/madsim-turn.yaml");
   ASSERT_TRUE(results.contains("static"));
   const auto& st = results["static"];
-  double pad = 0.0, stabilizer = 0.0, peak_moment = 0.0, peak_at = 0.0;
+  double pad = 0.0, stabilizer = 0.0, peak_moment = 0.0, peak_at = 0.0, top_moment = 0.0, top_at = 0.0;
   for (const auto& contact : st["contacts"]) {
     const double s = contact["s"];
     if (std::abs(s - 2.75) < 0.6) pad += contact["normal_force"].get<double>();
     if (std::abs(s - 36.75) < 0.6) stabilizer += contact["normal_force"].get<double>();
   }
   for (const auto& node : st["nodes"]) {
+    if (node["s"].get<double>() >= top_at) {
+      top_at = node["s"];
+      top_moment = node["bending_moment"];
+    }
     if (node["bending_moment"].get<double>() > peak_moment) {
       peak_moment = node["bending_moment"];
       peak_at = node["s"];
@@ -98,14 +105,17 @@ TEST(V9Tendency, MadsimTurnLoadingStaticWithinFifteenPercent) {
   }
   const double bit = st["bit"]["side_force"];
   std::printf("V9 MADSim turn: bit %.0f lbf (%+.1f %%), pad %.0f lbf (%+.1f %%), stabilizer %.0f lbf (%+.1f %%), "
-              "largest bending moment %.0f ft*lbf at %.2f ft (%+.1f %%)\n",
+              "largest bending moment %.0f ft*lbf at %.2f ft (%+.1f %%), at the top (%.2f ft) %.0f ft*lbf (%+.1f %%)\n",
               bit, 100.0 * RelativeError(bit, 14800.0), pad, 100.0 * RelativeError(pad, 17342.0), stabilizer,
-              100.0 * RelativeError(stabilizer, 2187.0), peak_moment, peak_at, 100.0 * RelativeError(peak_moment, 40574.0));
+              100.0 * RelativeError(stabilizer, 2187.0), peak_moment, peak_at, 100.0 * RelativeError(peak_moment, 40574.0),
+              top_at, top_moment, 100.0 * RelativeError(top_moment, 25570.0));
   EXPECT_LT(std::abs(RelativeError(bit, 14800.0)), 0.15);
   EXPECT_LT(std::abs(RelativeError(pad, 17342.0)), 0.15);
   EXPECT_LT(std::abs(RelativeError(stabilizer, 2187.0)), 0.15);
   EXPECT_LT(std::abs(RelativeError(peak_moment, 40574.0)), 0.15);
   EXPECT_NEAR(peak_at, 2.75, 0.3);  // at the near-bit pad, as MADSim's
+  EXPECT_NEAR(top_at, 105.25, 0.01);
+  EXPECT_LT(std::abs(RelativeError(top_moment, 25570.0)), 0.15);  // the guided top's moment
 }
 
 double Yield(const std::string& replace, const std::string& with, const std::string& name) {
@@ -121,6 +131,10 @@ TEST(V9Tendency, MadsimMotorYieldRisesWithWobAndHardlyMovesWithSteerability) {
   std::printf("V9 MADSim motor yield: WOB 5 klbf %.2f deg/100 ft (MADSim 13.53), 35 klbf %.2f (15.16); at 30 klbf "
               "S 5 %% %.2f (14.87), 25 %% %.2f (14.69)\n",
               at_5, at_35, s5, s25);
+  // The level is that of an independent planar beam-column of the same BHA (v9-tendency/
+  // madsim_yield_reference.py: MADSim's element table, its wall and pads, the top guided, the same
+  // criterion): 22.50 deg/100 ft at 30 klbf and S 0.05; MADSim's 14.87 is 7.6 below it.
+  EXPECT_NEAR(s5, 22.50, 1.5);
   EXPECT_GT(at_35, at_5 + 0.5);
   EXPECT_LT(std::abs(s25 - s5), 0.5);
 }

@@ -95,7 +95,8 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
     const std::string kind = top->AsString();
     if (kind == "string_above") settings.top = model::TopCondition::StringAbove;
     else if (kind == "free") settings.top = model::TopCondition::Free;
-    else top->Fail(fmt::format("expected 'string_above' or 'free', got '{}'", kind));
+    else if (kind == "guided") settings.top = model::TopCondition::Guided;
+    else top->Fail(fmt::format("expected 'string_above', 'free' or 'guided', got '{}'", kind));
   }
   if (const auto contact = node.OptionalChild("contact")) {
     contact->ExpectMap("the contact settings {stiffness, damping_ratio, friction}");

@@ -79,8 +79,10 @@ struct ContactSettings {
 enum class MassKind { Consistent, Lumped };
 enum class BeamTheory { EulerBernoulli, Timoshenko };
 // What holds the top of a string in a well sideways when the case gives no supports: the pipe above
-// it (model/string_above.hpp), or nothing (free to move sideways and to tilt, lying on the wall).
-enum class TopCondition { StringAbove, Free };
+// it (model/string_above.hpp), nothing (free to move sideways and to tilt, lying on the wall), or a
+// guide (its tilt held along the hole's axis at the top, free to move sideways and to lie on the wall:
+// a guided end, the top MADSim and other BHA programs give a BHA cut from its string).
+enum class TopCondition { StringAbove, Free, Guided };
 
 struct ModelSettings {
   double body_length = 3.0;      // m, longest flexible body
