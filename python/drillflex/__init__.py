@@ -11,11 +11,12 @@ from drillflex.case import Case
 from drillflex.errors import ConvergenceError, DrillflexError, InputError, UnitError
 from drillflex.results import (BucklingResult, ModesResult, Record, StaticResult, TendencyResult, TransientResult,
                                VibrationResult)
+from drillflex.calibrate import calibrate
 from drillflex.roadmap import RoadmapResult, roadmap
 from drillflex.runs import buckling, modes, run, static, tendency, transient, vibration
 
 __all__ = [
-    "Case", "units", "static", "modes", "vibration", "buckling", "transient", "tendency", "run", "roadmap",
+    "Case", "units", "static", "modes", "vibration", "buckling", "transient", "tendency", "run", "roadmap", "calibrate",
     "StaticResult", "ModesResult", "VibrationResult", "BucklingResult", "TransientResult", "TendencyResult",
     "RoadmapResult", "Record",
     "DrillflexError", "InputError", "UnitError", "ConvergenceError",

@@ -39,6 +39,8 @@ void BindCase(py::module_& m);
 void BindRun(py::module_& m);
 // roadmap(case, jobs, progress): the torque-and-drag roadmap (roadmap.cpp).
 void BindRoadmap(py::module_& m);
+// calibrate(case, readings, fit, model, jobs): friction factors fitted to the rig's readings (calibrate.cpp).
+void BindCalibrate(py::module_& m);
 // The RunHandle's typed results, one function per analysis (result_*.cpp).
 void BindStaticResult(py::class_<RunHandle>& run);
 void BindModesResult(py::class_<RunHandle>& run);

@@ -10,4 +10,5 @@ PYBIND11_MODULE(_core, m) {
   drillflex::python::BindCase(m);
   drillflex::python::BindRun(m);
   drillflex::python::BindRoadmap(m);
+  drillflex::python::BindCalibrate(m);
 }

@@ -141,7 +141,10 @@ struct RoadmapSettings {
   double from_md = 0.0;           // m: the first bit depth; 0: a tenth of the way, or where the string fits
   double step = 0.0;              // m; 0: ten depths in all
   std::vector<double> friction;   // the friction factors (axial and around the string alike); empty:
-                                  // the case's and 0.1 either side
+                                  // the case's and 0.1 either side. They are the open hole's: in the
+                                  // well.hole sections marked `cased`,
+  std::optional<double> cased_friction = std::nullopt;  // this factor at every line; none: each cased section's own
+                                         // (its `friction`, else the case's model.contact)
   double rotary_speed = 0.0;      // rad/s off and on bottom; 0: the case's rpm, else 60 rpm
   double trip_speed = 0.3048;     // m/s pulling out and running in (> 0; the friction is Coulomb, so
                                   // above its regularization velocity only its sign counts)

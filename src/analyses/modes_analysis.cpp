@@ -300,7 +300,7 @@ LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, model
   // friction off; the friction's velocity derivative about the sliding stays in the damping
   // (docs/method.md "The friction of a rotating string, linearized").
   model::LoadParameters conservative = load;
-  conservative.wall_friction = model::WallFriction{0.0, 0.0};
+  conservative.SetWallFriction({0.0, 0.0});
   const SparseMat tangent = model.IterationMatrix(0.0, q, zero, zero, conservative, 1.0, 0.0, 0.0);
   const SparseMat mass = model.MassMatrix(q);
   LinearizedSystem system;

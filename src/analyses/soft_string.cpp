@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "model/hole_friction.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -40,7 +41,9 @@ void CheckWellAndString(const model::ModelInput& input) {
 
 void CheckOperation(const SoftStringOperation& operation) {
   const auto friction = [](double mu) { return std::isfinite(mu) && mu >= 0.0; };
-  if (!friction(operation.axial_friction) || !friction(operation.tangential_friction)) {
+  const bool cased_ok = !operation.cased_friction ||
+                        (friction(operation.cased_friction->axial) && friction(operation.cased_friction->tangential));
+  if (!friction(operation.axial_friction) || !friction(operation.tangential_friction) || !cased_ok) {
     throw LogicError(fmt::format("ComputeSoftString: friction factors must be finite and non-negative "
                                  "(axial {}, tangential {})",
                                  operation.axial_friction, operation.tangential_friction));
@@ -64,6 +67,9 @@ std::vector<double> CutMds(const model::ModelInput& input, double max_element_le
   }
   for (const well::SurveyStation& station : input.trajectory->stations()) {
     if (inside(station.md)) interior.push_back(station.md);
+  }
+  for (const well::HoleSection& section : input.hole) {
+    if (section.to_md && inside(*section.to_md)) interior.push_back(*section.to_md);
   }
   std::sort(interior.begin(), interior.end(), std::greater<>());
   std::vector<double> cuts{bit};
@@ -121,11 +127,11 @@ double ComputeElementNormalForce(double tension, double weight, EndAngles lower,
 // The element's tension gain, N (SPE 11380): ΔT = W cos Ī + μ_a N pulling out, − μ_a N
 // running in (the friction opposes the sliding), W cos Ī rotating (the friction acts around the string).
 double ComputeTensionChange(double weight, double mean_inclination, double normal_force,
-                            const SoftStringOperation& operation) {
+                            const SoftStringOperation& operation, const model::WallFriction& friction) {
   const double weight_along = weight * std::cos(mean_inclination);
   switch (operation.motion) {
-    case SoftStringMotion::PickUp: return weight_along + operation.axial_friction * normal_force;
-    case SoftStringMotion::SlackOff: return weight_along - operation.axial_friction * normal_force;
+    case SoftStringMotion::PickUp: return weight_along + friction.axial * normal_force;
+    case SoftStringMotion::SlackOff: return weight_along - friction.axial * normal_force;
     case SoftStringMotion::Rotating: return weight_along;
   }
   throw LogicError("ComputeTensionChange: unknown motion");
@@ -134,9 +140,17 @@ double ComputeTensionChange(double weight, double mean_inclination, double norma
 // The element's torque gain, N·m (SPE 11380): ΔM = μ_t N r rotating, r the contact radius
 // (tool joint, blade or body); none sliding without rotation.
 double ComputeTorqueChange(double normal_force, const model::Component& component,
-                           const SoftStringOperation& operation) {
+                           const SoftStringOperation& operation, const model::WallFriction& friction) {
   if (operation.motion != SoftStringMotion::Rotating) return 0.0;
-  return operation.tangential_friction * normal_force * 0.5 * model::ContactDiameter(component);
+  return friction.tangential * normal_force * 0.5 * model::ContactDiameter(component);
+}
+
+// The coefficients at `md` (an element's middle): the operation's open-hole ones, in cased hole its
+// cased ones or the section's own.
+model::WallFriction FrictionAt(const model::ModelInput& input, const SoftStringOperation& operation, double md) {
+  const model::HoleFriction built = model::HoleFrictionAt(input.hole, input.settings.contact, md);
+  if (!built.cased) return {operation.axial_friction, operation.tangential_friction};
+  return operation.cased_friction.value_or(built.friction);
 }
 
 }  // namespace
@@ -157,16 +171,17 @@ SoftStringResult ComputeSoftString(const model::ModelInput& input, const SoftStr
     const double length = cuts[k - 1] - cuts[k];
     const model::Component& component = ComponentAtMiddle(input.string, input.bit_md - 0.5 * (cuts[k - 1] + cuts[k]));
     const double weight = model::BuoyedWeightPerLength(component, input) * length;  // W = w L
+    const model::WallFriction friction = FrictionAt(input, operation, 0.5 * (cuts[k - 1] + cuts[k]));
     double normal_force = ComputeElementNormalForce(below.axial_force, weight, lower, upper);
     if (operation.wall_climb && operation.motion == SoftStringMotion::Rotating) {
-      normal_force /= std::hypot(1.0, operation.tangential_friction);  // N √(1 + μ_t²) = L
+      normal_force /= std::hypot(1.0, friction.tangential);  // N √(1 + μ_t²) = L
     }
     const double mean_inclination = 0.5 * (lower.inclination + upper.inclination);
     SoftStringStation station;
     station.s = input.bit_md - cuts[k];
     station.md = cuts[k];
-    station.axial_force = below.axial_force + ComputeTensionChange(weight, mean_inclination, normal_force, operation);
-    station.torque = below.torque + ComputeTorqueChange(normal_force, component, operation);
+    station.axial_force = below.axial_force + ComputeTensionChange(weight, mean_inclination, normal_force, operation, friction);
+    station.torque = below.torque + ComputeTorqueChange(normal_force, component, operation, friction);
     station.normal_force = normal_force;
     result.stations.push_back(station);
     lower = upper;

@@ -5,7 +5,8 @@
 // (analyses/static_analysis.hpp) is the reference model; this one is the industry's quick estimate
 // and a check on it.
 //
-// The string is cut into elements at every survey station, at every component boundary and at the
+// The string is cut into elements at every survey station, at every component boundary, at every
+// hole section's end (a section's friction: cased or open hole, model/hole_friction.hpp) and at the
 // surface (the trajectory's start MD), the top component continued up to it when the string is
 // shorter than the bit MD (the string above the surface, when it is longer, is left out). From the
 // bit upward, each element of length L (m) with tension T (N, tension positive) at its lower end,
@@ -48,9 +49,11 @@
 // this model's (docs/validation.md V7; the stiff-string static has it).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "model/builder.hpp"
+#include "model/load_parameters.hpp"
 
 namespace drillflex::analyses {
 
@@ -59,6 +62,7 @@ enum class SoftStringMotion { PickUp, SlackOff, Rotating };
 
 struct SoftStringOperation {
   SoftStringMotion motion = SoftStringMotion::Rotating;
+  // In open hole (everywhere when no hole section is cased):
   double axial_friction = 0.0;       // μ_a along the hole (pick-up, slack-off), ≥ 0
   double tangential_friction = 0.0;  // μ_t around the string (rotating: torque), ≥ 0
   double weight_on_bit = 0.0;        // N, compression at the bit (0 off bottom; < 0 pulls the bit)
@@ -73,6 +77,9 @@ struct SoftStringOperation {
   // torque is μ_t L r / √(1 + μ_t²) (the stiff string's static has the climb; docs/validation.md V7).
   // False: Johancsik's N = L.
   bool wall_climb = false;
+  // In the hole sections marked cased: these coefficients; none: each cased section's own (its
+  // `friction`, else the case's model.contact: model/hole_friction.hpp).
+  std::optional<model::WallFriction> cased_friction = std::nullopt;
 };
 
 // One element end, from the bit upward.

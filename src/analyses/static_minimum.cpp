@@ -5,6 +5,7 @@
 #include "analyses/resting_start.hpp"
 #include "analyses/static_analysis.hpp"
 #include "core/profile.hpp"
+#include "model/hole_friction.hpp"
 #include "model/static_problem.hpp"
 #include "solvers/energy_trust_region.hpp"
 
@@ -32,9 +33,21 @@ model::ModelInput EffectiveInput(const model::ModelInput& input, const model::Lo
   effective.gravity *= load * parameters.weight_factor;
   effective.operation.weight_on_bit = load * parameters.weight_on_bit.value_or(input.operation.weight_on_bit);
   effective.operation.torque_on_bit = load * parameters.torque_on_bit.value_or(input.operation.torque_on_bit);
-  if (parameters.wall_friction) {
-    effective.settings.contact.friction = parameters.wall_friction->tangential;
-    effective.settings.contact.axial_friction = parameters.wall_friction->axial;
+  if (parameters.OverridesFriction()) {
+    // Every hole section its coefficients under the block, the case's own where it gives none.
+    std::vector<well::HoleSection>& hole = effective.hole;
+    model::LoadParameters unscaled = parameters;
+    unscaled.friction_factor = 1.0;
+    for (std::size_t i = 0; i < hole.size(); ++i) {
+      const model::WallFriction friction =
+          model::EffectiveFriction(model::SectionFriction(hole[i], input.settings.contact), unscaled);
+      hole[i].friction = friction.tangential;
+      hole[i].axial_friction = friction.axial;
+    }
+    if (hole.empty() && parameters.open_hole_friction) {
+      effective.settings.contact.friction = parameters.open_hole_friction->tangential;
+      effective.settings.contact.axial_friction = parameters.open_hole_friction->axial;
+    }
   }
   if (parameters.sliding_mode == model::SlidingMode::kVelocities) effective.static_sliding.reset();
   if (parameters.sliding_mode == model::SlidingMode::kPrescribed) effective.static_sliding = parameters.sliding;

@@ -33,6 +33,11 @@ struct CommandOptions {
   std::string roadmap_friction;
   std::string roadmap_model;  // stiff, soft or both
   std::string roadmap_stiff_length;  // a length or "surface"
+  // `roadmap` and `calibrate`: the rig's readings (a readings CSV or a WITSML log).
+  std::string readings_path;
+  // `calibrate` only (`jobs` too): the parameters to fit, a comma list; the model, stiff or soft.
+  std::string calibrate_fit;
+  std::string calibrate_model;
   // `stability` only (a sweep's VALUES); `jobs`, `resume` and `keep_runs` too:
   std::string stability_rpm_values;
   std::string stability_wob_values;
@@ -52,6 +57,7 @@ int RunCaseCommand(const CommandOptions& options);
 int RunSweepCommand(const CommandOptions& options);
 int RunRoadmapCommand(const CommandOptions& options);
 int RunStabilityCommand(const CommandOptions& options);
+int RunCalibrateCommand(const CommandOptions& options);
 // `drillflex import FILE... [-o CASE.yaml]`: -o names the case file (standard output without it).
 int RunImport(const CommandOptions& options);
 

@@ -67,6 +67,8 @@ int main(int argc, char** argv) {
        drillflex::app::RunSweepCommand, true, false},
       {"roadmap", "Torque-and-drag roadmap: pick-up, slack-off and rotating hook loads and torques against bit depth",
        drillflex::app::RunRoadmapCommand, true, true},
+      {"calibrate", "Fit the friction factors, hook-load offset and bit torque coefficient to the rig's readings",
+       drillflex::app::RunCalibrateCommand, true, true},
       {"stability", "Stability map: the case's transient at every RPM and WOB, each run's regime (stick-slip, whirl)",
        drillflex::app::RunStabilityCommand, true, true},
       {"import", "Write a case file from WITSML 1.4.1.1 or 2.0 trajectory, tubular and wbGeometry documents",
@@ -96,7 +98,7 @@ int main(int argc, char** argv) {
       }
     }
     const std::string name = command.name;
-    if (name == "sweep" || name == "roadmap" || name == "stability") {
+    if (name == "sweep" || name == "roadmap" || name == "stability" || name == "calibrate") {
       sub->add_option("-j,--jobs", options.jobs, "Runs at once on this machine (default 1)")
           ->check(CLI::Range(1, 1024));
     }
@@ -106,6 +108,21 @@ int main(int argc, char** argv) {
       sub->add_option("--friction", options.roadmap_friction, "Friction factors, a list: 0.2,0.3,0.4");
       sub->add_option("--model", options.roadmap_model,
                       "stiff (the case's string, default), soft (Johancsik's soft string) or both (drawn together)");
+      sub->add_option("--stiff-length", options.roadmap_stiff_length,
+                      "String from the bit modelled stiff, with or without a unit, or 'surface' (default: the case's "
+                      "string; the pipe above by the soft string)");
+    }
+    if (name == "roadmap" || name == "calibrate") {
+      auto* readings = sub->add_option("--readings", options.readings_path,
+                                       "The rig's readings: a CSV (bit_md, activity, hook_load, surface_torque, wob, "
+                                       "rpm; units on the second line) or a WITSML 1.4.1.1 / 2.0 log");
+      if (name == "calibrate") readings->required();
+    }
+    if (name == "calibrate") {
+      sub->add_option("--fit", options.calibrate_fit,
+                      "Parameters to fit, a list: open_hole_friction,cased_hole_friction,hook_load_offset,"
+                      "bit_torque_coefficient (default: all the readings determine)");
+      sub->add_option("--model", options.calibrate_model, "stiff (the case's string, default) or soft (Johancsik)");
       sub->add_option("--stiff-length", options.roadmap_stiff_length,
                       "String from the bit modelled stiff, with or without a unit, or 'surface' (default: the case's "
                       "string; the pipe above by the soft string)");

@@ -1,4 +1,5 @@
-// `drillflex roadmap CASE [-o DIR] [--from MD] [--step MD] [--friction LIST] [--jobs N] [--no-report]`:
+// `drillflex roadmap CASE [-o DIR] [--from MD] [--step MD] [--friction LIST] [--readings FILE] [--jobs N]
+// [--no-report]`:
 // the torque-and-drag roadmap (pipeline/roadmap.hpp) with the case's `analyses.roadmap` settings, the
 // command line's over them; progress on standard error; roadmap.csv, roadmap.json and report.html
 // written atomically at the end.
@@ -10,6 +11,8 @@
 #include "app/batch_progress.hpp"
 #include "app/commands.hpp"
 #include "core/profile.hpp"
+#include "pipeline/readings_files.hpp"
+#include "pipeline/readings_model.hpp"
 #include "pipeline/roadmap.hpp"
 
 namespace drillflex::app {
@@ -51,11 +54,39 @@ int RunRoadmapCommand(const CommandOptions& options) {
   const std::vector<pipeline::RoadmapPoint> soft_points =
       settings.model == analyses::RoadmapModel::Both ? pipeline::RunSoftRoadmap(c, settings)
                                                       : std::vector<pipeline::RoadmapPoint>{};
+  // The rig's readings: each modelled at its own depth, activity and WOB at every friction factor.
+  nlohmann::json readings_json = nullptr;
+  std::string readings_csv;
+  if (!options.readings_path.empty()) {
+    io::RigReadingsOptions reading_options;
+    if (c.input.trajectory) reading_options.deepest_md = c.input.trajectory->end_md();
+    const io::RigReadings readings = io::ReadRigReadings(options.readings_path, reading_options);
+    for (const std::string& warning : readings.warnings) std::cerr << "drillflex: readings: " << warning << '\n';
+    pipeline::ReadingsModelOptions model_options;
+    model_options.kind = soft_only ? pipeline::ReadingsModelKind::kSoft : pipeline::ReadingsModelKind::kStiff;
+    model_options.roadmap = settings;
+    model_options.jobs = options.jobs;
+    pipeline::ReadingsModel model(c, readings, model_options);
+    std::vector<pipeline::ModelledReadings> models;
+    pipeline::ReadingsParameters parameters = pipeline::CaseReadingsParameters(c);
+    parameters.cased_hole_friction = settings.cased_friction;
+    for (const double friction : settings.friction) {
+      parameters.open_hole_friction = friction;
+      std::cerr << fmt::format("\rroadmap: the {} readings at friction {:g}   ", readings.rows.size(), friction)
+                << std::flush;
+      models.push_back({fmt::format("μ {:g}", friction), friction, model.Evaluate(parameters)});
+    }
+    std::cerr << '\n';
+    readings_json = pipeline::ReadingsJson(c, readings, models);
+    readings_csv = pipeline::ReadingsCsv(c, readings, models);
+  }
   const std::string directory =
       options.output_directory.empty() ? io::DefaultOutputDirectory(c) + "-roadmap" : options.output_directory;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool report = c.output.report && !options.no_report;
-  pipeline::ComposeRoadmapFiles(c, settings, points, directory, report, seconds, soft_points).Commit();
+  pipeline::ComposeRoadmapFiles(c, settings, points, directory, report, seconds, soft_points, readings_json,
+                                readings_csv)
+      .Commit();
   int failed = 0;
   for (const pipeline::RoadmapPoint& point : points) failed += point.failed() ? 1 : 0;
   std::cout << fmt::format("roadmap: {} points, {} failed; results in {}/roadmap.csv{} ({:.3g} s)\n", points.size(),

@@ -208,10 +208,11 @@ analyses::TransientSettings ReadTransient(const YamlView& node, const model::Ope
   return settings;
 }
 
-// `roadmap: {from, step, friction, rpm, trip_speed, model, stiff_length}`: the settings of `drillflex roadmap`.
+// `roadmap: {from, step, friction, cased_friction, rpm, trip_speed, model, stiff_length}`: the settings of
+// `drillflex roadmap`.
 analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
-  node.ExpectMap("the roadmap settings {from, step, friction, rpm, trip_speed, model, stiff_length}");
-  node.AllowOnlyKeys({"from", "step", "friction", "rpm", "trip_speed", "model", "stiff_length"});
+  node.ExpectMap("the roadmap settings {from, step, friction, cased_friction, rpm, trip_speed, model, stiff_length}");
+  node.AllowOnlyKeys({"from", "step", "friction", "cased_friction", "rpm", "trip_speed", "model", "stiff_length"});
   analyses::RoadmapSettings settings;
   settings.from_md = node.OptionalPositive("from", Quantity::Length).value_or(0.0);
   settings.step = node.OptionalPositive("step", Quantity::Length).value_or(0.0);
@@ -223,6 +224,11 @@ analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
       if (!(factor >= 0.0 && factor <= 2.0)) friction->Item(i).Fail("expected a friction factor from 0 to 2");
       settings.friction.push_back(factor);
     }
+  }
+  if (const auto cased = node.OptionalChild("cased_friction")) {
+    const double factor = cased->AsQuantity(Quantity::Dimensionless);
+    if (!(factor >= 0.0 && factor <= 2.0)) cased->Fail("expected a friction factor from 0 to 2");
+    settings.cased_friction = factor;
   }
   settings.rotary_speed = node.OptionalPositive("rpm", Quantity::RotarySpeed).value_or(0.0);
   settings.trip_speed = node.OptionalPositive("trip_speed", Quantity::Velocity).value_or(settings.trip_speed);

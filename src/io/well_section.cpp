@@ -54,6 +54,10 @@ std::vector<well::SurveyStation> ReadSurveyFile(const YamlView& node, const std:
   return stations;
 }
 
+// A wall friction coefficient above this is a typing error, not a hole (open hole with cuttings beds
+// reads 0.3–0.5).
+constexpr double kMaxFriction = 2.0;
+
 std::vector<well::HoleSection> ReadHole(const YamlView& node) {
   if (node.IsScalar()) return {{std::nullopt, node.AsPositive(Quantity::Diameter), std::nullopt}};
   node.ExpectSequence("hole sections {to, diameter}");
@@ -61,11 +65,20 @@ std::vector<well::HoleSection> ReadHole(const YamlView& node) {
   for (std::size_t i = 0; i < node.size(); ++i) {
     const YamlView item = node.Item(i);
     item.ExpectMap("a hole section {to: MD, diameter: D}", false);
-    item.AllowOnlyKeys({"to", "diameter", "diameter_at_end"});
+    item.AllowOnlyKeys({"to", "diameter", "diameter_at_end", "cased", "friction", "axial_friction"});
     well::HoleSection section;
     section.to_md = item.OptionalPositive("to", Quantity::Length);
     section.diameter = item.Positive("diameter", Quantity::Diameter);
     section.diameter_at_end = item.OptionalPositive("diameter_at_end", Quantity::Diameter);
+    if (const auto cased = item.OptionalChild("cased")) section.cased = cased->AsBool();
+    section.friction = item.OptionalQuantity("friction", Quantity::Dimensionless);
+    section.axial_friction = item.OptionalQuantity("axial_friction", Quantity::Dimensionless);
+    for (const char* key : {"friction", "axial_friction"}) {
+      const auto mu = item.OptionalQuantity(key, Quantity::Dimensionless);
+      if (mu && !(*mu >= 0.0 && *mu <= kMaxFriction)) {
+        item.Child(key).Fail(fmt::format("expected a friction coefficient from 0 to {:g}", kMaxFriction));
+      }
+    }
     const bool last = i + 1 == node.size();
     if (!last && !section.to_md) item.Fail("only the last hole section may omit 'to' (it runs to the bottom)");
     if (last && section.diameter_at_end && !section.to_md) {

@@ -47,6 +47,7 @@ struct WitsmlHoleInterval {
   WitsmlValue diameter;  // the drift of a casing or liner (else its nominal ID), an open hole's diameter
   std::string source;    // "casing, diaDrift"
   WitsmlOrigin origin;   // the section the diameter comes from
+  bool cased = false;    // inside casing or a liner (the section's typeHoleCasing is not open hole)
 };
 
 struct WitsmlGeometry {

@@ -118,8 +118,9 @@ void WriteWell(const Objects& objects, const ValueText& value, std::string& text
     const WitsmlHoleInterval& interval = geometry.hole[i];
     const bool last = i + 1 == geometry.hole.size();
     const std::string to = last ? "" : fmt::format("to: {}, ", value(interval.bottom, Quantity::Length));
-    text += fmt::format("    - {{{}diameter: {}}}  # {} {} ({}) from {} {}{}\n", to,
-                        value(interval.diameter, Quantity::Diameter), Where(interval.origin), interval.origin.what,
+    text += fmt::format("    - {{{}diameter: {}{}}}  # {} {} ({}) from {} {}{}\n", to,
+                        value(interval.diameter, Quantity::Diameter), interval.cased ? ", cased: true" : "",
+                        Where(interval.origin), interval.origin.what,
                         interval.source, interval.top.text, interval.top.uom,
                         last ? fmt::format(" to the bottom (the document: {} {})", interval.bottom.text, interval.bottom.uom)
                              : "");

@@ -19,6 +19,7 @@ struct Section {
   WitsmlValue top, bottom, diameter;
   std::string source;
   WitsmlOrigin origin;
+  bool cased = false;  // a casing or liner (any type but open hole)
 };
 
 bool IsOpenHole(const std::string& type) { return type == "open hole" || type.empty(); }
@@ -57,6 +58,7 @@ Section ReadSection(const WitsmlReader& reader, const pugi::xml_node& node) {
   }
   if (!(section.diameter.si > 0.0)) reader.Fail(node, "the section's diameter must be positive");
   section.source = fmt::format("{}, {}", type.empty() ? "unknown type" : type, section.source);
+  section.cased = !IsOpenHole(type);
   const std::string uid = node.attribute("uid").value();
   section.origin = reader.Origin(node, fmt::format("{}{}", reader.Name("wbGeometrySection"), uid.empty() ? "" : " uid=" + uid));
   reader.WarnUnmapped(node, {"typeHoleCasing", "mdTop", "mdBottom", "sectionMdInterval", "idSection", "diaDrift"},
@@ -100,7 +102,8 @@ WitsmlGeometry ReadGeometry(const WitsmlReader& reader, const pugi::xml_node& ob
     if (same) {
       geometry.hole.back().bottom = *depths[i + 1];
     } else {
-      geometry.hole.push_back({*depths[i], *depths[i + 1], narrowest->diameter, narrowest->source, narrowest->origin});
+      geometry.hole.push_back(
+          {*depths[i], *depths[i + 1], narrowest->diameter, narrowest->source, narrowest->origin, narrowest->cased});
     }
   }
   return geometry;
@@ -110,8 +113,10 @@ std::vector<well::HoleSection> HoleOf(const WitsmlGeometry& geometry) {
   std::vector<well::HoleSection> hole;
   for (std::size_t i = 0; i < geometry.hole.size(); ++i) {
     const bool last = i + 1 == geometry.hole.size();
-    hole.push_back({last ? std::nullopt : std::optional<double>(geometry.hole[i].bottom.si),
-                    geometry.hole[i].diameter.si, std::nullopt});
+    well::HoleSection section{last ? std::nullopt : std::optional<double>(geometry.hole[i].bottom.si),
+                              geometry.hole[i].diameter.si, std::nullopt};
+    section.cased = geometry.hole[i].cased;
+    hole.push_back(section);
   }
   return hole;
 }

@@ -10,6 +10,7 @@
 #include "core/so3.hpp"
 #include "model/contact_circles.hpp"
 #include "model/drive_elements.hpp"
+#include "model/hole_friction.hpp"
 #include "model/imbalance_element.hpp"
 #include "model/lateral_fluid.hpp"
 #include "model/nodal_loads.hpp"
@@ -423,8 +424,9 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     above.curvature = Eigen::Vector2d(frame.col(1).dot(curvature), frame.col(2).dot(curvature));
     const double joint_diameter = component.joint_diameter.value_or(component.outer_diameter);
     above.clearance = 0.5 * (well::HoleProfile(input.hole).Diameter(top_md) - joint_diameter);
-    above.friction = {input.settings.contact.axial_friction.value_or(input.settings.contact.friction),
-                      input.settings.contact.friction};
+    const HoleFriction top_friction = HoleFrictionAt(input.hole, input.settings.contact, top_md);
+    above.friction = top_friction.friction;
+    above.cased = top_friction.cased;
     above.contact_radius = 0.5 * joint_diameter;
     above.regularization_velocity =
         input.settings.contact.friction_velocity.value_or(kFrictionRegularizationSpin * above.contact_radius);
@@ -493,8 +495,12 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       parameters.contact_radius = 0.5 * circles[i].diameter;
       parameters.normal_stiffness = stiffness;
       parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(stiffness * ElementInertia(*body)[0]);
-      parameters.tangential_friction = contact.friction;
-      parameters.axial_friction = contact.axial_friction.value_or(contact.friction);
+      // The friction of the hole section the contact starts in (the string moves centimetres in a
+      // static, a stand at most in a transient: a contact keeps its section).
+      const HoleFriction friction = HoleFrictionAt(input.hole, contact, input.bit_md - s);
+      parameters.tangential_friction = friction.friction.tangential;
+      parameters.axial_friction = friction.friction.axial;
+      parameters.cased = friction.cased;
       parameters.regularization_velocity =
           contact.friction_velocity.value_or(kFrictionRegularizationSpin * parameters.contact_radius);
       parameters.prescribed_sliding = input.static_sliding;

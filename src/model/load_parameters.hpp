@@ -43,10 +43,15 @@ struct LoadParameters {
   std::optional<double> weight_on_bit;  // N, up-hole on the bit; none: the case's
   std::optional<double> torque_on_bit;  // N·m; none: the case's
 
-  // The wall friction: coefficients (none: each contact's own, the case's), a factor on them (the
-  // continuation from a string at rest to a moving one, static-solver.md §6) and the sliding.
+  // The wall friction: coefficients in open and in cased hole (none: each contact's own, its hole
+  // section's or the case's: model/hole_friction.hpp), a factor on them (the continuation from a
+  // string at rest to a moving one, static-solver.md §6) and the sliding.
   double friction_factor = 1.0;
-  std::optional<WallFriction> wall_friction;
+  std::optional<WallFriction> open_hole_friction;
+  std::optional<WallFriction> cased_hole_friction;
+  // The same coefficients in open and cased hole.
+  void SetWallFriction(const WallFriction& friction) { open_hole_friction = cased_hole_friction = friction; }
+  bool OverridesFriction() const { return open_hole_friction || cased_hole_friction; }
   SlidingMode sliding_mode = SlidingMode::kAsBuilt;
   PrescribedSliding sliding;  // with SlidingMode::kPrescribed
 

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "model/hole_friction.hpp"
+
 namespace drillflex::model {
 
 EndStiffness SemiInfiniteBeamEndStiffness(double bending_rigidity, double foundation, double tension) {
@@ -50,8 +52,7 @@ StringAboveElement::Lying StringAboveElement::LyingOf(const LoadParameters& load
   if (load.sliding_mode == SlidingMode::kVelocities) sliding.reset();
   if (load.sliding_mode == SlidingMode::kPrescribed) sliding = load.sliding;
   if (sliding && sliding->rotary_speed != 0.0) {
-    const double mu =
-        load.friction_factor * (load.wall_friction ? load.wall_friction->tangential : parameters_.friction.tangential);
+    const double mu = EffectiveFriction({parameters_.friction, parameters_.cased}, load).tangential;
     const double around = sliding->rotary_speed * parameters_.contact_radius;
     const double speed = std::max(std::hypot(sliding->axial_speed, around), parameters_.regularization_velocity);
     const double climb = std::atan(mu * std::abs(around) / speed);

@@ -50,6 +50,7 @@ struct StringAboveParameters {
   // The friction's climb: the case's coefficients, the joints' radius R_c, the regularization
   // velocity v_ε, and the static's prescribed sliding as built (ModelInput::static_sliding).
   WallFriction friction;
+  bool cased = false;  // the top in cased hole (a parameter block's cased-hole friction applies)
   double contact_radius = 0.0;           // m
   double regularization_velocity = 0.0;  // m/s
   std::optional<PrescribedSliding> sliding;

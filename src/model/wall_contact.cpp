@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/so3.hpp"
+#include "model/hole_friction.hpp"
 
 namespace drillflex::model {
 namespace {
@@ -266,12 +267,10 @@ std::string WallContactElement::Describe() const {
 
 WallContactParameters WallContactElement::EffectiveParameters(const LoadParameters& load) const {
   WallContactParameters p = parameters_;
-  if (load.wall_friction) {
-    p.axial_friction = load.wall_friction->axial;
-    p.tangential_friction = load.wall_friction->tangential;
-  }
-  p.axial_friction *= load.friction_factor;
-  p.tangential_friction *= load.friction_factor;
+  const WallFriction friction =
+      EffectiveFriction({{p.axial_friction, p.tangential_friction}, p.cased}, load);
+  p.axial_friction = friction.axial;
+  p.tangential_friction = friction.tangential;
   if (load.sliding_mode == SlidingMode::kVelocities) p.prescribed_sliding.reset();
   if (load.sliding_mode == SlidingMode::kPrescribed) p.prescribed_sliding = load.sliding;
   return p;
@@ -280,7 +279,7 @@ WallContactParameters WallContactElement::EffectiveParameters(const LoadParamete
 namespace {
 // The parameters as built are the effective ones (no copy needed).
 bool AsBuilt(const LoadParameters& load) {
-  return load.friction_factor == 1.0 && !load.wall_friction && load.sliding_mode == SlidingMode::kAsBuilt;
+  return load.friction_factor == 1.0 && !load.OverridesFriction() && load.sliding_mode == SlidingMode::kAsBuilt;
 }
 }  // namespace
 

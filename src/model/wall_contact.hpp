@@ -66,6 +66,7 @@ struct WallContactParameters {
   double normal_damping = 0.0;        // c_n, N·s/m (≥ 0)
   double axial_friction = 0.0;        // μ_a, along the hole axis
   double tangential_friction = 0.0;   // μ_t, around the string (rotation)
+  bool cased = false;                 // in cased hole: a parameter block's cased-hole friction applies
   double regularization_velocity = 0.0;  // v_ε, m/s (> 0 when a friction coefficient is > 0)
   std::optional<PrescribedSliding> prescribed_sliding;  // none: friction from the state's velocities
 };

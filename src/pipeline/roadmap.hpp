@@ -79,9 +79,12 @@ const char* RoadmapModelName(analyses::RoadmapModel model);
 // same with the settings), and report.html with the roadmap's plots when `report`. `points` are the
 // settings' model's (the stiff string's for both); with both, `soft_points` go to roadmap-soft.csv and
 // roadmap.json's `soft_points`, and the report draws them beside the stiff string's.
+// With the rig's readings (`readings`: pipeline/readings_files.hpp ReadingsJson, `readings_csv` its
+// ReadingsCsv), roadmap.json's `readings` and readings.csv, and the report draws them over the curves.
 io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSettings& settings,
                                     const std::vector<RoadmapPoint>& points, const std::string& directory,
                                     bool report, double run_seconds,
-                                    const std::vector<RoadmapPoint>& soft_points = {});
+                                    const std::vector<RoadmapPoint>& soft_points = {},
+                                    const nlohmann::json& readings = nullptr, const std::string& readings_csv = "");
 
 }  // namespace drillflex::pipeline

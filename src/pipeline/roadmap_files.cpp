@@ -67,7 +67,8 @@ RoadmapTables Tabulate(const std::vector<RoadmapPoint>& points, units::System sy
 
 io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSettings& settings,
                                     const std::vector<RoadmapPoint>& points, const std::string& directory,
-                                    bool report, double run_seconds, const std::vector<RoadmapPoint>& soft_points) {
+                                    bool report, double run_seconds, const std::vector<RoadmapPoint>& soft_points,
+                                    const nlohmann::json& readings, const std::string& readings_csv) {
   io::ResultFiles files(directory, "roadmap.json");
   const units::System system = c.output_units;
   auto out = [system](double si, Quantity quantity) { return units::FromSI(si, quantity, system); };
@@ -102,6 +103,11 @@ io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSe
       {"points", std::move(main.rows)},
   };
   if (both) json["roadmap"]["soft_points"] = std::move(soft.rows);
+  if (!readings.is_null()) {
+    json["roadmap"]["readings"] = readings;
+    files.Add("readings.csv", readings_csv);
+  }
+  if (settings.cased_friction) json["roadmap"]["cased_friction"] = *settings.cased_friction;
   if (report) {
     files.Add("report.html", io::ComposeReportHtml(json, io::ReportData{}, {"roadmap", run_seconds}));
   }

@@ -1,18 +1,7 @@
-// The runs of a roadmap at one bit depth (pipeline/roadmap.hpp), as a continuation: the depth's
-// model is built once (the string continued to the surface, the default well supports) and every
-// run is the same model under another parameter block (model/load_parameters.hpp):
-//
-//   at rest, off bottom        the bit free, no WOB, no friction: the energy's minimum from the
-//                              string resting on the wall (the one cold solve of a depth);
-//   pick-up, slack-off         the axial friction of a prescribed trip, each from the same run at
-//                              the friction factor before, the first from the string at rest;
-//   rotating, off bottom       the friction around the string, from the same run at the friction
-//                              factor before, the first continued in the friction from rest;
-//   on bottom                  the bit held at the hole centre with the case's WOB and torque on
-//                              bit, from the rotating run at the same friction factor.
-//
-// Each warm run is Newton from its neighbour with the factorization kept while it contracts
-// (analyses/static_solve.hpp, strategy 1), falling back to the whole chain where that fails.
+// The runs of a roadmap at one bit depth (pipeline/roadmap.hpp): the depth's model built once and each
+// friction factor's pick-up, slack-off, rotating off bottom and on-bottom runs as a continuation from
+// the runs before (pipeline/depth_runs.hpp). The factors are the open hole's; the cased hole takes the
+// settings' cased_friction, else each cased section's own.
 #pragma once
 
 #include <functional>

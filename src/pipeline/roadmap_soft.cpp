@@ -3,36 +3,23 @@
 #include "analyses/soft_string.hpp"
 #include "core/error.hpp"
 #include "core/profile.hpp"
+#include "pipeline/depth_runs.hpp"
 #include "pipeline/roadmap.hpp"
 
 namespace drillflex::pipeline {
 namespace {
 
-// Elements of at most a joint (30 ft): the result no longer depends on the survey's spacing (a
-// 500 m build surveyed at its ends read 1-2 % off in the mean inclination of one element).
-constexpr double kElementLength = model::kDefaultJointSpacing;
-
-analyses::SoftStringOperation Operation(analyses::SoftStringMotion motion, double friction, double wob, double tob) {
-  return {motion, friction, friction, wob, tob, kElementLength};
-}
-
-double HookLoad(const model::ModelInput& input, analyses::SoftStringMotion motion, double friction) {
-  return analyses::ComputeSoftString(input, Operation(motion, friction, 0.0, 0.0)).hook_load;
-}
-
-RoadmapPoint SoftPoint(const model::ModelInput& input, double bit_md, double friction) {
-  using analyses::SoftStringMotion;
+RoadmapPoint SoftPoint(const model::ModelInput& input, const analyses::RoadmapSettings& settings, double bit_md,
+                       double friction) {
   RoadmapPoint point{bit_md, friction, 0.0, 0.0, 0.0, 0.0, 0.0, ""};
-  point.pick_up = HookLoad(input, SoftStringMotion::PickUp, friction);
-  point.slack_off = HookLoad(input, SoftStringMotion::SlackOff, friction);
-  const analyses::SoftStringResult rotating =
-      analyses::ComputeSoftString(input, Operation(SoftStringMotion::Rotating, friction, 0.0, 0.0));
+  const HoleFrictionFactors factors{friction, settings.cased_friction};
+  TdRunLoads loads;  // the case's WOB and torque on bit on bottom
+  point.pick_up = SoftSurfaceReading(input, TdRun::kPickUp, factors, loads).hook_load;
+  point.slack_off = SoftSurfaceReading(input, TdRun::kSlackOff, factors, loads).hook_load;
+  const SurfaceReading rotating = SoftSurfaceReading(input, TdRun::kRotatingOffBottom, factors, loads);
   point.rotating = rotating.hook_load;
   point.off_bottom_torque = rotating.surface_torque;
-  point.on_bottom_torque =
-      analyses::ComputeSoftString(input, Operation(SoftStringMotion::Rotating, friction, input.operation.weight_on_bit,
-                                                   input.operation.torque_on_bit))
-          .surface_torque;
+  point.on_bottom_torque = SoftSurfaceReading(input, TdRun::kOnBottom, factors, loads).surface_torque;
   return point;
 }
 
@@ -52,7 +39,7 @@ std::vector<RoadmapPoint> RunSoftRoadmap(const io::Case& c, const analyses::Road
   std::vector<RoadmapPoint> points;
   for (const double md : RoadmapDepths(c, settings)) {
     const io::Case at = CaseAtDepth(c, md);
-    for (const double friction : settings.friction) points.push_back(SoftPoint(at.input, md, friction));
+    for (const double friction : settings.friction) points.push_back(SoftPoint(at.input, settings, md, friction));
   }
   return points;
 }

@@ -34,6 +34,9 @@ HoleProfile::HoleProfile(std::vector<HoleSection> sections) : sections_(std::mov
     if (!section.to_md && section.diameter_at_end) {
       Fail(i, "a linear section (diameter_at_end) needs a to_md");
     }
+    for (const auto& mu : {section.friction, section.axial_friction}) {
+      if (mu && !(std::isfinite(*mu) && *mu >= 0.0)) Fail(i, "a friction coefficient must be finite and >= 0");
+    }
     if (section.to_md && !(std::isfinite(*section.to_md) && *section.to_md > previous_to)) {
       Fail(i, "to_md must be finite and increase down the list (the first section starts at MD 0)");
     }

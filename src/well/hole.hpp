@@ -26,6 +26,8 @@ class HoleProfile {
   // at a step the value just below a boundary counts as soon as the range extends past it).
   double MinDiameter(double md_from, double md_to) const;
   const std::vector<HoleSection>& sections() const { return sections_; }
+  // The section holding md (a boundary MD belongs to the section above it). LogicError when empty.
+  const HoleSection& SectionAt(double md) const { return sections_[SectionIndex(md)]; }
 
  private:
   std::size_t SectionIndex(double md) const;

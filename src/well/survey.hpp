@@ -17,11 +17,16 @@ struct SurveyStation {
 // A hole section: the diameter (m) from the end of the previous section down to `to_md` (m);
 // the last section has no `to_md` and runs to the bottom. With `diameter_at_end` set, the
 // diameter varies linearly along the section from `diameter` to `diameter_at_end`
-// (washouts, tapers).
+// (washouts, tapers). A cased section (inside casing or a liner) and a section's own wall friction
+// coefficients (none: the case's `model.contact` friction) let torque and drag tell cased from open
+// hole (model/hole_friction.hpp).
 struct HoleSection {
   std::optional<double> to_md;
   double diameter = 0.0;
   std::optional<double> diameter_at_end;
+  bool cased = false;
+  std::optional<double> friction = std::nullopt;        // μ around the string (rotating), and along it unless...
+  std::optional<double> axial_friction = std::nullopt;  // ...this gives μ along the hole axis
 };
 
 }  // namespace drillflex::well

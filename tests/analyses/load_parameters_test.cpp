@@ -46,7 +46,7 @@ model::LoadParameters EverythingChanged() {
   block.case_load_factor = 0.5;
   block.weight_on_bit = 30e3;
   block.torque_on_bit = 4e3;
-  block.wall_friction = model::WallFriction{0.35, 0.2};
+  block.SetWallFriction({0.35, 0.2});
   block.friction_factor = 0.7;
   block.sliding_mode = model::SlidingMode::kPrescribed;
   block.sliding = {0.2, 6.0};
@@ -86,7 +86,7 @@ TEST(LoadParameters, TheBlockIsTheModelRebuiltWithItsValues) {
   model::LoadParameters block;
   block.weight_on_bit = 12e3;
   block.torque_on_bit = 3e3;
-  block.wall_friction = model::WallFriction{0.15, 0.4};
+  block.SetWallFriction({0.15, 0.4});
   block.sliding_mode = model::SlidingMode::kPrescribed;
   block.sliding = {-0.3, 2.0};
   const VecX q = Perturbed(input, built, 1e-6, 5);

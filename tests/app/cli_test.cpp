@@ -470,3 +470,55 @@ TEST(Cli, RunKeepFinishedWritesTheAnalysesThatFinished) {
   EXPECT_FALSE(json.contains("buckling"));
   EXPECT_TRUE(fs::exists(out / "report.html"));  // drawn in Chromium: tests/CMakeLists.txt report.KeepFinished
 }
+
+namespace {
+
+const std::string kCalibrationCase = std::string(DRILLFLEX_SOURCE_DIR "/examples/calibration/case.yaml");
+const std::string kCalibrationReadings = std::string(DRILLFLEX_SOURCE_DIR "/examples/calibration/readings.csv");
+
+// A readings row with an activity the model has none for: exit 2, the file, line and column named, no
+// result written.
+TEST(Cli, CalibrateRefusesABadReadingAndWritesNothing) {
+  const fs::path directory = FreshDirectory("calibrate-bad");
+  fs::create_directories(directory);
+  const fs::path readings = directory / "readings.csv";
+  std::ofstream(readings) << "bit_md,activity,hook_load,surface_torque,wob,rpm\nft,-,klbf,ft*lbf,klbf,rpm\n"
+                             "4000,drilling,120,3000,15,80\n4100,tripping,120,,0,0\n";
+  const fs::path out = directory / "out";
+  const RunResult result =
+      RunDrillflex("calibrate " + kCalibrationCase + " --readings " + readings.string() + " -o " + out.string());
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("readings.csv:4:"));
+  EXPECT_THAT(result.output, HasSubstr("activity"));
+  EXPECT_FALSE(fs::exists(out));
+  // A parameter name --fit does not know.
+  const RunResult unknown = RunDrillflex("calibrate " + kCalibrationCase + " --readings " + kCalibrationReadings +
+                                         " --fit open_hole_frction -o " + out.string());
+  EXPECT_EQ(unknown.status, 2) << unknown.output;
+  EXPECT_THAT(unknown.output, HasSubstr("open_hole_frction"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// The soft string's calibration of the example's synthetic readings (written by the soft string at an
+// open-hole friction of 0.32, a cased 0.18, an offset of 80 klbf and a bit coefficient 0.4235, 1 %
+// noise: examples/calibration/make_readings.py): every value within its interval of what wrote them.
+TEST(Cli, CalibrateFindsWhatWroteTheExamplesReadings) {
+  const fs::path out = FreshDirectory("calibrate-example");
+  const RunResult result = RunDrillflex("calibrate " + kCalibrationCase + " --readings " + kCalibrationReadings +
+                                        " --model soft --no-report -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  const nlohmann::json json = nlohmann::json::parse(drillflex::test_cli::ReadFile(out / "results.json"));
+  const nlohmann::json& parameters = json["calibration"]["parameters"];
+  const std::pair<const char*, double> truth[] = {{"open_hole_friction", 0.32},
+                                                  {"cased_hole_friction", 0.18},
+                                                  {"hook_load_offset", 80000.0},  // lbf: the case's force unit
+                                                  {"bit_torque_coefficient", 0.4235}};
+  for (const auto& [name, value] : truth) {
+    EXPECT_TRUE(parameters[name]["fitted"].get<bool>()) << name;
+    EXPECT_LE(parameters[name]["low"].get<double>(), value) << name;
+    EXPECT_GE(parameters[name]["high"].get<double>(), value) << name;
+  }
+  EXPECT_TRUE(fs::exists(out / "calibration.csv"));
+}
+
+}  // namespace

@@ -26,7 +26,7 @@ well:
     - [5000, 0, 0]
     - [6000, 30, 45]
   hole:
-    - {to: 4000, diameter: 9.625}
+    - {to: 4000, diameter: 9.625, cased: true, friction: 0.18, axial_friction: 0.2}
     - {diameter: 8.5}
   bit_md: 6000
 fluid: {density: 10.5, viscosity: 20}
@@ -77,6 +77,11 @@ TEST(CaseReader, ReadsEveryKeyOfTheContractInSI) {
   EXPECT_NEAR(*c.well->hole[0].to_md, 4000 * kFt, 1e-9);
   EXPECT_NEAR(c.well->hole[1].diameter, 8.5 * kIn, 1e-12);
   EXPECT_FALSE(c.well->hole[1].to_md);
+  EXPECT_TRUE(c.well->hole[0].cased);
+  EXPECT_EQ(c.well->hole[0].friction, 0.18);
+  EXPECT_EQ(c.well->hole[0].axial_friction, 0.2);
+  EXPECT_FALSE(c.well->hole[1].cased);
+  EXPECT_FALSE(c.well->hole[1].friction);
   EXPECT_NEAR(c.well->bit_md, 6000 * kFt, 1e-9);
   EXPECT_NEAR(c.well->output_step, 30 * kFt, 1e-12);
   ASSERT_TRUE(c.input.fluid);
@@ -440,6 +445,10 @@ INSTANTIATE_TEST_SUITE_P(
                      "well.survey[2]", "strictly increase"},
         RejectedCase{"inclination out of range", kWellHead + "    - [2000, 181, 0]\n  hole: 12.25\n" + kGoodString, 6,
                      "well.survey[2]", "between 0 and 180"},
+        RejectedCase{"negative hole friction", kWellHead + "  hole: [{diameter: 12.25, friction: -0.1}]\n" + kGoodString, 6,
+                     "well.hole[0].friction", "friction coefficient from 0 to 2"},
+        RejectedCase{"hole section cased not a bool", kWellHead + "  hole: [{diameter: 12.25, cased: maybe}]\n" + kGoodString,
+                     6, "well.hole[0].cased", "expected true or false"},
         RejectedCase{"hole smaller than string", kWellHead + "  hole: 7.5\n" + kGoodString, 8, "string[0]",
                      "does not fit the hole"},
         RejectedCase{"bit beyond survey", kWellHead + "  hole: 12.25\n  bit_md: 1200\n" + kGoodString, 7,

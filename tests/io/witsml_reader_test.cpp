@@ -71,6 +71,8 @@ TEST(WitsmlReader, TheSamplesOfBothVersionsReadAlike) {
     EXPECT_DOUBLE_EQ(hole[0].diameter, 8.835 * kIn);
     EXPECT_FALSE(hole[1].to_md);
     EXPECT_DOUBLE_EQ(hole[1].diameter, 8.5 * kIn);
+    EXPECT_TRUE(hole[0].cased);   // typeHoleCasing casing
+    EXPECT_FALSE(hole[1].cased);  // open hole
     ASSERT_EQ(tubular.tubulars.size(), 1u);
     const auto& components = tubular.tubulars[0].components;
     ASSERT_EQ(components.size(), 8u);

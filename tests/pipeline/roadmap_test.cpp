@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -275,6 +276,61 @@ TEST(Roadmap, TheStiffStringApproachesTheSoftStringAsEIGoesToZero) {
   EXPECT_LT(std::abs(cable.pick_up_drag), 0.5 * std::abs(wide.pick_up_drag));
   EXPECT_LT(std::abs(cable.slack_off_drag), 0.5 * std::abs(wide.slack_off_drag));
   EXPECT_LT(std::abs(cable.torque), 0.5 * std::abs(wide.torque));
+}
+
+// Friction by hole section (well.hole `cased`, `friction`): the straight 30° hole cased to 150 m MD
+// with its own friction 0.15, open below. The roadmap's factor (0.3) is the open hole's; the cased
+// hole keeps its own unless the settings' cased_friction replaces it. At 297 m the pipe runs from the
+// surface to 270 m (150 m of it cased, 120 m open) and the collars 270–297 m (open). By hand
+// (Johancsik in a straight hole, N = w sin I a metre): pick-up W cos I + sin I Σ μ_k w_k L_k,
+// slack-off with −, the torque sin I Σ μ_k w_k L_k r_k; the stiff string's torque with each section's
+// climb, N = w sin I / √(1 + μ_k²).
+io::Case CasedAbove150(double inclination_deg) {
+  io::Case c = StraightHole(inclination_deg);
+  c.input.hole = {well::HoleSection{150.0, 0.2159, {}, true, 0.15}, well::HoleSection{{}, 0.2159, {}}};
+  return c;
+}
+
+struct SectionDrag {
+  double along = 0.0, drag = 0.0, torque = 0.0, climbing_torque = 0.0;
+};
+
+SectionDrag HandComputed(double inclination, double cased, double open) {
+  const double pipe = TubeWeight(0.127, 0.1086), collar = TubeWeight(0.1715, 0.0714);
+  SectionDrag d;
+  d.along = BuoyedWeight(297.0) * std::cos(inclination);
+  const double sine = std::sin(inclination);
+  d.drag = sine * (cased * pipe * 150.0 + open * (pipe * 120.0 + collar * 27.0));
+  const double cased_torque = cased * sine * pipe * 150.0 * 0.0635;
+  const double open_torque = open * sine * (pipe * 120.0 * 0.0635 + collar * 27.0 * 0.08575);
+  d.torque = cased_torque + open_torque;
+  d.climbing_torque = cased_torque / std::sqrt(1.0 + cased * cased) + open_torque / std::sqrt(1.0 + open * open);
+  return d;
+}
+
+TEST(Roadmap, CasedAndOpenHoleEachDragWithTheirOwnFriction) {
+  const double inclination = 30.0 * kPi / 180.0;
+  const io::Case c = CasedAbove150(30.0);
+  for (const std::optional<double> cased_friction : {std::optional<double>{}, std::optional<double>{0.05}}) {
+    analyses::RoadmapSettings settings = CompleteRoadmapSettings(c, {297.0, 45.0, {0.3}});
+    settings.cased_friction = cased_friction;
+    const SectionDrag hand = HandComputed(inclination, cased_friction.value_or(0.15), 0.3);
+    const RoadmapPoint soft = RunSoftRoadmap(c, settings).front();
+    EXPECT_NEAR(soft.pick_up, hand.along + hand.drag, 1e-9 * hand.along);
+    EXPECT_NEAR(soft.slack_off, hand.along - hand.drag, 1e-9 * hand.along);
+    EXPECT_NEAR(soft.off_bottom_torque, hand.torque, 1e-9 * hand.torque);
+    const RoadmapPoint stiff = RunRoadmap(c, settings).front();
+    ASSERT_TRUE(stiff.message.empty()) << stiff.message;
+    EXPECT_NEAR(stiff.pick_up, hand.along + hand.drag, 5e-3 * (hand.along + hand.drag));
+    EXPECT_NEAR(stiff.slack_off, hand.along - hand.drag, 5e-3 * (hand.along - hand.drag));
+    EXPECT_NEAR(stiff.off_bottom_torque, hand.climbing_torque, 0.02 * hand.climbing_torque);
+    std::printf("cased 0.15 over 150 m%s, open 0.3: stiff pick-up %+.3f %%, slack-off %+.3f %%, torque %+.3f %% "
+                "against the hand computation\n",
+                cased_friction ? " (replaced by 0.05)" : "",
+                100.0 * (stiff.pick_up / (hand.along + hand.drag) - 1.0),
+                100.0 * (stiff.slack_off / (hand.along - hand.drag) - 1.0),
+                100.0 * (stiff.off_bottom_torque / hand.climbing_torque - 1.0));
+  }
 }
 
 }  // namespace

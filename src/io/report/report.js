@@ -173,6 +173,10 @@
       const lo = Math.min(...ys), hi = Math.max(...ys), size = Math.max(Math.abs(lo), Math.abs(hi));
       if (size > 0 && hi - lo < 1e-3 * size) { yMin = (lo + hi) / 2 - 0.01 * size; yMax = (lo + hi) / 2 + 0.01 * size; }
     }
+    // Chart.js takes `normalized` data's x range from its first and last points (data sorted by x):
+    // a depth-down plot's x is not sorted, so the whole range is suggested.
+    const xs = datasets.flatMap((d) => d.data.map((p) => p.x));
+    const xLow = xs.length ? Math.min(...xs) : undefined, xHigh = xs.length ? Math.max(...xs) : undefined;
     if (spec.square) holder.classList.add('square');
     const chart = new Chart(canvas, {
       type: 'scatter',
@@ -182,6 +186,7 @@
         interaction: {mode: 'nearest', intersect: false, axis: spec.depthDown ? 'y' : 'x'},
         scales: {
           x: {type: 'linear', title: {display: true, text: spec.x}, reverse: !!spec.xReverse, min: spec.xMin, max: spec.xMax,
+              suggestedMin: xLow, suggestedMax: xHigh,
               bounds: spec.xNice ? 'ticks' : 'data', beginAtZero: !!spec.xFromZero, ticks: {callback: (v) => num(v, 6)}},
           y: {type: spec.logY ? 'logarithmic' : 'linear', title: {display: true, text: spec.y}, min: yMin, max: yMax,
               reverse: !!spec.depthDown,
@@ -783,6 +788,9 @@
         torque.push({label: `soft on bottom, ${m}`, x: column(soft, 'on_bottom_torque'), y: sd, color: color, dash: [7, 4], width: 0.8});
       }
     });
+    // The rig's readings (`--readings`): markers by activity over the curves, and through the drilling
+    // readings the on-bottom hook load each friction factor gives at their own WOB.
+    if (r.readings) readingsSeries(r.readings, hook, torque, r.friction);
     plot(grid, {title: 'Hook load: pick-up (solid), slack-off (dashed), rotating off bottom (dotted)', x: `hook load (${ru.pick_up})`,
       y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true, series: hook});
     // A vertical stretch turns free of the wall: its torque's round-off (1e-20) is drawn as the zero it is.
@@ -791,6 +799,79 @@
     plot(grid, {title: 'Surface torque: off bottom (solid), on bottom (dashed)', x: `torque (${ru.off_bottom_torque})`,
       y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true,
       xMin: Math.min(...torques) > -1e-9 * largest ? 0 : undefined, series: torque});
+  }
+
+  // The readings as marker series by activity, and each model's on-bottom hook load through the drilling
+  // readings (their own WOB), appended to a hook-load and a torque plot's series.
+  const ACTIVITY_MARKERS = {drilling: 'circle', rotating: 'triangle', pick_up: 'rect', slack_off: 'rectRot'};
+  function readingsSeries(g, hook, torque, frictions) {
+    const rows = g.bit_md.map((md, i) => i);
+    for (const [activity, style] of Object.entries(ACTIVITY_MARKERS)) {
+      const at = rows.filter((i) => g.activity[i] === activity);
+      if (!at.length) continue;
+      hook.push({label: `read: ${activity.replace('_', '-')}`, x: at.map((i) => g.hook_load[i]), y: at.map((i) => g.bit_md[i]),
+                 color: '#000', line: false, points: true, pointStyle: style, pointRadius: 3});
+      const turning = at.filter((i) => g.surface_torque[i] !== null);
+      if (turning.length) {
+        torque.push({label: `read: ${activity.replace('_', '-')}`, x: turning.map((i) => g.surface_torque[i]),
+                     y: turning.map((i) => g.bit_md[i]), color: '#000', line: false, points: true, pointStyle: style, pointRadius: 3});
+      }
+    }
+    const drilling = rows.filter((i) => g.activity[i] === 'drilling').sort((a, b) => g.bit_md[a] - g.bit_md[b]);
+    g.models.forEach((m, k) => {
+      const color = frictions ? COLORS[frictions.indexOf(m.friction) % COLORS.length] : COLORS[k % COLORS.length];
+      if (drilling.length) {
+        hook.push({label: `on bottom at the readings' WOB, ${m.label}`, x: drilling.map((i) => m.hook_load[i]),
+                   y: drilling.map((i) => g.bit_md[i]), color: color, dash: [1, 2], width: 1.5});
+      }
+    });
+  }
+
+  // ---- calibration -------------------------------------------------------------------------------
+  // The fitted values with their 95 % intervals, the fitted broomstick (the readings and the model at the
+  // fitted values, against depth) and the residuals against depth.
+  function calibrationSection(nav) {
+    const c = R.calibration;
+    const g = c.readings, gu = g.units;
+    const s = section('calibration', 'Calibration to the rig\'s readings');
+    nav.appendChild(el('a', {href: '#calibration', text: 'calibration'}));
+    s.appendChild(el('p', {text: `${g.bit_md.length} readings of ${g.file} fitted by the ${c.model} string model ` +
+      `(Levenberg–Marquardt, each channel weighted by its scatter): ${c.iterations} iterations, ${c.evaluations} evaluations of the model${c.converged ? '' : ', not converged'}.`}));
+    const table = el('table', {class: 'facts'});
+    table.appendChild(el('tr', {}, ['parameter', 'value', '95 % interval', ''].map((h) => el('th', {text: h}))));
+    for (const [name, p] of Object.entries(c.parameters)) {
+      const unit = p.unit === '-' ? '' : ` ${p.unit}`;
+      table.appendChild(el('tr', {}, [name.replace(/_/g, ' '), p.value === null ? '–' : `${num(p.value, 4)}${unit}`,
+        p.fitted ? `${num(p.low, 4)} to ${num(p.high, 4)}${unit}` : '', p.fitted ? '' : `held: ${p.note}`].map((t) => el('td', {text: t}))));
+    }
+    s.appendChild(table);
+    facts(s, [['residual RMS', `hook load ${num(c.rms.hook_load, 4)} ${gu.hook_load} (${c.counts.hook_load} readings), ` +
+      `surface torque ${num(c.rms.surface_torque, 4)} ${gu.surface_torque} (${c.counts.surface_torque})`]]);
+    if (c.warnings.length) {
+      const list = el('ul', {class: 'warnings'});
+      for (const w of c.warnings) list.appendChild(el('li', {text: w}));
+      s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: 'What the readings cannot tell'}), list]));
+    }
+    const grid = el('div', {class: 'grid'});
+    s.appendChild(grid);
+    const hook = [], torque = [];
+    readingsSeries(g, hook, torque, null);
+    const m = g.models[0], rows = g.bit_md.map((md, i) => i).sort((a, b) => g.bit_md[a] - g.bit_md[b]);
+    for (const activity of Object.keys(ACTIVITY_MARKERS)) {
+      const at = rows.filter((i) => g.activity[i] === activity);
+      if (!at.length || activity === 'drilling') continue;
+      hook.push({label: `fitted: ${activity.replace('_', '-')}`, x: at.map((i) => m.hook_load[i]), y: at.map((i) => g.bit_md[i]), color: COLORS[1], width: 1.5});
+    }
+    const turning = rows.filter((i) => g.surface_torque[i] !== null);
+    torque.push({label: 'fitted', x: turning.map((i) => m.surface_torque[i]), y: turning.map((i) => g.bit_md[i]), color: COLORS[0], width: 1.5});
+    plot(grid, {title: 'Hook load: read (markers) and fitted', x: `hook load (${gu.hook_load})`, y: `bit MD (${gu.bit_md})`,
+      depthDown: true, xNice: true, series: hook});
+    plot(grid, {title: 'Surface torque: read (markers) and fitted', x: `torque (${gu.surface_torque})`, y: `bit MD (${gu.bit_md})`,
+      depthDown: true, xNice: true, series: torque});
+    plot(grid, {title: 'Hook-load residual (model − reading)', x: `residual (${gu.hook_load})`, y: `bit MD (${gu.bit_md})`, depthDown: true, xNice: true,
+      series: [{label: 'hook load', x: rows.map((i) => m.hook_load_residual[i]), y: rows.map((i) => g.bit_md[i]), color: COLORS[1], line: false, points: true}]});
+    plot(grid, {title: 'Torque residual (model − reading)', x: `residual (${gu.surface_torque})`, y: `bit MD (${gu.bit_md})`, depthDown: true, xNice: true,
+      series: [{label: 'surface torque', x: turning.map((i) => m.torque_residual[i]), y: turning.map((i) => g.bit_md[i]), color: COLORS[0], line: false, points: true}]});
   }
 
   // ---- stability map -----------------------------------------------------------------------------
@@ -867,6 +948,7 @@
   part('transient', D.transient, () => transientSection(nav));
   if (R.roadmap) guarded('roadmap', () => roadmapSection(nav));
   if (R.stability) guarded('stability map', () => stabilitySection(nav));
+  if (R.calibration) guarded('calibration', () => calibrationSection(nav));
   // report.html?only=static shows the header and that section alone (to print or capture one part).
   const only = new URLSearchParams(window.location.search).get('only');
   if (only) {
