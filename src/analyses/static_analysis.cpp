@@ -144,7 +144,7 @@ std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, co
     const Vec6 reaction = support->Reaction(model.StateOf(*support, poses, v, 0.0, parameters));
     const model::Body& body = *support->bodies()[0];
     SupportReaction result;
-    result.s = body.s_start + body.reduced->node_positions[SupportNode(model, *support, q)].x();
+    result.s = body.NodeS(SupportNode(model, *support, q));
     result.force = reaction.head<3>();
     result.moment = reaction.tail<3>();
     reactions.push_back(result);
@@ -257,7 +257,7 @@ std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const 
     const model::WallContactResult state = contact.Result(built.system.StateOf(contact, poses, rest, 0.0, parameters));
     if (!state.in_contact) continue;
     const model::Body& body = *contact.bodies()[0];
-    reports.push_back({body.s_start + body.reduced->node_positions[contact.node()].x(), state.md, state.normal_force,
+    reports.push_back({body.NodeS(contact.node()), state.md, state.normal_force,
                        state.friction_force.norm(), state.high_side_angle, body.component, state.contact_point,
                        state.normal});
   }

@@ -13,7 +13,7 @@ std::vector<Station> StringStations(const model::SystemModel& model) {
     const model::Body& body = bodies[b];
     for (int k = 0; k < body.node_count(); ++k) {
       Station station;
-      station.s = body.s_start + body.reduced->node_positions[k].x();
+      station.s = body.NodeS(k);
       station.body = static_cast<int>(b);
       station.node = k;
       if (k == 0 && b > 0) {

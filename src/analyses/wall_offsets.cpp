@@ -26,7 +26,7 @@ struct ContactAtStation {
 
 double StationOf(const model::WallContactElement& contact) {
   const model::Body& body = *contact.bodies()[0];
-  return body.s_start + body.reduced->node_positions[contact.node()].x();
+  return body.NodeS(contact.node());
 }
 
 // The model's wall contacts sorted by station (at a joint two may share one: either serves).

@@ -175,7 +175,7 @@ std::vector<ContactCircleAt> ContactCirclesByStation(const model::BuiltModel& bu
     const auto* contact = dynamic_cast<const model::WallContactElement*>(built.system.elements().at(index).get());
     if (contact == nullptr) continue;
     const model::Body& body = *contact->bodies()[0];
-    circles.push_back({body.s_start + body.reduced->node_positions[contact->node()].x(),
+    circles.push_back({body.NodeS(contact->node()),
                        contact->parameters().contact_radius});
   }
   std::sort(circles.begin(), circles.end(), [](const auto& a, const auto& b) { return a.s < b.s; });

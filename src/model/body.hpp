@@ -56,6 +56,8 @@ struct Body {
   int velocity_count() const { return 6 + flexible_count; }
   int position_count() const { return 7 + flexible_count; }
   int node_count() const { return reduced->node_count(); }
+  // Node k's distance from the bit end along the undeformed string, m.
+  double NodeS(int k) const { return s_start + reduced->node_positions[k].x(); }
 };
 
 // The pose of a body read from the system's positions.

@@ -187,19 +187,18 @@ void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& fo
 bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
-  auto node_s = [&](int k) { return body.s_start + body.reduced->node_positions[k].x(); };
   bool any = false;
   for (int k = 0; k + 1 < body.node_count(); ++k) {
-    const double a = std::max(load.from, node_s(k)), c = std::min(load.to, node_s(k + 1));
+    const double a = std::max(load.from, body.NodeS(k)), c = std::min(load.to, body.NodeS(k + 1));
     if (c <= a) continue;
     any = true;
     const Vec3 q = frame * load.force_per_length;
     const Vec3 m = frame * load.moment_per_length;
-    const double h = node_s(k + 1) - node_s(k);
+    const double h = body.NodeS(k + 1) - body.NodeS(k);
     if (c - a >= h * (1.0 - 1e-12)) {
       AddUniformLineLoad(node_position(k), node_position(k + 1), q, forces[k], moments[k], forces[k + 1], moments[k + 1]);
     } else {  // a partly loaded element: the resultant shared by the lever rule
-      const double share = (0.5 * (a + c) - node_s(k)) / h;
+      const double share = (0.5 * (a + c) - body.NodeS(k)) / h;
       forces[k] += (1.0 - share) * (c - a) * q;
       forces[k + 1] += share * (c - a) * q;
     }
@@ -479,7 +478,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       if (input.string.components[body.component].type == ComponentType::Bit) continue;
       for (int k = 0; k < body.node_count(); ++k) {
         if (k == body.node_count() - 1 && b + 1 != placed.size()) continue;  // the next body's node 0 carries it
-        nodes.push_back({&body, k, body.s_start + body.reduced->node_positions[k].x()});
+        nodes.push_back({&body, k, body.NodeS(k)});
       }
     }
     std::vector<double> positions;

@@ -15,9 +15,6 @@ using so3::Skew;
 
 namespace {
 
-// The node's distance from the bit end, m.
-double NodeS(const Body& body, int node) { return body.s_start + body.reduced->node_positions[node].x(); }
-
 void CheckNode(const Body* body, int node, const char* what) {
   if (body == nullptr || node < 0 || node >= body->node_count()) {
     throw LogicError(fmt::format("{}: node {} is not on the body", what, node));
@@ -48,7 +45,7 @@ TopDriveElement::TopDriveElement(const Body* body, int node, const Mat3& frame, 
 
 std::string TopDriveElement::Describe() const {
   return fmt::format("top drive ({}) at {:.4g} m from the bit", drive_.mode == TopDriveMode::Speed ? "speed" : "torque",
-                     NodeS(*bodies()[0], node_));
+                     bodies()[0]->NodeS(node_));
 }
 
 double TopDriveElement::DriveAngle(double t) const {
@@ -136,7 +133,7 @@ BlockElement::BlockElement(const Body* body, int node, const Vec3& position, con
 
 std::string BlockElement::Describe() const {
   return fmt::format("block ({}) at {:.4g} m from the bit",
-                     drive_.mode == BlockMode::Velocity ? "velocity" : "hook load", NodeS(*bodies()[0], node_));
+                     drive_.mode == BlockMode::Velocity ? "velocity" : "hook load", bodies()[0]->NodeS(node_));
 }
 
 void BlockElement::DoEvaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const {

@@ -28,7 +28,7 @@ ImbalanceElement::ImbalanceElement(const Body* body, int node, double imbalance,
 std::string ImbalanceElement::Describe() const {
   const Body& body = *bodies()[0];
   return fmt::format("imbalance {:.4g} kg·m at {:.4g} m from the bit", imbalance_,
-                     body.s_start + body.reduced->node_positions[node_].x());
+                     body.NodeS(node_));
 }
 
 Vec3 ImbalanceElement::Force(const ElementState& state) const {

@@ -47,7 +47,7 @@ LateralFluid MakeLateralFluid(const ModelInput& input, const std::vector<Body>& 
       node.internal_mass = inside * areas.bore * node.length;
       node.rod_radius = 0.5 * body.outer_diameter;
       if (hole) {
-        const double s = body.s_start + body.reduced->node_positions[k].x();
+        const double s = body.NodeS(k);
         const double hole_radius = 0.5 * hole->Diameter(input.bit_md - s);
         // No annulus where the body fills the hole (the case checks forbid it; a guard only).
         if (hole_radius > node.rod_radius) node.hole_radius = hole_radius;

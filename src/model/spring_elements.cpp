@@ -90,7 +90,7 @@ SupportElement::SupportElement(const Body* body, int node, const Vec3& position,
 
 std::string SupportElement::Describe() const {
   return fmt::format("support at {:.4g} m from the bit",
-                     bodies()[0]->s_start + bodies()[0]->reduced->node_positions[node_].x());
+                     bodies()[0]->NodeS(node_));
 }
 
 CouplingKinematics SupportElement::Kinematics(const ElementState& state) const {

@@ -27,7 +27,7 @@ StringAboveElement::StringAboveElement(const Body* body, int node, const Vec3& p
 
 std::string StringAboveElement::Describe() const {
   return fmt::format("the pipe above the top at {:.4g} m from the bit",
-                     bodies()[0]->s_start + bodies()[0]->reduced->node_positions[node_].x());
+                     bodies()[0]->NodeS(node_));
 }
 
 double StringAboveElement::Tension(const LoadParameters& load) const {

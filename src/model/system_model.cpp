@@ -439,7 +439,7 @@ std::pair<int, int> FindNodeAt(const std::vector<Body>& bodies_, double s) {
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     for (int k = 0; k < body.node_count(); ++k) {
-      const double distance = std::abs(body.s_start + body.reduced->node_positions[k].x() - s);
+      const double distance = std::abs(body.NodeS(k) - s);
       if (distance <= best + 1e-12) {  // ties go to the later (upper) body
         best = distance;
         best_body = static_cast<int>(b);

@@ -262,7 +262,7 @@ WallContactElement::WallContactElement(const Body* body, int node, std::shared_p
 
 std::string WallContactElement::Describe() const {
   const Body& body = *bodies()[0];
-  return fmt::format("wall contact at {:.4g} m from the bit", body.s_start + body.reduced->node_positions[node_].x());
+  return fmt::format("wall contact at {:.4g} m from the bit", body.NodeS(node_));
 }
 
 WallContactParameters WallContactElement::EffectiveParameters(const LoadParameters& load) const {
