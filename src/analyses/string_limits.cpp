@@ -117,7 +117,7 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
                                        components[index].name, model::kDefaultGrade,
                                        default_yield / model::kPascalPerKsi));
   }
-  if (!any_torque_limit) limits.notes.push_back("no make-up torque given: no torque limit");
+  if (!any_torque_limit) limits.notes.emplace_back("no make-up torque given: no torque limit");
   return limits;
 }
 
