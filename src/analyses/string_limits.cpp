@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "model/string_limits.hpp"
+#include "well/hole.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -47,13 +48,17 @@ const char* BucklingStateName(BucklingState state) {
 }
 
 double SinusoidalLoadAt(const model::ModelInput& input, double s, double md) {
-  const std::optional<double> clearance = model::RadialClearanceAt(input, s);
-  if (!input.trajectory || !clearance) return kNoLimit;
+  if (!input.trajectory || input.hole.empty()) return kNoLimit;
   const model::Component& component = model::ComponentAt(input.string, s);
+  // r of the component as a whole: the pipe lies on its tool joints (a stabilizer on its blades) all
+  // along a buckle, which spans many joints; not the clearance at the station itself, which would
+  // alternate between the joint's and the body's along every joint.
+  const double clearance =
+      0.5 * (well::HoleProfile(input.hole).Diameter(input.bit_md - s) - model::ContactDiameter(component));
   const fe::HollowSection body{component.outer_diameter, component.inner_diameter};
   const double stiffness = input.materials.at(component.material).youngs_modulus * body.second_moment();
   return model::SinusoidalBucklingLoad(stiffness, model::BuoyedWeightPerLength(component, input),
-                                       input.trajectory->Inclination(md), *clearance);
+                                       input.trajectory->Inclination(md), clearance);
 }
 
 StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,

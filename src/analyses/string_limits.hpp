@@ -70,8 +70,8 @@ double SinusoidalLoadAt(const model::ModelInput& input, double s, double md);
 // E-75's for steel and nonmag, none for other materials; not the bit), the make-up torque where the
 // component gives one, and in a well the buckling loads with w the component's buoyed weight per
 // length (model::BuoyedWeightPerLength), E I its body's, θ the hole's inclination at the station and r
-// the radial clearance of its contact diameter (model::RadialClearanceAt). A vertical station (F_s = 0)
-// is not screened.
+// the radial clearance of the component's contact diameter (model::ContactDiameter: its tool joints',
+// its blades', else its body's) in the hole there. A vertical station (F_s = 0) is not screened.
 StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,
                                  double design_factor);
 

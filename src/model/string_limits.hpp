@@ -14,7 +14,8 @@
 
 namespace drillflex::model {
 
-inline constexpr double kPascalPerKsi = 6.894757293168e6;  // 1 ksi = 1000 lbf/in²
+// 1 ksi = 1000 lbf/in², exactly (1 lbf = 4.4482216152605 N, 1 in = 0.0254 m).
+inline constexpr double kPascalPerKsi = 1000.0 * 4.4482216152605 / (0.0254 * 0.0254);
 // The case's design factor by default: the allowable stress is yield / design factor.
 inline constexpr double kDefaultDesignFactor = 1.25;
 // A given yield strength outside these is refused (every drill-string steel lies inside).
@@ -58,9 +59,14 @@ double TensionCapacity(const fe::HollowSection& section, double allowable_stress
 double SinusoidalBucklingLoad(double bending_stiffness, double weight_per_length, double inclination,
                               double radial_clearance);
 // Chen, Lin & Cheatham's (1990, "Tubing and casing buckling in horizontal wells", JPT 42(2)) helical
-// buckling load, the one Mitchell's analysis also gives for an inclined hole: F_h = 2√2 √(E I w sin θ / r)
-// = √2 F_s, N. (Chen et al. write F_h = 2√2 √(E I w / r) for the horizontal hole, where Dawson–Paslay's
-// is F_s = 2 √(E I w / r).)
+// buckling load: F_h = 2√2 √(E I w sin θ / r) = √2 F_s, N (theirs is 2√2 √(E I w / r) in the
+// horizontal hole, where Dawson–Paslay's is 2 √(E I w / r); w sin θ is the weight across an inclined
+// hole). Mitchell (1999, "Buckling analysis in deviated wells: a practical method", SPE Drilling &
+// Completion 14(1)) puts helical buckling between 1.4 F_p and 2.8 F_p (F_p = F_s, Paslay–Dawson's): ≈ √2 F_s,
+// the least load that holds a helix (the limit on unloading, Chen's), and ≈ 2√2 F_s, the limit on
+// loading, where a sinusoidal buckle turns helical. This is the lower, Chen's; the buckling analysis's
+// screen (analyses/buckling_analysis.cpp, buckling.dawson_paslay.helical_load) reports Mitchell's
+// loading limit 2√2 F_s (docs/validation.md V11).
 double HelicalBucklingLoad(double sinusoidal_load);
 
 }  // namespace drillflex::model

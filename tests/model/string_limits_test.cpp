@@ -57,8 +57,8 @@ TEST(StringLimits, TensionCapacityMatchesApiTables) {
   EXPECT_NEAR(TensionCapacity(section, yield / 1.25, 20000.0 * kFootPound), 1118829.67, 0.5);
 }
 
-// Tension 1 MN, torque 30 kN·m, bending 10 kN·m on 5 in × 4.276 in: by hand A = 3.40295e-3 m²,
-// I = 5.9390e-6 m⁴, σ = N/A + M c/I, τ = T c/(2I), √(σ² + 3τ²) = 487.628 MPa.
+// Tension 1 MN, torque 30 kN·m, bending 10 kN·m on 5 in × 4.276 in: by hand A = 3.40296e-3 m²,
+// I = 5.93927e-6 m⁴, σ = N/A + M c/I, τ = T c/(2I), √(σ² + 3τ²) = 487.628 MPa.
 TEST(StringLimits, VonMisesOfATubeUnderTensionTorqueAndBending) {
   const fe::HollowSection section = RatedSection(FiveInchPipe(PipeClass::New));
   EXPECT_NEAR(VonMisesStress(section, 1.0e6, 30000.0, 10000.0), 487628157.5, 1.0);
