@@ -1,10 +1,12 @@
 #include "io/analysis_results.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
 #include "analyses/bit_tendency.hpp"
+#include "analyses/string_limits.hpp"
 
 namespace drillflex::io {
 namespace {
@@ -174,6 +176,67 @@ json BitJson(const Case& c, const analyses::BitReport& bit) {
             {"threshold", out(tendency.threshold, Quantity::Force)}}}};
 }
 
+json UtilisationJson(const Case& c, const analyses::LimitUtilisation& limit) {
+  const OutputUnits out{c.output_units};
+  if (limit.component < 0) return nullptr;
+  return {{"limit", limit.limit},
+          {"utilisation", limit.utilisation},
+          {"s", out(limit.s, Quantity::Length)},
+          {"md", out(limit.md, Quantity::Length)},
+          {"component", c.input.string.components.at(static_cast<std::size_t>(limit.component)).name}};
+}
+
+// The string's limits along the static (analyses/string_limits.hpp): per-station arrays, the buckled
+// zones, each limit's largest utilisation and the closest; NaN (a limit that does not apply) is null.
+json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
+  const OutputUnits out{c.output_units};
+  const analyses::StringLimits limits = analyses::ComputeStringLimits(c.input, result.nodes, c.limits.design_factor);
+  json s = json::array(), md = json::array(), yield = json::array(), allowable = json::array(),
+       von_mises = json::array(), stress = json::array(), makeup = json::array(), torque = json::array(),
+       sinusoidal = json::array(), helical = json::array(), buckling = json::array(), state = json::array();
+  for (const analyses::NodeLimits& node : limits.nodes) {
+    s.push_back(out(node.s, Quantity::Length));
+    md.push_back(out(node.md, Quantity::Length));
+    yield.push_back(out(node.yield, Quantity::Stress));
+    allowable.push_back(out(node.allowable_stress, Quantity::Stress));
+    von_mises.push_back(out(node.von_mises_stress, Quantity::Stress));
+    stress.push_back(node.stress_utilisation);
+    makeup.push_back(out(node.makeup_torque, Quantity::Moment));
+    torque.push_back(node.torque_utilisation);
+    sinusoidal.push_back(std::isfinite(node.sinusoidal_load) ? json(out(node.sinusoidal_load, Quantity::Force)) : json());
+    helical.push_back(std::isfinite(node.helical_load) ? json(out(node.helical_load, Quantity::Force)) : json());
+    buckling.push_back(node.buckling_utilisation);
+    state.push_back(analyses::BucklingStateName(node.buckling));
+  }
+  json zones = json::array();
+  for (const analyses::BuckledZone& zone : limits.zones) {
+    zones.push_back({{"kind", analyses::BucklingStateName(zone.state)},
+                     {"md_from", out(zone.md_from, Quantity::Length)},
+                     {"md_to", out(zone.md_to, Quantity::Length)}});
+  }
+  return {{"design_factor", limits.design_factor},
+          {"nodes",
+           {{"s", s},
+            {"md", md},
+            {"yield", yield},
+            {"allowable_stress", allowable},
+            {"von_mises_stress", von_mises},
+            {"stress_utilisation", stress},
+            {"makeup_torque", makeup},
+            {"torque_utilisation", torque},
+            {"sinusoidal_load", sinusoidal},
+            {"helical_load", helical},
+            {"buckling_utilisation", buckling},
+            {"buckling", state}}},
+          {"buckled_zones", zones},
+          {"summary",
+           {{"yield", UtilisationJson(c, limits.yield)},
+            {"makeup_torque", UtilisationJson(c, limits.makeup_torque)},
+            {"helical_buckling", UtilisationJson(c, limits.helical_buckling)},
+            {"closest", UtilisationJson(c, limits.closest)}}},
+          {"notes", limits.notes}};
+}
+
 }  // namespace
 
 void AddStaticResults(const Case& c, const analyses::StaticResult& result, ResultFiles& files) {
@@ -193,6 +256,7 @@ void AddStaticResults(const Case& c, const analyses::StaticResult& result, Resul
                             {"nodes", AddStaticNodes(c, result.nodes, files)},
                             {"contacts", AddStaticContacts(c, result.contacts, files)},
                             {"reactions", reactions},
+                            {"limits", StaticLimitsJson(c, result)},
                             {"table", "static.csv"}};
   if (result.bit) files.json()["static"]["bit"] = BitJson(c, *result.bit);
   if (result.pipe_above) {

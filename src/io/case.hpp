@@ -11,6 +11,7 @@
 #include "fe/material.hpp"
 #include "model/builder.hpp"
 #include "model/string_config.hpp"
+#include "model/string_limits.hpp"
 #include "units/units.hpp"
 #include "well/survey.hpp"
 
@@ -30,6 +31,11 @@ struct OutputConfig {
   bool vtk = true;     // string.vtp, well.vtp, contacts.vtp (ParaView)
 };
 
+// The case's `limits:` (analyses/string_limits.hpp): the allowable stress is yield / design_factor.
+struct LimitsConfig {
+  double design_factor = model::kDefaultDesignFactor;
+};
+
 struct Case {
   std::string name;
   std::string file;        // path of the case file as given
@@ -45,6 +51,7 @@ struct Case {
   model::ModelInput input;
   analyses::AnalysesConfig analyses;
   OutputConfig output;
+  LimitsConfig limits;
   // What the reader read but could not map: the fields of the WITSML documents a `witsml:` key names
   // ("file:line:column: element path: <wtPerLen> not mapped: ..."); `drillflex check` prints them.
   std::vector<std::string> warnings;

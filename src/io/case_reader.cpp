@@ -30,7 +30,7 @@ units::System ReadSystem(const YamlView& root, const char* key, units::System fa
 Case ReadRoot(const YamlView& root, const std::string& file, const std::string& directory) {
   root.ExpectMap("a case (a map of keys: name, units, well, string, ...)", false);
   root.AllowOnlyKeys({"name", "units", "output_units", "well", "fluid", "gravity", "materials",
-                      "string", "model", "supports", "loads", "operation", "analyses", "output"});
+                      "string", "model", "supports", "loads", "operation", "analyses", "output", "limits"});
   Case c;
   c.file = file;
   c.directory = directory;
@@ -62,6 +62,16 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
     output->AllowOnlyKeys({"report", "vtk"});
     if (const auto report = output->OptionalChild("report")) c.output.report = report->AsBool();
     if (const auto vtk = output->OptionalChild("vtk")) c.output.vtk = vtk->AsBool();
+  }
+  if (const auto limits = top.PresentChild("limits")) {
+    limits->ExpectMap("the string's limits ({design_factor: 1.25})");
+    limits->AllowOnlyKeys({"design_factor"});
+    if (const auto factor = limits->OptionalChild("design_factor")) {
+      c.limits.design_factor = factor->AsQuantity(Quantity::Dimensionless);
+      if (!(c.limits.design_factor >= 1.0 && c.limits.design_factor <= 3.0)) {
+        factor->Fail("expected a design factor between 1 and 3 (the allowable stress is yield / design factor)");
+      }
+    }
   }
   CheckCaseConsistency(c, top);
   CompleteModelInput(c);

@@ -26,9 +26,6 @@ namespace {
 using nlohmann::json;
 using units::Quantity;
 
-// The von Mises limit line of the static plots: the minimum yield strength of API 5DP grade E-75
-// drill pipe (75 ksi), the lowest grade of the string's steel: a screening line, not a design check.
-const double kStressLimitPa = units::ToSI(75000.0, units::Quantity::Stress, units::System::Field);  // 75 ksi
 
 // A series never holds more points than this (the transient's are thinned evenly): the page stays
 // light and quick to open.
@@ -110,8 +107,6 @@ void ReportData::AddStatic(const Case& c, const model::ModelInput& input, const 
   }
   json_["units"] = UnitNames(out);
   json_["components"] = std::move(components);
-  json_["stress_limit"] = {{"value", out(kStressLimitPa, Quantity::Stress)},
-                           {"label", "E-75 drill pipe minimum yield (screening)"}};
   if (input.trajectory) {
     // The hole's centre at each station (the string's place in the hole is node.position less it).
     json centre = json::array();

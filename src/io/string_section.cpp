@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "io/case_sections.hpp"
+#include "model/string_limits.hpp"
 
 namespace drillflex::io {
 namespace {
@@ -35,7 +36,8 @@ ComponentType ReadComponentType(const YamlView& node) {
 }
 
 std::vector<std::string> AllowedComponentKeys(ComponentType type) {
-  std::vector<std::string> keys = {"type", "name", "od", "id", "length", "material", "count"};
+  std::vector<std::string> keys = {"type",  "name",  "od",    "id",           "length", "material",
+                                   "count", "grade", "yield", "class", "makeup_torque"};
   switch (type) {
     case ComponentType::Stabilizer:
       keys.insert(keys.end(), {"blade_od", "blade_length"});
@@ -112,6 +114,41 @@ void ReadMotorKeys(const YamlView& item, model::Component& component) {
   component.blade_length = item.OptionalPositive("blade_length", Quantity::Length);
 }
 
+// The ratings (model/string_limits.hpp): an API grade or a custom minimum yield (40–200 ksi), the
+// pipe class, the connections' make-up torque.
+void ReadRatingKeys(const YamlView& item, model::Component& component) {
+  const auto grade = item.OptionalChild("grade");
+  const auto yield = item.OptionalChild("yield");
+  if (grade && yield) yield->Fail("give either 'grade' or a custom 'yield', not both");
+  if (grade) {
+    const std::string name = grade->AsString();
+    const auto found = model::FindSteelGrade(name);
+    if (!found) {
+      std::vector<std::string> names;
+      for (const model::SteelGrade& known : model::SteelGrades()) names.emplace_back(known.name);
+      grade->Fail(fmt::format("unknown grade '{}'; expected one of: {} (or a custom 'yield')", name, JoinWords(names)));
+    }
+    component.grade = found->name;
+    component.yield_strength = found->yield;
+  }
+  if (yield) {
+    const double value = item.Positive("yield", Quantity::Stress);
+    if (value < model::kLeastYield || value > model::kLargestYield) {
+      yield->Fail(fmt::format("expected a minimum yield strength between 40 and 200 ksi (E-75's is 75 ksi, S-135's "
+                              "135 ksi), got {:.4g} ksi ({:.4g} MPa)",
+                              value / model::kPascalPerKsi, value / 1e6));
+    }
+    component.yield_strength = value;
+  }
+  if (const auto pipe_class = item.OptionalChild("class")) {
+    const std::string name = pipe_class->AsString();
+    if (name == "new") component.pipe_class = model::PipeClass::New;
+    else if (name == "premium") component.pipe_class = model::PipeClass::Premium;
+    else pipe_class->Fail(fmt::format("unknown pipe class '{}'; expected 'new' or 'premium' (the wall at 80 %)", name));
+  }
+  component.makeup_torque = item.OptionalPositive("makeup_torque", Quantity::Moment);
+}
+
 model::Component ReadComponent(const YamlView& item, const std::map<std::string, fe::Material>& materials) {
   item.ExpectMap("a component {type, od, id, length, ...}", false);
   model::Component component;
@@ -148,6 +185,7 @@ model::Component ReadComponent(const YamlView& item, const std::map<std::string,
     case ComponentType::Motor: ReadMotorKeys(item, component); break;
     default: break;
   }
+  ReadRatingKeys(item, component);
   return component;
 }
 

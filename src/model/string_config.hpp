@@ -13,6 +13,10 @@ namespace drillflex::model {
 
 enum class ComponentType { Bit, Stabilizer, Collar, Hwdp, Pipe, Mwd, Lwd, Jar, Motor, Sub, Crossover };
 
+// API RP 7G's pipe classes: new, or premium (the wall worn uniformly to 80 % of its nominal
+// thickness, the bore kept: model/string_limits.hpp RatedSection).
+enum class PipeClass { New, Premium };
+
 // One entry of the string list (from the bit upward). `count` repeats it.
 struct Component {
   ComponentType type = ComponentType::Collar;
@@ -37,6 +41,14 @@ struct Component {
   std::optional<double> toolface;
   std::optional<double> speed_per_flow;
   std::optional<int> lobes;  // rotor lobes
+  // Ratings (model/string_limits.hpp): the minimum yield strength, Pa, from an API grade or given
+  // (unset: unknown; the limits then take the lowest grade's for steel), the grade's name ("" for a
+  // given yield or none), the class of the body's wall, and the connections' make-up torque, N·m
+  // (as given; unset: no torque limit).
+  std::optional<double> yield_strength;
+  std::string grade;
+  PipeClass pipe_class = PipeClass::New;
+  std::optional<double> makeup_torque;
   int source_line = 0;       // line in the case file, for messages
 };
 

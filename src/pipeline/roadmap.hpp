@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,23 @@ struct RoadmapPoint {
   // A run of the point failed: one of its values is NaN (a warning alone leaves them whole).
   bool failed() const;
 };
+
+// The string's limits at a point (issue 37), NaN where none applies. Hook loads in N, torques in N·m.
+struct RoadmapLimits {
+  // The hook load at which the pipe at the surface (the case's top component) reaches yield / design
+  // factor by von Mises under the point's off-bottom torque (model::TensionCapacity on its rated section;
+  // yield E-75's for a component of no grade).
+  double hook_load_limit = std::numeric_limits<double>::quiet_NaN();
+  // The weakest make-up torque the string's components give (none given: NaN).
+  double torque_limit = std::numeric_limits<double>::quiet_NaN();
+  // Slacking off with weight set down on bottom: the hook load at which the soft string (analyses/
+  // soft_string.hpp, the point's friction factor) first reaches Chen's helical load anywhere
+  // (analyses/string_limits.hpp's screen); the slack-off hook load itself when it is helically buckled
+  // off bottom; NaN when all its weight on the bit does not reach it.
+  double helical_slack_off = std::numeric_limits<double>::quiet_NaN();
+};
+RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSettings& settings,
+                                 const RoadmapPoint& point);
 
 // The case at `bit_md`: its well's bit MD moved there and the string's top component continued to the
 // surface: a single joint (count 1) lengthened to reach it, else as many joints as fit below it (what

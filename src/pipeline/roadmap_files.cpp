@@ -35,7 +35,20 @@ struct RoadmapTables {
   nlohmann::json rows = nlohmann::json::array();
 };
 
-RoadmapTables Tabulate(const std::vector<RoadmapPoint>& points, units::System system) {
+// The limit columns (RoadmapLimits), after the points' own.
+struct LimitColumn {
+  const char* name;
+  Quantity quantity;
+  double RoadmapLimits::*member;
+};
+constexpr LimitColumn kLimitColumns[] = {
+    {"hook_load_limit", Quantity::Force, &RoadmapLimits::hook_load_limit},
+    {"torque_limit", Quantity::Moment, &RoadmapLimits::torque_limit},
+    {"helical_slack_off", Quantity::Force, &RoadmapLimits::helical_slack_off},
+};
+
+RoadmapTables Tabulate(const io::Case& c, const analyses::RoadmapSettings& settings,
+                       const std::vector<RoadmapPoint>& points, units::System system) {
   auto out = [system](double si, Quantity quantity) { return units::FromSI(si, quantity, system); };
   std::vector<std::string> columns, units_row;
   for (const RoadmapColumn& column : kColumns) {
@@ -44,6 +57,10 @@ RoadmapTables Tabulate(const std::vector<RoadmapPoint>& points, units::System sy
   }
   columns.push_back("message");
   units_row.push_back("-");
+  for (const LimitColumn& column : kLimitColumns) {
+    columns.push_back(column.name);
+    units_row.push_back(UnitOf(column.quantity, system));
+  }
   io::CsvTable table(columns, units_row);
   RoadmapTables tables;
   for (const RoadmapPoint& point : points) {
@@ -56,6 +73,12 @@ RoadmapTables Tabulate(const std::vector<RoadmapPoint>& points, units::System sy
     }
     cells.push_back(io::CsvTable::Text(point.message));
     row["message"] = point.message;
+    const RoadmapLimits limits = RoadmapPointLimits(c, settings, point);
+    for (const LimitColumn& column : kLimitColumns) {
+      const double shown = out(limits.*column.member, column.quantity);
+      cells.push_back(std::isfinite(shown) ? io::CsvTable::Number(shown) : "");
+      row[column.name] = std::isfinite(shown) ? nlohmann::json(shown) : nlohmann::json(nullptr);
+    }
     table.AddCells(std::move(cells));
     tables.rows.push_back(std::move(row));
   }
@@ -72,16 +95,17 @@ io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSe
   io::ResultFiles files(directory, "roadmap.json");
   const units::System system = c.output_units;
   auto out = [system](double si, Quantity quantity) { return units::FromSI(si, quantity, system); };
-  RoadmapTables main = Tabulate(points, system);
+  RoadmapTables main = Tabulate(c, settings, points, system);
   files.Add("roadmap.csv", main.csv);
   const bool both = settings.model == analyses::RoadmapModel::Both;
   RoadmapTables soft;
   if (both) {
-    soft = Tabulate(soft_points, system);
+    soft = Tabulate(c, settings, soft_points, system);
     files.Add("roadmap-soft.csv", soft.csv);
   }
   nlohmann::json units_json = nlohmann::json::object();
   for (const RoadmapColumn& column : kColumns) units_json[column.name] = UnitOf(column.quantity, system);
+  for (const LimitColumn& column : kLimitColumns) units_json[column.name] = UnitOf(column.quantity, system);
   nlohmann::json& json = files.json();
   json["case"] = c.name;
   json["units"] = std::string(units::SystemName(system));
@@ -100,6 +124,7 @@ io::ResultFiles ComposeRoadmapFiles(const io::Case& c, const analyses::RoadmapSe
                        : !std::isfinite(settings.stiff_length) ? nlohmann::json("surface")
                                                                  : nlohmann::json(out(settings.stiff_length, Quantity::Length))},
       {"units", units_json},
+      {"design_factor", c.limits.design_factor},
       {"points", std::move(main.rows)},
   };
   if (both) json["roadmap"]["soft_points"] = std::move(soft.rows);

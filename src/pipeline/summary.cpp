@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analyses/bit_tendency.hpp"
+#include "analyses/string_limits.hpp"
 #include "io/analysis_results.hpp"
 
 namespace drillflex::pipeline {
@@ -48,6 +49,31 @@ void WriteCriticalSpeeds(std::ostream& out, const io::Case& c, const analyses::V
   }
 }
 
+// The string's limits (analyses/string_limits.hpp): each limit's largest utilisation and where, the
+// closest, the buckled zones and the assumptions.
+template <typename Where>
+void WriteStaticLimits(std::ostream& out, const io::Case& c, const analyses::StaticResult& result, const Where& where) {
+  const analyses::StringLimits limits = analyses::ComputeStringLimits(c.input, result.nodes, c.limits.design_factor);
+  auto line = [&](const char* label, const analyses::LimitUtilisation& limit) {
+    if (limit.component < 0) return fmt::format("{} -", label);
+    return fmt::format("{} {:.3g} at {} ({})", label, limit.utilisation, where(limit.s, limit.md),
+                       c.input.string.components.at(static_cast<std::size_t>(limit.component)).name);
+  };
+  out << fmt::format("  limits (design factor {:.3g}), utilisation = load / limit:\n", limits.design_factor);
+  out << "    " << line("yield (von Mises / (yield / design factor))", limits.yield) << "\n";
+  out << "    " << line("make-up torque", limits.makeup_torque) << "\n";
+  out << "    " << line("helical buckling (compression / F_hel)", limits.helical_buckling) << "\n";
+  if (limits.closest.component >= 0) {
+    out << fmt::format("    closest: {} {:.3g}{}\n", limits.closest.limit, limits.closest.utilisation,
+                       limits.closest.utilisation >= 1.0 ? "  ** BEYOND THE LIMIT **" : "");
+  }
+  for (const analyses::BuckledZone& zone : limits.zones) {
+    out << fmt::format("    buckled {}: MD {} to {}\n", analyses::BucklingStateName(zone.state),
+                       Show(c, zone.md_from, Quantity::Length), Show(c, zone.md_to, Quantity::Length));
+  }
+  for (const std::string& note : limits.notes) out << "    note: " << note << "\n";
+}
+
 }  // namespace
 
 std::string Show(const io::Case& c, double si, Quantity quantity, int digits) {
@@ -85,6 +111,7 @@ void WriteStatic(std::ostream& out, const io::Case& c, const analyses::StaticRes
                              Show(c, stressed->bending_stress, Quantity::Stress),
                              Show(c, stressed->axial_force, Quantity::Force));
   }
+  WriteStaticLimits(out, c, result, where);
   if (c.well) {
     if (result.contacts.empty()) {
       out << "  no wall contact carries force\n";

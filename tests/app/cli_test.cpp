@@ -388,8 +388,9 @@ TEST(Cli, RoadmapWritesOneRowADepthAndFrictionFactor) {
   std::string header, units, line;
   std::getline(csv, header);
   std::getline(csv, units);
-  EXPECT_EQ(header, "bit_md,friction,pick_up,slack_off,rotating,off_bottom_torque,on_bottom_torque,message");
-  EXPECT_EQ(units, "ft,-,lbf,lbf,lbf,ft*lbf,ft*lbf,-");
+  EXPECT_EQ(header, "bit_md,friction,pick_up,slack_off,rotating,off_bottom_torque,on_bottom_torque,message,hook_load_limit,"
+            "torque_limit,helical_slack_off");
+  EXPECT_EQ(units, "ft,-,lbf,lbf,lbf,ft*lbf,ft*lbf,-,lbf,ft*lbf,lbf");
   std::vector<std::vector<double>> rows;
   while (std::getline(csv, line)) {
     std::vector<double> row;

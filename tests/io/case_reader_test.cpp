@@ -361,6 +361,31 @@ TEST(CaseReader, FrictionVelocityAndFluidFrequency) {
   EXPECT_FALSE(unset.analyses.transient->fluid_frequency.has_value());
 }
 
+// Ratings (issue 37): grade, custom yield, class and make-up torque per component; the design factor.
+TEST(CaseReader, StringRatingsAndDesignFactor) {
+  const Case c = ParseCase(
+      "units: field\nstring:\n"
+      "  - {type: collar, od: 6.75, id: 2.8125, length: 30, yield: 110 ksi, makeup_torque: 30000}\n"
+      "  - {type: pipe, od: 5, id: 4.276, length: 30, grade: g105, class: premium, makeup_torque: 20000 ft*lbf}\n"
+      "limits: {design_factor: 1.4}\n",
+      "ratings.yaml");
+  const auto& collar = c.input.string.components[0];
+  const auto& pipe = c.input.string.components[1];
+  constexpr double kKsi = 1000.0 * kLbf / (0.0254 * 0.0254);
+  EXPECT_NEAR(*collar.yield_strength, 110.0 * kKsi, 1e-3);
+  EXPECT_EQ(collar.grade, "");
+  EXPECT_NEAR(*collar.makeup_torque, 30000.0 * kLbf * kFt, 1e-9);  // a bare number: ft*lbf in field units
+  EXPECT_EQ(pipe.grade, "G-105");
+  EXPECT_NEAR(*pipe.yield_strength, 105.0 * kKsi, 1e-3);
+  EXPECT_EQ(pipe.pipe_class, model::PipeClass::Premium);
+  EXPECT_NEAR(*pipe.makeup_torque, 20000.0 * kLbf * kFt, 1e-9);
+  EXPECT_DOUBLE_EQ(c.limits.design_factor, 1.4);
+  const Case plain = ParseCase(std::string(kGoodString), "plain.yaml");
+  EXPECT_FALSE(plain.input.string.components[0].yield_strength);
+  EXPECT_EQ(plain.input.string.components[0].pipe_class, model::PipeClass::New);
+  EXPECT_DOUBLE_EQ(plain.limits.design_factor, 1.25);
+}
+
 struct RejectedCase {
   const char* label;
   std::string text;
@@ -405,6 +430,19 @@ INSTANTIATE_TEST_SUITE_P(
                      "materials.steel.E", "between 0.1 and 1500 GPa (steel's is 207 GPa, 30e6 psi), got 3e+07 Pa"},
         RejectedCase{"modulus in Pa read as psi", "units: field\nmaterials:\n  steel: {E: 207e9, nu: 0.3, density: 65.5}\n", 3,
                      "materials.steel.E", "got 1.427e+15 Pa (2.07e+11 psi)"},
+        // Ratings (issue 37): a yield outside 40-200 ksi, an unknown grade or class, a bad design factor.
+        RejectedCase{"a yield of 250 ksi", "units: field\nstring:\n  - {type: pipe, od: 5, id: 4.276, length: 30, yield: 250 ksi}\n",
+                     3, "string[0].yield", "between 40 and 200 ksi"},
+        RejectedCase{"a yield in psi read as Pa", "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, yield: 105000}\n",
+                     2, "string[0].yield", "got 0.01523 ksi"},
+        RejectedCase{"an unknown grade", "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, grade: P-110}\n", 2,
+                     "string[0].grade", "unknown grade 'P-110'; expected one of: E-75, X-95, G-105, S-135"},
+        RejectedCase{"grade and yield", "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, grade: G-105, yield: 9e8}\n",
+                     2, "string[0].yield", "either 'grade' or a custom 'yield'"},
+        RejectedCase{"an unknown class", "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, class: worn}\n", 2,
+                     "string[0].class", "expected 'new' or 'premium'"},
+        RejectedCase{"a design factor below 1", std::string(kGoodString) + "limits: {design_factor: 0.8}\n", 3,
+                     "limits.design_factor", "between 1 and 3"},
         RejectedCase{"density in ppg read as kg/m3", "materials:\n  steel: {E: 207e9, nu: 0.3, density: 65.5}\n", 2,
                      "materials.steel.density", "between 500 and 25000 kg/m3"},
         RejectedCase{"a toolface beyond 360 deg",

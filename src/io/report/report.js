@@ -339,7 +339,30 @@
       span.append(value(peak.von_mises_stress, U.stress, 'static.nodes.max_von_mises_stress'), ` at ${where(peak.s, peak.md)}`);
       rows.push(['peak von Mises stress', span]);
     }
+    // The string's limits (results.json static.limits): each limit's largest utilisation and the closest.
+    const lim = st.limits;
+    const beyond = [];
+    if (lim && lim.summary) {
+      const names = {yield: 'yield (von Mises / (yield / design factor))', makeup_torque: 'make-up torque', helical_buckling: 'helical buckling (compression / F_hel)'};
+      for (const key of ['yield', 'makeup_torque', 'helical_buckling']) {
+        const u = lim.summary[key];
+        rows.push([`utilisation: ${names[key]}`, u ? `${num(u.utilisation, 3)} at ${where(u.s, u.md)} (${u.component})` : 'no limit given']);
+        if (u && u.utilisation >= 1) beyond.push(`${names[key]} ${num(u.utilisation, 3)} at ${where(u.s, u.md)}`);
+      }
+      const closest = lim.summary.closest;
+      if (closest) rows.push(['closest limit', `${closest.limit.replace('_', ' ')}: ${num(closest.utilisation, 3)} (design factor ${num(lim.design_factor, 3)})`]);
+      if (lim.buckled_zones && lim.buckled_zones.length) {
+        rows.push(['buckled', lim.buckled_zones.map((z) => `${z.kind} MD ${num(z.md_from, 6)}–${num(z.md_to, 6)} ${U.length}`).join('; ')]);
+      }
+      for (const note of lim.notes || []) rows.push(['limits note', note]);
+    }
     facts(s, rows);
+    if (beyond.length) {
+      const list = el('ul', {class: 'warnings'});
+      for (const b of beyond) list.appendChild(el('li', {text: b}));
+      s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: 'Beyond a limit (utilisation above 1)'}), list]));
+    }
+    const ln = lim && lim.nodes ? lim.nodes : null;
     // The whole string, and the BHA alone (up to the first drill pipe or HWDP) when pipe is above it.
     const pipes = (D.components || []).filter((c) => c.type === 'pipe' || c.type === 'hwdp');
     const bhaTop = pipes.length ? Math.min(...pipes.map((c) => c.from)) : undefined;
@@ -371,15 +394,13 @@
       plot(grid, {title: 'Lateral displacement', x: xTitle, y: `displacement (${U.diameter})`,
         series: [{label: 'lateral', x: x, y: column(nodes, 'lateral_offset')}]});
     }
-    const limit = D.stress_limit;
-    plot(grid, {
-      title: 'Bending and von Mises stress', x: xTitle, y: `stress (${U.stress})`,
-      series: [
-        {label: 'von Mises', x: x, y: column(nodes, 'von_mises_stress'), color: COLORS[1], width: 2},
-        {label: 'bending', x: x, y: column(nodes, 'bending_stress'), color: COLORS[0]},
-      ],
-      hLines: limit ? [{y: limit.value, label: `${limit.label}: ${num(limit.value, 3)} ${U.stress}`}] : [],
-    });
+    const stressSeries = [
+      {label: 'von Mises', x: x, y: column(nodes, 'von_mises_stress'), color: COLORS[1], width: 2},
+      {label: 'bending', x: x, y: column(nodes, 'bending_stress'), color: COLORS[0]},
+    ];
+    // The limit: each component's yield / design factor (E-75's where no grade is given).
+    if (ln) stressSeries.push({label: `yield / design factor ${num(lim.design_factor, 3)}`, x: x, y: ln.allowable_stress.map((v) => (v === null ? NaN : v)), color: '#d62728', dash: [6, 3], width: 1.5});
+    plot(grid, {title: 'Bending and von Mises stress, and the allowable stress', x: xTitle, y: `stress (${U.stress})`, series: stressSeries});
     const axial = column(nodes, 'axial_force');
     const neutral = [];
     for (let i = 1; i < axial.length; ++i) {
@@ -388,13 +409,21 @@
         neutral.push({x: x[i - 1] + f * (x[i] - x[i - 1]), label: 'neutral point', color: '#2ca02c'});
       }
     }
+    const axialSeries = [{label: 'axial force', x: x, y: axial, color: COLORS[0], width: 2}];
+    // Compression beyond −F_sin buckles the string sinusoidally, beyond −F_hel helically (in a well).
+    if (ln && ln.helical_load.some((v) => v !== null)) {
+      axialSeries.push({label: '−F_sin (Dawson–Paslay)', x: x, y: ln.sinusoidal_load.map((v) => (v === null ? NaN : -v)), color: '#ff7f0e', dash: [6, 3], width: 1.2});
+      axialSeries.push({label: '−F_hel (Chen)', x: x, y: ln.helical_load.map((v) => (v === null ? NaN : -v)), color: '#d62728', dash: [2, 3], width: 1.2});
+    }
     plot(grid, {
-      title: 'Axial force (tension positive)', x: xTitle, y: `axial force (${U.force})`,
-      series: [{label: 'axial force', x: x, y: axial, color: COLORS[0], width: 2}],
-      hLines: [{y: 0, label: '', color: '#999'}], vLines: neutral,
+      title: 'Axial force (tension positive) and the buckling loads', x: xTitle, y: `axial force (${U.force})`,
+      series: axialSeries, hLines: [{y: 0, label: '', color: '#999'}], vLines: neutral,
     });
-    plot(grid, {title: 'Torque', x: xTitle, y: `torque (${U.moment})`,
-      series: [{label: 'torque', x: x, y: column(nodes, 'torque'), color: COLORS[4], width: 2}]});
+    const torqueSeries = [{label: 'torque', x: x, y: column(nodes, 'torque'), color: COLORS[4], width: 2}];
+    if (ln && ln.makeup_torque.some((v) => v !== null)) {
+      torqueSeries.push({label: 'make-up torque', x: x, y: ln.makeup_torque.map((v) => (v === null ? NaN : v)), color: '#d62728', dash: [6, 3], width: 1.5});
+    }
+    plot(grid, {title: 'Torque', x: xTitle, y: `torque (${U.moment})`, series: torqueSeries});
     if (neutral.length) {
       s.appendChild(el('p', {text: `Neutral point (axial force zero) at ${neutral.map((n) => `${inHole ? 'MD ' : ''}${num(n.x, 6)} ${U.length}`).join(', ')}.`}));
     }
@@ -788,6 +817,20 @@
         torque.push({label: `soft on bottom, ${m}`, x: column(soft, 'on_bottom_torque'), y: sd, color: color, dash: [7, 4], width: 0.8});
       }
     });
+    // The limits (roadmap.json points' hook_load_limit, helical_slack_off, torque_limit): thin lines.
+    r.friction.forEach((mu, i) => {
+      const rows = r.points.filter((p) => p.friction === mu);
+      const depth = column(rows, 'bit_md'), color = COLORS[i % COLORS.length], m = `μ ${num(mu, 3)}`;
+      if (rows.some((p) => p.hook_load_limit !== null && p.hook_load_limit !== undefined)) {
+        hook.push({label: `hook load at yield, ${m}`, x: column(rows, 'hook_load_limit'), y: depth, color: color, dash: [12, 3, 2, 3], width: 1});
+      }
+      if (rows.some((p) => p.helical_slack_off !== null && p.helical_slack_off !== undefined)) {
+        hook.push({label: `slack-off at helical buckling, ${m}`, x: column(rows, 'helical_slack_off'), y: depth, color: color, dash: [1, 3], width: 1.5});
+      }
+    });
+    if (r.points.some((p) => p.torque_limit !== null && p.torque_limit !== undefined)) {
+      torque.push({label: 'make-up torque (weakest)', x: column(r.points, 'torque_limit'), y: column(r.points, 'bit_md'), color: '#d62728', dash: [12, 3, 2, 3], width: 1});
+    }
     // The rig's readings (`--readings`): markers by activity over the curves, and through the drilling
     // readings the on-bottom hook load each friction factor gives at their own WOB.
     if (r.readings) readingsSeries(r.readings, hook, torque, r.friction);

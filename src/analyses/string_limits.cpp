@@ -1,0 +1,129 @@
+#include "analyses/string_limits.hpp"
+
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "model/string_limits.hpp"
+#include "well/hole.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+// The steels a string is made of (built-in materials): of no grade, the lowest grade's yield.
+bool IsSteel(const std::string& material) { return material == "steel" || material == "nonmag"; }
+
+void Consider(LimitUtilisation& largest, const char* limit, double utilisation, const NodeLimits& node) {
+  if (!std::isfinite(utilisation)) return;
+  if (!std::isfinite(largest.utilisation) || utilisation > largest.utilisation) {
+    largest = {limit, utilisation, node.s, node.md, node.component};
+  }
+}
+
+// The stretches of stations at or beyond `state` (sorted by MD, shallower end first).
+void AddZones(const std::vector<NodeLimits>& nodes, BucklingState state, std::vector<BuckledZone>& zones) {
+  bool open = false;
+  BuckledZone zone;
+  zone.state = state;
+  for (const NodeLimits& node : nodes) {
+    const bool in = node.buckling >= state;
+    if (in && !open) zone.md_from = zone.md_to = node.md, open = true;
+    if (in) zone.md_from = std::min(zone.md_from, node.md), zone.md_to = std::max(zone.md_to, node.md);
+    if (!in && open) zones.push_back(zone), open = false;
+  }
+  if (open) zones.push_back(zone);
+}
+
+}  // namespace
+
+const char* BucklingStateName(BucklingState state) {
+  switch (state) {
+    case BucklingState::NotScreened: return "not screened";
+    case BucklingState::None: return "none";
+    case BucklingState::Sinusoidal: return "sinusoidal";
+    case BucklingState::Helical: return "helical";
+  }
+  return "none";
+}
+
+double SinusoidalLoadAt(const model::ModelInput& input, double s, double md) {
+  if (!input.trajectory || input.hole.empty()) return kNoLimit;
+  const model::Component& component = model::ComponentAt(input.string, s);
+  // r of the component as a whole: the pipe lies on its tool joints (a stabilizer on its blades) all
+  // along a buckle, which spans many joints; not the clearance at the station itself, which would
+  // alternate between the joint's and the body's along every joint.
+  const double clearance =
+      0.5 * (well::HoleProfile(input.hole).Diameter(input.bit_md - s) - model::ContactDiameter(component));
+  const fe::HollowSection body{component.outer_diameter, component.inner_diameter};
+  const double stiffness = input.materials.at(component.material).youngs_modulus * body.second_moment();
+  return model::SinusoidalBucklingLoad(stiffness, model::BuoyedWeightPerLength(component, input),
+                                       input.trajectory->Inclination(md), clearance);
+}
+
+StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,
+                                 double design_factor) {
+  StringLimits limits;
+  limits.design_factor = design_factor;
+  const auto& components = input.string.components;
+  std::set<int> assumed;  // components whose yield is taken as E-75's
+  bool any_torque_limit = false;
+  const double default_yield = model::FindSteelGrade(model::kDefaultGrade)->yield;
+  for (const StaticNodeResult& result : nodes) {
+    NodeLimits node;
+    node.s = result.s;
+    node.md = result.has_wall ? result.md : (input.trajectory ? input.bit_md - result.s : result.s);
+    const model::Component& component = model::ComponentAt(input.string, result.s);
+    node.component = static_cast<int>(&component - components.data());
+    const fe::HollowSection rated = model::RatedSection(component);
+    node.von_mises_stress = model::VonMisesStress(rated, result.axial_force, result.torque, result.bending_moment);
+    if (component.type != model::ComponentType::Bit) {
+      if (component.yield_strength) {
+        node.yield = *component.yield_strength;
+      } else if (IsSteel(component.material)) {
+        node.yield = default_yield;
+        assumed.insert(node.component);
+      }
+      node.allowable_stress = node.yield / design_factor;
+      node.stress_utilisation = node.von_mises_stress / node.allowable_stress;
+    }
+    if (component.makeup_torque) {
+      any_torque_limit = true;
+      node.makeup_torque = *component.makeup_torque;
+      node.torque_utilisation = std::abs(result.torque) / node.makeup_torque;
+    }
+    node.compression = -result.axial_force;
+    node.sinusoidal_load = SinusoidalLoadAt(input, node.s, node.md);
+    if (std::isfinite(node.sinusoidal_load)) {
+      node.helical_load = model::HelicalBucklingLoad(node.sinusoidal_load);
+      if (node.helical_load > 0.0) {
+        node.buckling_utilisation = std::max(node.compression, 0.0) / node.helical_load;
+        node.buckling = node.compression >= node.helical_load      ? BucklingState::Helical
+                        : node.compression >= node.sinusoidal_load ? BucklingState::Sinusoidal
+                                                                   : BucklingState::None;
+      }
+    }
+    Consider(limits.yield, "yield", node.stress_utilisation, node);
+    Consider(limits.makeup_torque, "makeup_torque", node.torque_utilisation, node);
+    Consider(limits.helical_buckling, "helical_buckling", node.buckling_utilisation, node);
+    limits.nodes.push_back(node);
+  }
+  AddZones(limits.nodes, BucklingState::Sinusoidal, limits.zones);
+  AddZones(limits.nodes, BucklingState::Helical, limits.zones);
+  for (const LimitUtilisation* each : {&limits.yield, &limits.makeup_torque, &limits.helical_buckling}) {
+    if (std::isfinite(each->utilisation) &&
+        (!std::isfinite(limits.closest.utilisation) || each->utilisation > limits.closest.utilisation)) {
+      limits.closest = *each;
+    }
+  }
+  for (const int index : assumed) {
+    limits.notes.push_back(fmt::format("'{}': no grade or yield given, its utilisation taken against {} ({:.0f} ksi), "
+                                       "the lowest grade",
+                                       components[index].name, model::kDefaultGrade,
+                                       default_yield / model::kPascalPerKsi));
+  }
+  if (!any_torque_limit) limits.notes.emplace_back("no make-up torque given: no torque limit");
+  return limits;
+}
+
+}  // namespace drillflex::analyses

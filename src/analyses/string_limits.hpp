@@ -1,0 +1,78 @@
+// The string's limits along a static answer (issue 37): at every station the von Mises stress on the
+// component's rated section against its yield / the design factor, the torque against the
+// connections' make-up torque, and the compression against Dawson & Paslay's sinusoidal and Chen, Lin &
+// Cheatham's helical buckling loads (model/string_limits.hpp), the buckled zones as MD ranges, and
+// which limit is closest and where. Utilisation: load / limit (≥ 1: at or beyond the limit).
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "analyses/static_analysis.hpp"
+#include "model/builder.hpp"
+
+namespace drillflex::analyses {
+
+enum class BucklingState { NotScreened, None, Sinusoidal, Helical };
+const char* BucklingStateName(BucklingState state);  // "not screened", "none", "sinusoidal", "helical"
+
+inline constexpr double kNoLimit = std::numeric_limits<double>::quiet_NaN();
+
+// One station (analyses::StaticNodeResult). NaN where a limit does not apply.
+struct NodeLimits {
+  double s = 0.0;                          // m from the bit
+  double md = 0.0;                         // m (s without a well)
+  int component = 0;                       // index in the string (model::ComponentAt)
+  double yield = kNoLimit;                 // minimum yield strength, Pa (E-75's for steel of no grade)
+  double allowable_stress = kNoLimit;      // yield / design factor, Pa
+  double von_mises_stress = 0.0;           // on the rated (class) section, Pa
+  double stress_utilisation = kNoLimit;    // σ_vm / allowable
+  double makeup_torque = kNoLimit;         // N·m, as given
+  double torque_utilisation = kNoLimit;    // |T| / make-up torque
+  double compression = 0.0;                // N, −axial force (< 0: tension)
+  double sinusoidal_load = kNoLimit;       // Dawson–Paslay's F_s, N (in a well)
+  double helical_load = kNoLimit;          // Chen's F_h, N
+  double buckling_utilisation = kNoLimit;  // compression / F_h (F_h > 0)
+  BucklingState buckling = BucklingState::NotScreened;
+};
+
+// A stretch of stations beyond a buckling load, MD from (the shallower end) to.
+struct BuckledZone {
+  BucklingState state = BucklingState::Sinusoidal;  // sinusoidal: beyond F_s; helical: beyond F_h
+  double md_from = 0.0, md_to = 0.0;                 // m
+};
+
+// The largest utilisation of one limit and where; limit "" and NaN when none applies.
+struct LimitUtilisation {
+  std::string limit;  // "yield", "makeup_torque", "helical_buckling"
+  double utilisation = kNoLimit;
+  double s = 0.0, md = 0.0;  // m
+  int component = -1;
+};
+
+struct StringLimits {
+  double design_factor = 0.0;
+  std::vector<NodeLimits> nodes;
+  std::vector<BuckledZone> zones;  // sinusoidal zones (they include the helical ones), then helical
+  LimitUtilisation yield, makeup_torque, helical_buckling;
+  LimitUtilisation closest;        // the largest of the three
+  // The assumptions the answer rests on, in words (a yield taken as E-75's, no make-up torque given).
+  std::vector<std::string> notes;
+};
+
+// Dawson–Paslay's sinusoidal load at a station of `input`'s string in its well (s from the bit, md
+// its MD), N, as ComputeStringLimits takes it (below); NaN without a trajectory or a hole there.
+double SinusoidalLoadAt(const model::ModelInput& input, double s, double md);
+
+// The limits along `nodes` (a static's stations, from the bit upward) of `input`'s string: the rated
+// section and yield of the component at each station (model::ComponentAt; its grade or yield, else
+// E-75's for steel and nonmag, none for other materials; not the bit), the make-up torque where the
+// component gives one, and in a well the buckling loads with w the component's buoyed weight per
+// length (model::BuoyedWeightPerLength), E I its body's, θ the hole's inclination at the station and r
+// the radial clearance of the component's contact diameter (model::ContactDiameter: its tool joints',
+// its blades', else its body's) in the hole there. A vertical station (F_s = 0) is not screened.
+StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,
+                                 double design_factor);
+
+}  // namespace drillflex::analyses

@@ -1,0 +1,75 @@
+// The string's limits at a roadmap point (pipeline/roadmap.hpp RoadmapPointLimits): the hook load at
+// the top pipe's yield, the weakest make-up torque, and the slack-off hook load at helical buckling.
+#include <algorithm>
+#include <cmath>
+
+#include "analyses/soft_string.hpp"
+#include "analyses/string_limits.hpp"
+#include "model/string_limits.hpp"
+#include "pipeline/roadmap.hpp"
+
+namespace drillflex::pipeline {
+namespace {
+
+// The largest compression / F_h over the soft string's stations slacking off with `weight_on_bit` set
+// down (analyses::StringLimits's buckling screen on the soft string's axial force), and its hook load.
+struct HelicalScreen {
+  double ratio = 0.0;
+  double hook_load = 0.0;
+};
+HelicalScreen ScreenHelical(const model::ModelInput& input, const analyses::SoftStringOperation& base,
+                            double weight_on_bit) {
+  analyses::SoftStringOperation operation = base;
+  operation.weight_on_bit = weight_on_bit;
+  const analyses::SoftStringResult soft = analyses::ComputeSoftString(input, operation);
+  HelicalScreen screen{0.0, soft.hook_load};
+  for (const analyses::SoftStringStation& station : soft.stations) {
+    const double compression = -station.axial_force;
+    if (compression <= 0.0) continue;
+    const double helical = model::HelicalBucklingLoad(analyses::SinusoidalLoadAt(input, station.s, station.md));
+    if (helical > 0.0) screen.ratio = std::max(screen.ratio, compression / helical);
+  }
+  return screen;
+}
+
+}  // namespace
+
+RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSettings& settings,
+                                 const RoadmapPoint& point) {
+  RoadmapLimits limits;
+  const io::Case at = CaseAtDepth(c, point.bit_md);
+  const model::ModelInput& input = at.input;
+  // The top pipe at the surface (the case's top component continued up): its tension capacity under the
+  // point's off-bottom torque, by von Mises on its rated section.
+  const model::Component& top = input.string.components.back();
+  const double yield = top.yield_strength.value_or(model::FindSteelGrade(model::kDefaultGrade)->yield);
+  const double torque = std::isfinite(point.off_bottom_torque) ? point.off_bottom_torque : 0.0;
+  limits.hook_load_limit = model::TensionCapacity(model::RatedSection(top), yield / c.limits.design_factor, torque);
+  for (const model::Component& component : input.string.components) {
+    if (component.makeup_torque) limits.torque_limit = std::isfinite(limits.torque_limit)
+                                                           ? std::min(limits.torque_limit, *component.makeup_torque)
+                                                           : *component.makeup_torque;
+  }
+  // Slacking off with weight set down: the WOB at which the soft string first reaches F_h anywhere
+  // (bisection; the compression grows with the WOB), and the hook load there.
+  analyses::SoftStringOperation operation;
+  operation.motion = analyses::SoftStringMotion::SlackOff;
+  operation.axial_friction = operation.tangential_friction = point.friction;
+  if (settings.cased_friction) operation.cased_friction = model::WallFriction{*settings.cased_friction, *settings.cased_friction};
+  operation.max_element_length = model::kDefaultJointSpacing;  // as the soft roadmap's runs
+  const HelicalScreen off_bottom = ScreenHelical(input, operation, 0.0);
+  if (off_bottom.ratio >= 1.0) {
+    limits.helical_slack_off = off_bottom.hook_load;
+    return limits;
+  }
+  double low = 0.0, high = model::WeightOnBitFromHookLoad(input, 0.0);  // all the string's weight on the bit
+  if (!(high > 0.0) || ScreenHelical(input, operation, high).ratio < 1.0) return limits;
+  for (int i = 0; i < 40 && high - low > 1e-6 * high; ++i) {
+    const double middle = 0.5 * (low + high);
+    (ScreenHelical(input, operation, middle).ratio >= 1.0 ? high : low) = middle;
+  }
+  limits.helical_slack_off = ScreenHelical(input, operation, high).hook_load;
+  return limits;
+}
+
+}  // namespace drillflex::pipeline

@@ -1,0 +1,91 @@
+// The string's limits along a static (analyses/string_limits.hpp) on a case's string in a straight
+// hole at 30°, against hand computations: Dawson & Paslay's load with r of the tool joints wherever
+// the station lies on a joint, and the stations, zones and utilisations of a given axial force.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "analyses/string_limits.hpp"
+#include "io/case.hpp"
+
+namespace drillflex::analyses {
+namespace {
+
+// Three 9 m collars, then 9 m joints of 5 in pipe (0.127 × 0.1086 m) with 6-5/8 in tool joints
+// (0.1683 × 0.0826 m, 0.5 m a joint) in an 8-1/2 in (0.2159 m) hole at 30°, 1200 kg/m³ mud, g 9.81.
+io::Case Case() {
+  return io::ParseCase(R"(name: limits
+units: SI
+gravity: 9.81
+well:
+  survey: [[0, 30, 0], [400, 30, 0]]
+  hole: [{diameter: 0.2159}]
+  bit_md: 297
+fluid: {density: 1200}
+string:
+  - {type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}
+  - {type: pipe, od: 0.127, id: 0.1086, length: 9, count: 5, joint_od: 0.1683, joint_id: 0.0826, joint_length: 0.5}
+model: {body_length: 9, elements_per_body: 4, modes_per_body: 4}
+operation: {wob: 40 kN, torque_on_bit: 2 kN*m, rpm: 60}
+analyses:
+  static: {}
+)",
+                       "limits.yaml");
+}
+
+// By hand (Python): w = g (ρ_s − ρ_m) (A_body + 0.5/9 (A_joint − A_body)) = 270.97859 N/m,
+// E I = 2.1e11 π/64 (0.127⁴ − 0.1086⁴) = 1 247 796.5 N·m², r = (0.2159 − 0.1683)/2 = 0.0238 m:
+// F_s = 2 √(E I w sin 30° / r) = 168 564.41 N, F_h = √2 F_s = 238 386.08 N. (With the body's
+// r = 0.04445 m it would be 123 344.1 N.)
+constexpr double kSinusoidal = 168564.41;
+constexpr double kHelical = 238386.08;
+
+TEST(StringLimitsScreen, DawsonPaslayWithTheToolJointsClearanceAlongTheWholeJoint) {
+  const io::Case c = Case();
+  // s 31.5 m: mid-body of the first joint; s 36 m: on its connection (a tool joint).
+  for (const double s : {31.5, 36.0, 60.0}) {
+    EXPECT_NEAR(SinusoidalLoadAt(c.input, s, 297.0 - s), kSinusoidal, 0.5) << "s " << s;
+  }
+}
+
+TEST(StringLimitsScreen, ZonesAndUtilisationsOfAGivenAxialForce) {
+  const io::Case c = Case();
+  // Stations every metre from s 28 to 40 m (all pipe): compression 0.5 F_s, then 1.2 F_s (s 31-33,
+  // sinusoidal), 1.6 F_s (s 34-35, beyond √2 F_s: helical), then 0.2 F_s.
+  std::vector<StaticNodeResult> nodes;
+  for (int s = 28; s <= 40; ++s) {
+    StaticNodeResult node;
+    node.s = s;
+    node.has_wall = true;
+    node.md = 297.0 - s;
+    const double ratio = s <= 30 ? 0.5 : s <= 33 ? 1.2 : s <= 35 ? 1.6 : 0.2;
+    node.axial_force = -ratio * kSinusoidal;
+    nodes.push_back(node);
+  }
+  const StringLimits limits = ComputeStringLimits(c.input, nodes, 1.25);
+  ASSERT_EQ(limits.nodes.size(), nodes.size());
+  EXPECT_EQ(limits.nodes[0].buckling, BucklingState::None);
+  EXPECT_EQ(limits.nodes[3].buckling, BucklingState::Sinusoidal);
+  EXPECT_EQ(limits.nodes[6].buckling, BucklingState::Helical);
+  EXPECT_NEAR(limits.nodes[6].helical_load, kHelical, 0.5);
+  ASSERT_EQ(limits.zones.size(), 2u);
+  EXPECT_EQ(limits.zones[0].state, BucklingState::Sinusoidal);
+  EXPECT_DOUBLE_EQ(limits.zones[0].md_from, 297.0 - 35.0);
+  EXPECT_DOUBLE_EQ(limits.zones[0].md_to, 297.0 - 31.0);
+  EXPECT_EQ(limits.zones[1].state, BucklingState::Helical);
+  EXPECT_DOUBLE_EQ(limits.zones[1].md_from, 297.0 - 35.0);
+  EXPECT_DOUBLE_EQ(limits.zones[1].md_to, 297.0 - 34.0);
+  // Helical: 1.6 F_s / (√2 F_s) = 1.131371 at s 34 (the first of the two).
+  EXPECT_NEAR(limits.helical_buckling.utilisation, 1.6 / std::sqrt(2.0), 1e-6);
+  EXPECT_DOUBLE_EQ(limits.helical_buckling.s, 34.0);
+  // Yield: E-75 (no grade given), 75 ksi / 1.25 = 413.685 MPa; |N| / A with A = 3.4047325e-3 m²:
+  // 1.6 × 168 564.41 / 3.4047325e-3 / 413.685438e6 = 0.191484.
+  EXPECT_NEAR(limits.yield.utilisation, 1.6 * kSinusoidal / 3.4047325e-3 / 413.685438e6, 1e-5);
+  EXPECT_EQ(limits.closest.limit, "helical_buckling");
+  EXPECT_FALSE(std::isfinite(limits.makeup_torque.utilisation));
+  EXPECT_EQ(limits.notes.size(), 2u);  // the pipe rated as E-75; no make-up torque
+}
+
+}  // namespace
+}  // namespace drillflex::analyses
