@@ -47,8 +47,8 @@ const char* BucklingStateName(BucklingState state) {
   return "none";
 }
 
-double SinusoidalLoadAt(const model::ModelInput& input, double s, double md) {
-  if (!input.trajectory || input.hole.empty()) return kNoLimit;
+BucklingLoads BucklingLoadsAt(const model::ModelInput& input, double s, double md) {
+  if (!input.trajectory || input.hole.empty()) return {kNoLimit, kNoLimit};
   const model::Component& component = model::ComponentAt(input.string, s);
   // r of the component as a whole: the pipe lies on its tool joints (a stabilizer on its blades) all
   // along a buckle, which spans many joints; not the clearance at the station itself, which would
@@ -57,8 +57,10 @@ double SinusoidalLoadAt(const model::ModelInput& input, double s, double md) {
       0.5 * (well::HoleProfile(input.hole).Diameter(input.bit_md - s) - model::ContactDiameter(component));
   const fe::HollowSection body{component.outer_diameter, component.inner_diameter};
   const double stiffness = input.materials.at(component.material).youngs_modulus * body.second_moment();
-  return model::SinusoidalBucklingLoad(stiffness, model::BuoyedWeightPerLength(component, input),
-                                       input.trajectory->Inclination(md), clearance);
+  const double weight = std::abs(model::BuoyedWeightPerLength(component, input));
+  const double inclined = model::SinusoidalBucklingLoad(stiffness, weight, input.trajectory->Inclination(md), clearance);
+  return {std::max(inclined, model::VerticalSinusoidalBucklingLoad(stiffness, weight)),
+          std::max(model::HelicalBucklingLoad(inclined), model::VerticalHelicalBucklingLoad(stiffness, weight))};
 }
 
 StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,
@@ -93,9 +95,10 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
       node.torque_utilisation = std::abs(result.torque) / node.makeup_torque;
     }
     node.compression = -result.axial_force;
-    node.sinusoidal_load = SinusoidalLoadAt(input, node.s, node.md);
+    const BucklingLoads buckling = BucklingLoadsAt(input, node.s, node.md);
+    node.sinusoidal_load = buckling.sinusoidal;
     if (std::isfinite(node.sinusoidal_load)) {
-      node.helical_load = model::HelicalBucklingLoad(node.sinusoidal_load);
+      node.helical_load = buckling.helical;
       if (node.helical_load > 0.0) {
         node.buckling_utilisation = std::max(node.compression, 0.0) / node.helical_load;
         node.buckling = node.compression >= node.helical_load      ? BucklingState::Helical

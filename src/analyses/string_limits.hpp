@@ -61,9 +61,16 @@ struct StringLimits {
   std::vector<std::string> notes;
 };
 
-// Dawson–Paslay's sinusoidal load at a station of `input`'s string in its well (s from the bit, md
-// its MD), N, as ComputeStringLimits takes it (below); NaN without a trajectory or a hole there.
-double SinusoidalLoadAt(const model::ModelInput& input, double s, double md);
+// The sinusoidal and helical buckling loads at a station of `input`'s string in its well (s from the
+// bit, md its MD), N, as ComputeStringLimits takes them (below): the larger of the inclined hole's
+// (Dawson–Paslay's F_s, Chen's √2 F_s) and the vertical hole's (Lubinski's, Wu & Juvkam-Wold's:
+// model/string_limits.hpp), so that near vertical (below a kick-off) the load is the string's own, not
+// zero. NaN without a trajectory or a hole there.
+struct BucklingLoads {
+  double sinusoidal = 0.0;
+  double helical = 0.0;
+};
+BucklingLoads BucklingLoadsAt(const model::ModelInput& input, double s, double md);
 
 // The limits along `nodes` (a static's stations, from the bit upward) of `input`'s string: the rated
 // section and yield of the component at each station (model::ComponentAt; its grade or yield, else

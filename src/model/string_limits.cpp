@@ -68,4 +68,12 @@ double SinusoidalBucklingLoad(double bending_stiffness, double weight_per_length
 
 double HelicalBucklingLoad(double sinusoidal_load) { return std::sqrt(2.0) * sinusoidal_load; }
 
+double VerticalSinusoidalBucklingLoad(double bending_stiffness, double weight_per_length) {
+  return 1.94 * std::cbrt(bending_stiffness * weight_per_length * weight_per_length);
+}
+
+double VerticalHelicalBucklingLoad(double bending_stiffness, double weight_per_length) {
+  return 5.55 * std::cbrt(bending_stiffness * weight_per_length * weight_per_length);
+}
+
 }  // namespace drillflex::model

@@ -68,5 +68,12 @@ double SinusoidalBucklingLoad(double bending_stiffness, double weight_per_length
 // screen (analyses/buckling_analysis.cpp, buckling.dawson_paslay.helical_load) reports Mitchell's
 // loading limit 2√2 F_s (docs/validation.md V11).
 double HelicalBucklingLoad(double sinusoidal_load);
+// The vertical hole's loads, where the weight across the hole (w sin θ) and Dawson–Paslay's load with
+// it vanish and the string's own weight holds it straight: Lubinski's (1950, "A study of the buckling of
+// rotary drilling strings", API Drilling and Production Practice) sinusoidal 1.94 (E I w²)^(1/3) and Wu
+// & Juvkam-Wold's (1993, "Study of helical buckling of pipes in horizontal wells", SPE 25503) helical
+// 5.55 (E I w²)^(1/3), N. A station's load is the larger of these and the inclined hole's.
+double VerticalSinusoidalBucklingLoad(double bending_stiffness, double weight_per_length);
+double VerticalHelicalBucklingLoad(double bending_stiffness, double weight_per_length);
 
 }  // namespace drillflex::model

@@ -26,7 +26,7 @@ HelicalScreen ScreenHelical(const model::ModelInput& input, const analyses::Soft
   for (const analyses::SoftStringStation& station : soft.stations) {
     const double compression = -station.axial_force;
     if (compression <= 0.0) continue;
-    const double helical = model::HelicalBucklingLoad(analyses::SinusoidalLoadAt(input, station.s, station.md));
+    const double helical = analyses::BucklingLoadsAt(input, station.s, station.md).helical;
     if (helical > 0.0) screen.ratio = std::max(screen.ratio, compression / helical);
   }
   return screen;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "analyses/string_limits.hpp"
 #include "io/case.hpp"
 
@@ -14,23 +16,24 @@ namespace {
 
 // Three 9 m collars, then 9 m joints of 5 in pipe (0.127 × 0.1086 m) with 6-5/8 in tool joints
 // (0.1683 × 0.0826 m, 0.5 m a joint) in an 8-1/2 in (0.2159 m) hole at 30°, 1200 kg/m³ mud, g 9.81.
-io::Case Case() {
-  return io::ParseCase(R"(name: limits
+io::Case Case(int inclination_deg = 30) {
+  return io::ParseCase(fmt::format(R"(name: limits
 units: SI
 gravity: 9.81
 well:
-  survey: [[0, 30, 0], [400, 30, 0]]
-  hole: [{diameter: 0.2159}]
+  survey: [[0, {0}, 0], [400, {0}, 0]]
+  hole: [{{diameter: 0.2159}}]
   bit_md: 297
-fluid: {density: 1200}
+fluid: {{density: 1200}}
 string:
-  - {type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}
-  - {type: pipe, od: 0.127, id: 0.1086, length: 9, count: 5, joint_od: 0.1683, joint_id: 0.0826, joint_length: 0.5}
-model: {body_length: 9, elements_per_body: 4, modes_per_body: 4}
-operation: {wob: 40 kN, torque_on_bit: 2 kN*m, rpm: 60}
+  - {{type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}}
+  - {{type: pipe, od: 0.127, id: 0.1086, length: 9, count: 5, joint_od: 0.1683, joint_id: 0.0826, joint_length: 0.5}}
+model: {{body_length: 9, elements_per_body: 4, modes_per_body: 4}}
+operation: {{wob: 40 kN, torque_on_bit: 2 kN*m, rpm: 60}}
 analyses:
-  static: {}
+  static: {{}}
 )",
+                                   inclination_deg),
                        "limits.yaml");
 }
 
@@ -45,8 +48,19 @@ TEST(StringLimitsScreen, DawsonPaslayWithTheToolJointsClearanceAlongTheWholeJoin
   const io::Case c = Case();
   // s 31.5 m: mid-body of the first joint; s 36 m: on its connection (a tool joint).
   for (const double s : {31.5, 36.0, 60.0}) {
-    EXPECT_NEAR(SinusoidalLoadAt(c.input, s, 297.0 - s), kSinusoidal, 0.5) << "s " << s;
+    EXPECT_NEAR(BucklingLoadsAt(c.input, s, 297.0 - s).sinusoidal, kSinusoidal, 0.5) << "s " << s;
+    EXPECT_NEAR(BucklingLoadsAt(c.input, s, 297.0 - s).helical, kHelical, 0.5) << "s " << s;
   }
+}
+
+// In a vertical hole Dawson–Paslay's load is zero (no weight across the hole); the string's own weight
+// holds it: Lubinski's 1.94 (E I w²)^(1/3) and Wu & Juvkam-Wold's 5.55 (E I w²)^(1/3). By hand (Python):
+// (E I w²)^(1/3) = (1 247 796.5 × 270.97859²)^(1/3) = 4508.2145 N: 8745.94 N and 25 020.59 N.
+TEST(StringLimitsScreen, AVerticalHoleTakesLubinskisLoadsNotZero) {
+  const io::Case c = Case(0);
+  const BucklingLoads loads = BucklingLoadsAt(c.input, 60.0, 237.0);
+  EXPECT_NEAR(loads.sinusoidal, 8745.94, 0.05);
+  EXPECT_NEAR(loads.helical, 25020.59, 0.05);
 }
 
 TEST(StringLimitsScreen, ZonesAndUtilisationsOfAGivenAxialForce) {
