@@ -187,25 +187,32 @@ json UtilisationJson(const Case& c, const analyses::LimitUtilisation& limit) {
 }
 
 // The string's limits along the static (analyses/string_limits.hpp): per-station arrays, the buckled
-// zones, each limit's largest utilisation and the closest; NaN (a limit that does not apply) is null.
+// zones, each limit's largest utilisation and the closest; a limit that does not apply is 0 at a station
+// and left out of the summary.
 json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
   const OutputUnits out{c.output_units};
   const analyses::StringLimits limits = analyses::ComputeStringLimits(c.input, result.nodes, c.limits.design_factor);
   json s = json::array(), md = json::array(), yield = json::array(), allowable = json::array(),
        von_mises = json::array(), stress = json::array(), makeup = json::array(), torque = json::array(),
        sinusoidal = json::array(), helical = json::array(), buckling = json::array(), state = json::array();
+  // A limit that does not apply at a station (the bit, a material without a yield, no make-up torque
+  // given, no room to buckle into) is written 0: results.json holds no null.
+  const auto shown = [&out](double si, Quantity quantity) {
+    return std::isfinite(si) ? out(si, quantity) : 0.0;
+  };
+  const auto ratio = [](double value) { return std::isfinite(value) ? value : 0.0; };
   for (const analyses::NodeLimits& node : limits.nodes) {
     s.push_back(out(node.s, Quantity::Length));
     md.push_back(out(node.md, Quantity::Length));
-    yield.push_back(out(node.yield, Quantity::Stress));
-    allowable.push_back(out(node.allowable_stress, Quantity::Stress));
-    von_mises.push_back(out(node.von_mises_stress, Quantity::Stress));
-    stress.push_back(node.stress_utilisation);
-    makeup.push_back(out(node.makeup_torque, Quantity::Moment));
-    torque.push_back(node.torque_utilisation);
-    sinusoidal.push_back(std::isfinite(node.sinusoidal_load) ? json(out(node.sinusoidal_load, Quantity::Force)) : json());
-    helical.push_back(std::isfinite(node.helical_load) ? json(out(node.helical_load, Quantity::Force)) : json());
-    buckling.push_back(node.buckling_utilisation);
+    yield.push_back(shown(node.yield, Quantity::Stress));
+    allowable.push_back(shown(node.allowable_stress, Quantity::Stress));
+    von_mises.push_back(shown(node.von_mises_stress, Quantity::Stress));
+    stress.push_back(ratio(node.stress_utilisation));
+    makeup.push_back(shown(node.makeup_torque, Quantity::Moment));
+    torque.push_back(ratio(node.torque_utilisation));
+    sinusoidal.push_back(shown(node.sinusoidal_load, Quantity::Force));
+    helical.push_back(shown(node.helical_load, Quantity::Force));
+    buckling.push_back(ratio(node.buckling_utilisation));
     state.push_back(analyses::BucklingStateName(node.buckling));
   }
   json zones = json::array();
@@ -213,6 +220,14 @@ json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
     zones.push_back({{"kind", analyses::BucklingStateName(zone.state)},
                      {"md_from", out(zone.md_from, Quantity::Length)},
                      {"md_to", out(zone.md_to, Quantity::Length)}});
+  }
+  // Each limit's largest utilisation; a limit that applies nowhere is left out.
+  json summary = json::object();
+  for (const auto& [key, limit] : {std::pair{"yield", &limits.yield}, std::pair{"makeup_torque", &limits.makeup_torque},
+                                   std::pair{"helical_buckling", &limits.helical_buckling},
+                                   std::pair{"closest", &limits.closest}}) {
+    json entry = UtilisationJson(c, *limit);
+    if (!entry.is_null()) summary[key] = std::move(entry);
   }
   return {{"design_factor", limits.design_factor},
           {"nodes",
@@ -229,11 +244,7 @@ json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
             {"buckling_utilisation", buckling},
             {"buckling", state}}},
           {"buckled_zones", zones},
-          {"summary",
-           {{"yield", UtilisationJson(c, limits.yield)},
-            {"makeup_torque", UtilisationJson(c, limits.makeup_torque)},
-            {"helical_buckling", UtilisationJson(c, limits.helical_buckling)},
-            {"closest", UtilisationJson(c, limits.closest)}}},
+          {"summary", summary},
           {"notes", limits.notes}};
 }
 

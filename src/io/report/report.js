@@ -399,7 +399,7 @@
       {label: 'bending', x: x, y: column(nodes, 'bending_stress'), color: COLORS[0]},
     ];
     // The limit: each component's yield / design factor (E-75's where no grade is given).
-    if (ln) stressSeries.push({label: `yield / design factor ${num(lim.design_factor, 3)}`, x: x, y: ln.allowable_stress.map((v) => (v === null ? NaN : v)), color: '#d62728', dash: [6, 3], width: 1.5});
+    if (ln) stressSeries.push({label: `yield / design factor ${num(lim.design_factor, 3)}`, x: x, y: ln.allowable_stress.map((v) => (v ? v : NaN)), color: '#d62728', dash: [6, 3], width: 1.5});
     plot(grid, {title: 'Bending and von Mises stress, and the allowable stress', x: xTitle, y: `stress (${U.stress})`, series: stressSeries});
     const axial = column(nodes, 'axial_force');
     const neutral = [];
@@ -411,17 +411,17 @@
     }
     const axialSeries = [{label: 'axial force', x: x, y: axial, color: COLORS[0], width: 2}];
     // Compression beyond −F_sin buckles the string sinusoidally, beyond −F_hel helically (in a well).
-    if (ln && ln.helical_load.some((v) => v !== null)) {
-      axialSeries.push({label: '−F_sin (Dawson–Paslay)', x: x, y: ln.sinusoidal_load.map((v) => (v === null ? NaN : -v)), color: '#ff7f0e', dash: [6, 3], width: 1.2});
-      axialSeries.push({label: '−F_hel (Chen)', x: x, y: ln.helical_load.map((v) => (v === null ? NaN : -v)), color: '#d62728', dash: [2, 3], width: 1.2});
+    if (ln && ln.helical_load.some((v) => v)) {
+      axialSeries.push({label: '−F_sin (Dawson–Paslay)', x: x, y: ln.sinusoidal_load.map((v) => (v ? -v : NaN)), color: '#ff7f0e', dash: [6, 3], width: 1.2});
+      axialSeries.push({label: '−F_hel (Chen)', x: x, y: ln.helical_load.map((v) => (v ? -v : NaN)), color: '#d62728', dash: [2, 3], width: 1.2});
     }
     plot(grid, {
       title: 'Axial force (tension positive) and the buckling loads', x: xTitle, y: `axial force (${U.force})`,
       series: axialSeries, hLines: [{y: 0, label: '', color: '#999'}], vLines: neutral,
     });
     const torqueSeries = [{label: 'torque', x: x, y: column(nodes, 'torque'), color: COLORS[4], width: 2}];
-    if (ln && ln.makeup_torque.some((v) => v !== null)) {
-      torqueSeries.push({label: 'make-up torque', x: x, y: ln.makeup_torque.map((v) => (v === null ? NaN : v)), color: '#d62728', dash: [6, 3], width: 1.5});
+    if (ln && ln.makeup_torque.some((v) => v)) {
+      torqueSeries.push({label: 'make-up torque', x: x, y: ln.makeup_torque.map((v) => (v ? v : NaN)), color: '#d62728', dash: [6, 3], width: 1.5});
     }
     plot(grid, {title: 'Torque', x: xTitle, y: `torque (${U.moment})`, series: torqueSeries});
     if (neutral.length) {
