@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "model/hole_friction.hpp"
+#include "well/hole.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -147,8 +148,9 @@ double ComputeTorqueChange(double normal_force, const model::Component& componen
 
 // The coefficients at `md` (an element's middle): the operation's open-hole ones, in cased hole its
 // cased ones or the section's own.
-model::WallFriction FrictionAt(const model::ModelInput& input, const SoftStringOperation& operation, double md) {
-  const model::HoleFriction built = model::HoleFrictionAt(input.hole, input.settings.contact, md);
+model::WallFriction FrictionAt(const model::ModelInput& input, const well::HoleProfile& hole,
+                               const SoftStringOperation& operation, double md) {
+  const model::HoleFriction built = model::HoleFrictionAt(hole, input.settings.contact, md);
   if (!built.cased) return {operation.axial_friction, operation.tangential_friction};
   return operation.cased_friction.value_or(built.friction);
 }
@@ -160,6 +162,7 @@ SoftStringResult ComputeSoftString(const model::ModelInput& input, const SoftStr
   CheckOperation(operation);
   const well::Trajectory& trajectory = *input.trajectory;
   const std::vector<double> cuts = CutMds(input, operation.max_element_length);
+  const well::HoleProfile hole(input.hole);  // the sections' friction, looked up at every element
   SoftStringResult result;
   result.stations.reserve(cuts.size());
   // At the bit the rock pushes up with the WOB and resists the rotation with the TOB.
@@ -171,7 +174,7 @@ SoftStringResult ComputeSoftString(const model::ModelInput& input, const SoftStr
     const double length = cuts[k - 1] - cuts[k];
     const model::Component& component = ComponentAtMiddle(input.string, input.bit_md - 0.5 * (cuts[k - 1] + cuts[k]));
     const double weight = model::BuoyedWeightPerLength(component, input) * length;  // W = w L
-    const model::WallFriction friction = FrictionAt(input, operation, 0.5 * (cuts[k - 1] + cuts[k]));
+    const model::WallFriction friction = FrictionAt(input, hole, operation, 0.5 * (cuts[k - 1] + cuts[k]));
     double normal_force = ComputeElementNormalForce(below.axial_force, weight, lower, upper);
     if (operation.wall_climb && operation.motion == SoftStringMotion::Rotating) {
       normal_force /= std::hypot(1.0, friction.tangential);  // N √(1 + μ_t²) = L

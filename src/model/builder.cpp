@@ -423,7 +423,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
     above.curvature = Eigen::Vector2d(frame.col(1).dot(curvature), frame.col(2).dot(curvature));
     const double joint_diameter = component.joint_diameter.value_or(component.outer_diameter);
     above.clearance = 0.5 * (well::HoleProfile(input.hole).Diameter(top_md) - joint_diameter);
-    const HoleFriction top_friction = HoleFrictionAt(input.hole, input.settings.contact, top_md);
+    const HoleFriction top_friction = HoleFrictionAt(well::HoleProfile(input.hole), input.settings.contact, top_md);
     above.friction = top_friction.friction;
     above.cased = top_friction.cased;
     above.contact_radius = 0.5 * joint_diameter;
@@ -496,7 +496,7 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
       parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(stiffness * ElementInertia(*body)[0]);
       // The friction of the hole section the contact starts in (the string moves centimetres in a
       // static, a stand at most in a transient: a contact keeps its section).
-      const HoleFriction friction = HoleFrictionAt(input.hole, contact, input.bit_md - s);
+      const HoleFriction friction = HoleFrictionAt(wellbore->hole, contact, input.bit_md - s);
       parameters.tangential_friction = friction.friction.tangential;
       parameters.axial_friction = friction.friction.axial;
       parameters.cased = friction.cased;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "well/hole.hpp"
 
 namespace drillflex::model {
 
@@ -17,9 +16,9 @@ HoleFriction SectionFriction(const well::HoleSection& section, const ContactSett
   return result;
 }
 
-HoleFriction HoleFrictionAt(const std::vector<well::HoleSection>& hole, const ContactSettings& contact, double md) {
+HoleFriction HoleFrictionAt(const well::HoleProfile& hole, const ContactSettings& contact, double md) {
   if (hole.empty()) return SectionFriction(well::HoleSection{}, contact);
-  return SectionFriction(well::HoleProfile(hole).SectionAt(md), contact);
+  return SectionFriction(hole.SectionAt(md), contact);
 }
 
 WallFriction EffectiveFriction(const HoleFriction& built, const LoadParameters& load) {

@@ -9,6 +9,7 @@
 
 #include "model/load_parameters.hpp"
 #include "model/string_config.hpp"
+#include "well/hole.hpp"
 #include "well/survey.hpp"
 
 namespace drillflex::model {
@@ -22,8 +23,9 @@ struct HoleFriction {
 // A hole section's own coefficients, else `contact`'s (axial defaulting to the tangential).
 HoleFriction SectionFriction(const well::HoleSection& section, const ContactSettings& contact);
 // The case's own coefficients at `md`: the hole section's, else `contact`'s (axial defaulting to the
-// tangential). An empty `hole` is open hole with `contact`'s friction.
-HoleFriction HoleFrictionAt(const std::vector<well::HoleSection>& hole, const ContactSettings& contact, double md);
+// tangential). An empty `hole` is open hole with `contact`'s friction. (The profile is built once by
+// the caller: the soft string asks at every element.)
+HoleFriction HoleFrictionAt(const well::HoleProfile& hole, const ContactSettings& contact, double md);
 
 // The coefficients under a parameter block: its open- or cased-hole coefficients where it gives them
 // (each for its own kind of hole), else `built`'s, times its friction factor.

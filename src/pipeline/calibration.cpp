@@ -148,34 +148,43 @@ class Fit {
 
 // Keeps the frictions inside their bounds.
 void Bound(Parameters& p) {
-  for (int k : {0, 1}) p[static_cast<std::size_t>(k)] = std::clamp(p[static_cast<std::size_t>(k)], 0.0, kLargestFriction);
+  for (const CalibrationParameter k : {CalibrationParameter::kOpenHoleFriction, CalibrationParameter::kCasedHoleFriction}) {
+    double& friction = p[static_cast<std::size_t>(Index(k))];
+    friction = std::clamp(friction, 0.0, kLargestFriction);
+  }
 }
 
 struct LmOutcome {
   Parameters p{};
   Eigen::VectorXd r;
-  Eigen::MatrixXd J;
+  Eigen::MatrixXd J;                     // at p
+  std::vector<ModelledReading> modelled;  // the readings modelled at p
   int iterations = 0;
-  bool converged = false;
+  bool converged = false;                 // the last step was below every tolerance
 };
 
-// Levenberg–Marquardt from p (Marquardt's scaling: λ diag(JᵀJ)).
+// Levenberg–Marquardt from p (Marquardt's scaling: λ diag(JᵀJ)). Converged when a step is below every
+// parameter's tolerance; it stops unconverged when ten growing λ find no step that lowers the cost, or
+// after max_iterations.
 LmOutcome LevenbergMarquardt(Fit& fit, Parameters p, int max_iterations, int& iterations_so_far) {
   LmOutcome out;
   Eigen::VectorXd r = fit.Evaluate(p, "start");
+  out.modelled = fit.last_modelled();
   double cost = fit.Cost(r);
   double lambda = 1e-3;
   const std::vector<int>& free = fit.free();
+  bool fresh_jacobian = false;  // out.J is at p
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     ++iterations_so_far;
     out.iterations = iteration;
-    const Eigen::MatrixXd J = fit.Jacobian(p, r, fmt::format("iteration {}", iterations_so_far));
+    out.J = fit.Jacobian(p, r, fmt::format("iteration {}", iterations_so_far));
+    fresh_jacobian = true;
     Eigen::VectorXd rr = r;
     for (Eigen::Index i = 0; i < rr.size(); ++i) {
-      if (!std::isfinite(rr[i]) || J.row(i).isZero(0.0)) rr[i] = 0.0;
+      if (!std::isfinite(rr[i]) || out.J.row(i).isZero(0.0)) rr[i] = 0.0;
     }
-    const Eigen::MatrixXd JtJ = J.transpose() * J;
-    const Eigen::VectorXd gradient = J.transpose() * rr;
+    const Eigen::MatrixXd JtJ = out.J.transpose() * out.J;
+    const Eigen::VectorXd gradient = out.J.transpose() * rr;
     bool stepped = false, small = false;
     for (int attempt = 0; attempt < 10 && !stepped; ++attempt) {
       Eigen::MatrixXd A = JtJ;
@@ -194,21 +203,23 @@ LmOutcome LevenbergMarquardt(Fit& fit, Parameters p, int max_iterations, int& it
       if (trial_cost <= cost) {
         p = trial;
         r = r_trial;
+        out.modelled = fit.last_modelled();
         cost = fit.Cost(r);  // failures marked since
         lambda = std::max(lambda / 3.0, 1e-9);
         stepped = true;
+        fresh_jacobian = false;
       } else {
         lambda *= 4.0;
         if (small) break;  // the step is below tolerance and no better: at the minimum
       }
     }
-    if (small || !stepped) {
+    if (small) {
       out.converged = true;
-      out.J = fit.Jacobian(p, r, "the optimum");
       break;
     }
+    if (!stepped) break;  // no step lowers the cost: stuck, not converged
   }
-  if (!out.converged) out.J = fit.Jacobian(p, r, "the last iterate");
+  if (!fresh_jacobian) out.J = fit.Jacobian(p, r, "the last iterate");
   out.p = p;
   out.r = r;
   return out;
@@ -314,7 +325,7 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
     hooks.emplace_back(reading.bit_md, reading.hook_load);
     if (reading.surface_torque) torques.emplace_back(reading.bit_md, *reading.surface_torque);
   }
-  const bool fit_cased = std::find(free.begin(), free.end(), 1) != free.end();
+  const bool fit_cased = std::find(free.begin(), free.end(), Index(CalibrationParameter::kCasedHoleFriction)) != free.end();
   Fit fit(model, readings, free, fit_cased, settings.log);
   // A floor: 0.1 % of the channel's largest reading (readings repeated exactly have no scatter).
   const auto floor = [](const std::vector<std::pair<double, double>>& values) {
@@ -338,13 +349,12 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
     return std::pair{Rms(hook), Rms(torque)};
   };
   {
-    const std::vector<ModelledReading> modelled = model.Evaluate(ToModel(outcome.p, fit_cased));
-    const auto [hook_rms, torque_rms] = channel_rms(modelled);
+    const auto [hook_rms, torque_rms] = channel_rms(outcome.modelled);
     fit.hook_sigma = std::max(hook_rms, floor(hooks));
     if (!torques.empty()) fit.torque_sigma = std::max(torque_rms, floor(torques));
     outcome = LevenbergMarquardt(fit, outcome.p, settings.max_iterations, iterations);
   }
-  const std::vector<ModelledReading> modelled = model.Evaluate(ToModel(outcome.p, fit_cased));
+  const std::vector<ModelledReading>& modelled = outcome.modelled;
   int failures = 0;
   for (const ModelledReading& m : modelled) failures += m.failed() ? 1 : 0;
   if (2 * failures > static_cast<int>(modelled.size())) {

@@ -109,8 +109,9 @@ DepthRuns::DepthRuns(const io::Case& at, const std::function<void(const std::str
 }
 
 void DepthRuns::SolveAtRest() {
-  Label({}, "at rest off bottom");
-  model::LoadParameters parameters = OffBottom({});
+  const HoleFrictionFactors none{0.0, 0.0};
+  Label(none, "at rest off bottom");
+  model::LoadParameters parameters = OffBottom(none);
   parameters.sliding_mode = model::SlidingMode::kVelocities;
   rest_ = Solve(parameters, nullptr, "at rest off bottom");
 }

@@ -19,7 +19,7 @@ namespace {
 constexpr double kSameDepth = 1e-3;
 // The friction the stiff model's length is chosen for (StiffCaseAtDepth: its top in tension slacking
 // off at this friction): above what a calibration meets in a well.
-constexpr double kLargestFriction = 0.6;
+constexpr double kStiffLengthFriction = 0.6;
 
 TdRun RunOf(io::RigActivity activity) {
   switch (activity) {
@@ -65,7 +65,7 @@ struct ReadingsModel::Depth {
 };
 
 ReadingsModel::ReadingsModel(const io::Case& c, const io::RigReadings& readings, const ReadingsModelOptions& options)
-    : case_(c), readings_(readings), options_(options), bit_diameter_(BitDiameter(c)) {
+    : readings_(readings), options_(options), bit_diameter_(BitDiameter(c)) {
   if (!c.well) throw InputError({c.file, 0, 0}, "well", "modelling the rig's readings needs a well");
   if (readings_.rows.empty()) throw InputError({readings_.file, 0, 0}, "", "the readings file has no readings");
   const double shallowest = model::StringLength(c.input.string) - c.input.string.components.back().length *
@@ -77,7 +77,7 @@ ReadingsModel::ReadingsModel(const io::Case& c, const io::RigReadings& readings,
     return readings_.rows[a].bit_md > readings_.rows[b].bit_md;
   });
   analyses::RoadmapSettings roadmap = options_.roadmap;
-  roadmap.friction = {kLargestFriction};
+  roadmap.friction = {kStiffLengthFriction};
   for (const std::size_t i : order) {
     const io::RigReading& reading = readings_.rows[i];
     if (!(reading.bit_md > shallowest)) {

@@ -75,7 +75,6 @@ class ReadingsModel {
   struct Depth;
   void EvaluateDepth(Depth& depth, const ReadingsParameters& parameters, std::vector<ModelledReading>& out) const;
 
-  const io::Case& case_;
   io::RigReadings readings_;
   ReadingsModelOptions options_;
   double bit_diameter_ = 0.0;
