@@ -817,17 +817,19 @@
         torque.push({label: `soft on bottom, ${m}`, x: column(soft, 'on_bottom_torque'), y: sd, color: color, dash: [7, 4], width: 0.8});
       }
     });
-    // The limits (roadmap.json points' hook_load_limit, helical_slack_off, torque_limit): thin lines.
-    r.friction.forEach((mu, i) => {
-      const rows = r.points.filter((p) => p.friction === mu);
-      const depth = column(rows, 'bit_md'), color = COLORS[i % COLORS.length], m = `μ ${num(mu, 3)}`;
-      if (rows.some((p) => p.hook_load_limit !== null && p.hook_load_limit !== undefined)) {
-        hook.push({label: `hook load at yield, ${m}`, x: column(rows, 'hook_load_limit'), y: depth, color: color, dash: [12, 3, 2, 3], width: 1});
+    // The limits (roadmap.json points' hook_load_limit, helical_slack_off, torque_limit): thin dark-red
+    // lines, once, at the largest friction factor (its torque lowers the yield's hook load most; the
+    // helical slack-off hardly moves with it), so that they do not crowd the legend.
+    {
+      const mu = Math.max(...r.friction), rows = r.points.filter((p) => p.friction === mu), depth = column(rows, 'bit_md');
+      const given = (key) => rows.some((p) => p[key] !== null && p[key] !== undefined);
+      if (given('hook_load_limit')) {
+        hook.push({label: `hook load at yield (μ ${num(mu, 3)})`, x: column(rows, 'hook_load_limit'), y: depth, color: '#8b0000', dash: [12, 3, 2, 3], width: 1});
       }
-      if (rows.some((p) => p.helical_slack_off !== null && p.helical_slack_off !== undefined)) {
-        hook.push({label: `slack-off at helical buckling, ${m}`, x: column(rows, 'helical_slack_off'), y: depth, color: color, dash: [1, 3], width: 1.5});
+      if (given('helical_slack_off')) {
+        hook.push({label: `slack-off at helical buckling (μ ${num(mu, 3)})`, x: column(rows, 'helical_slack_off'), y: depth, color: '#8b0000', dash: [1, 3], width: 1.5});
       }
-    });
+    }
     if (r.points.some((p) => p.torque_limit !== null && p.torque_limit !== undefined)) {
       torque.push({label: 'make-up torque (weakest)', x: column(r.points, 'torque_limit'), y: column(r.points, 'bit_md'), color: '#d62728', dash: [12, 3, 2, 3], width: 1});
     }
