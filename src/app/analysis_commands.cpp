@@ -94,9 +94,14 @@ int RunAnalyses(const CommandOptions& options, const pipeline::AnalysisRequest& 
     return kExitNotConverged;
   }
   const double solved = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const io::ResultFiles files =
-      pipeline::ComposeResultFiles(c, results, {options.output_directory, report, vtk, command, solved});
-  files.Commit();
+  const io::ResultFiles files = [&] {
+    const profile::Scope scope("output: compose the result files");
+    return pipeline::ComposeResultFiles(c, results, {options.output_directory, report, vtk, command, solved});
+  }();
+  {
+    const profile::Scope scope("output: write the result files");
+    files.Commit();
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << fmt::format("results written to {} ({:.3g} s){}\n", files.directory(), seconds,
                            report ? fmt::format("; the report: {}/report.html", files.directory()) : "");
