@@ -67,9 +67,8 @@ class EquilibriumSolver {
   // stands at every multiplier up to 1000 (or lies buckled already at 1/1000 of the loads).
   double PipeAboveOnset() const {
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    if (built_.string_above_element < 0) return kInfinity;
-    const auto& above =
-        dynamic_cast<const model::StringAboveElement&>(*built_.system.elements()[built_.string_above_element]);
+    if (!built_.string_above) return kInfinity;
+    const model::StringAboveElement& above = built_.Get(*built_.string_above);
     auto margin = [&](double multiplier) { return above.BucklingMargin(LoadsAt(multiplier)); };
     double low = 1e-3;
     if (!(margin(low) > 0.0)) return kInfinity;

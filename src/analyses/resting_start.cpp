@@ -280,11 +280,10 @@ std::vector<double> CouplingGaps(const model::BuiltModel& built, const std::vect
   std::vector<double> gaps(bodies.size(), 0.0);
   std::vector<std::size_t> last_station(bodies.size(), 0);
   for (std::size_t i = 0; i < stations.size(); ++i) last_station[static_cast<std::size_t>(stations[i].body)] = i;
-  for (const auto& element : built.system.elements()) {
-    const auto* coupling = dynamic_cast<const model::CouplingElement*>(element.get());
-    if (coupling == nullptr || coupling->bodies().size() != 2) continue;
-    const std::size_t lower = static_cast<std::size_t>(built.system.IndexOf(coupling->bodies()[0]));
-    const double axial = coupling->stiffness()[0];
+  for (const auto handle : built.couplings) {
+    const model::CouplingElement& coupling = built.Get(handle);
+    const std::size_t lower = static_cast<std::size_t>(built.system.IndexOf(coupling.bodies()[0]));
+    const double axial = coupling.stiffness()[0];
     if (lower + 1 < bodies.size() && axial > 0.0) gaps[lower] = stations[last_station[lower]].tension / axial;
   }
   return gaps;
@@ -395,10 +394,10 @@ VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built
   // The hook's spring stretched by the tension it carries, T/k_x: the top lands that far below its
   // reference (the couplings below are opened likewise, CouplingGaps).
   double hook_stretch = 0.0;
-  for (const int index : built.support_elements) {
-    const auto* support = dynamic_cast<const model::SupportElement*>(system.elements()[index].get());
-    if (support == nullptr || support->bodies()[0] != &top_body || support->node() != top_body.node_count() - 1) continue;
-    if (support->stiffness()[0] > 0.0) hook_stretch = stations.back().tension / support->stiffness()[0];
+  for (const auto handle : built.supports) {
+    const model::SupportElement& support = system.Get(handle);
+    if (support.bodies()[0] != &top_body || support.node() != top_body.node_count() - 1) continue;
+    if (support.stiffness()[0] > 0.0) hook_stretch = stations.back().tension / support.stiffness()[0];
   }
   double shift = 0.0;  // m up the hole along the bit's axis
   std::vector<double> ends;
@@ -427,8 +426,8 @@ void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& b
   if (sliding && sliding->rotary_speed != 0.0) {
     const auto poses = built.system.Poses(q);
     const VecX rest = VecX::Zero(built.system.num_velocities());
-    for (const int index : built.contact_elements) {
-      const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
+    for (const auto handle : built.contacts) {
+      const model::WallContactElement& contact = built.Get(handle);
       const model::WallContactResult state =
           contact.Result(built.system.StateOf(contact, poses, rest, 0.0, parameters));
       const int body = built.system.IndexOf(contact.bodies()[0]);
@@ -447,11 +446,10 @@ void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& b
   }
   // The torsional stiffness of the coupling below each body (to the body under it).
   std::vector<double> joint_stiffness(bodies.size(), 0.0);
-  for (const auto& element : built.system.elements()) {
-    const auto* coupling = dynamic_cast<const model::CouplingElement*>(element.get());
-    if (coupling == nullptr || coupling->bodies().size() != 2) continue;
-    const int upper = built.system.IndexOf(coupling->bodies()[1]);
-    if (upper >= 0) joint_stiffness[static_cast<std::size_t>(upper)] = coupling->stiffness()[3];
+  for (const auto handle : built.couplings) {
+    const model::CouplingElement& coupling = built.Get(handle);
+    const int upper = built.system.IndexOf(coupling.bodies()[1]);
+    if (upper >= 0) joint_stiffness[static_cast<std::size_t>(upper)] = coupling.stiffness()[3];
   }
   // θ(s) = ∫_s^top T ds'/GJ: each body turned by θ at its middle and twisted inside by dθ/ds =
   // −T/GJ (x up the hole), each coupling by T/k_θ (without the inner twist the couplings carried

@@ -138,13 +138,12 @@ std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, co
   const auto poses = model.Poses(q);
   const VecX v = VecX::Zero(model.num_velocities());
   std::vector<SupportReaction> reactions;
-  for (int index : built.support_elements) {
-    const auto* support = dynamic_cast<const model::SupportElement*>(model.elements().at(index).get());
-    if (support == nullptr) throw LogicError(fmt::format("SupportReactions: element {} is not a support", index));
-    const Vec6 reaction = support->Reaction(model.StateOf(*support, poses, v, 0.0, parameters));
-    const model::Body& body = *support->bodies()[0];
+  for (const auto handle : built.supports) {
+    const model::SupportElement& support = model.Get(handle);
+    const Vec6 reaction = support.Reaction(model.StateOf(support, poses, v, 0.0, parameters));
+    const model::Body& body = *support.bodies()[0];
     SupportReaction result;
-    result.s = body.NodeS(SupportNode(model, *support, q));
+    result.s = body.NodeS(SupportNode(model, support, q));
     result.force = reaction.head<3>();
     result.moment = reaction.tail<3>();
     reactions.push_back(result);
@@ -171,9 +170,9 @@ StaticResult WithResults(const model::BuiltModel& built, StaticResult result, co
   result.nodes = StaticNodeResults(built.system, result.q, parameters);
   AddWallOffsets(built, result.q, result.nodes);
   result.reactions = SupportReactions(built, result.q, parameters);
-  if (built.string_above_element >= 0) {
+  if (built.string_above) {
     const model::SystemModel& model = built.system;
-    const auto& above = static_cast<const model::StringAboveElement&>(*model.elements()[built.string_above_element]);
+    const model::StringAboveElement& above = model.Get(*built.string_above);
     const auto poses = model.Poses(result.q);
     const VecX v = VecX::Zero(model.num_velocities());
     const Vec6 reaction = above.Reaction(model.StateOf(above, poses, v, 0.0, parameters));
@@ -249,11 +248,11 @@ StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltM
 std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const VecX& q,
                                           const model::LoadParameters& parameters) {
   std::vector<ContactReport> reports;
-  if (built.contact_elements.empty()) return reports;
+  if (built.contacts.empty()) return reports;
   const auto poses = built.system.Poses(q);
   const VecX rest = VecX::Zero(built.system.num_velocities());
-  for (const int index : built.contact_elements) {
-    const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
+  for (const auto handle : built.contacts) {
+    const model::WallContactElement& contact = built.Get(handle);
     const model::WallContactResult state = contact.Result(built.system.StateOf(contact, poses, rest, 0.0, parameters));
     if (!state.in_contact) continue;
     const model::Body& body = *contact.bodies()[0];
@@ -265,7 +264,7 @@ std::vector<ContactReport> ContactReports(const model::BuiltModel& built, const 
 }
 
 std::optional<BitReport> ComputeBitReport(const model::BuiltModel& built, const StaticResult& result) {
-  if (built.contact_elements.empty() || result.nodes.empty()) return std::nullopt;
+  if (built.contacts.empty() || result.nodes.empty()) return std::nullopt;
   const SupportReaction* bit = nullptr;
   for (const auto& reaction : result.reactions) {
     if (std::abs(reaction.s) < 1e-9) bit = &reaction;

@@ -49,7 +49,7 @@ StaticOutcome SolveByLoadStepping(const model::BuiltModel& built, const StaticSe
   options.max_iterations = std::clamp(settings.max_iterations, 1, kMaxIterationsPerLoadStep);
   if (built.force_scale > 0.0) options.force_scale = built.force_scale;
   options.log = settings.log;
-  if (!built.contact_elements.empty()) {
+  if (!built.contacts.empty()) {
     options.max_increment = kWallStepLimit;
     options.max_iterations = std::max(options.max_iterations, kMaxIterationsInHole);
   }
@@ -119,7 +119,7 @@ StaticOutcome SolveFromNeighbour(const model::BuiltModel& built, const StaticSet
   if (built.force_scale > 0.0) options.force_scale = built.force_scale;
   options.load_stepping.enabled = false;
   options.max_iterations = max_iterations;
-  options.max_increment = built.contact_elements.empty() ? 0.0 : kWallStepLimit;
+  options.max_increment = built.contacts.empty() ? 0.0 : kWallStepLimit;
   options.reuse_contraction = kNeighbourContraction;
   options.throw_on_failure = false;
   options.log = settings.log;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -18,10 +19,10 @@
 namespace drillflex::analyses {
 namespace {
 
-// What one probe reads: a string station and the wall contact element at its node (−1: none).
+// What one probe reads: a string station and the wall contact element at its node, if any.
 struct Probe {
   int station = 0;
-  int contact_element = -1;
+  std::optional<model::ElementHandle<model::WallContactElement>> contact;
 };
 
 int NearestStation(const std::vector<Station>& stations, double s) {
@@ -32,13 +33,14 @@ int NearestStation(const std::vector<Station>& stations, double s) {
   return best;
 }
 
-int ContactElementAt(const model::BuiltModel& built, const Station& station) {
+std::optional<model::ElementHandle<model::WallContactElement>> ContactAt(const model::BuiltModel& built,
+                                                                          const Station& station) {
   const model::Body& body = built.system.bodies()[station.body];
-  for (const int index : built.contact_elements) {
-    const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
-    if (contact.bodies()[0] == &body && contact.node() == station.node) return index;
+  for (const auto handle : built.contacts) {
+    const model::WallContactElement& contact = built.Get(handle);
+    if (contact.bodies()[0] == &body && contact.node() == station.node) return handle;
   }
-  return -1;
+  return std::nullopt;
 }
 
 // The spin rate of a station's node, clockwise looking down-hole (−ω_x of the string frame), rad/s.
@@ -83,17 +85,17 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   // support's), so their force carries k times the positions' Newton error: ~1e-3 × tolerance × 1e-3
   // rad or m (transient_analysis.cpp, TransientIntegratorOptions), e.g. 3 N·m for 5 in pipe at the
   // default tolerance.
-  if (built.top_drive_element >= 0) {
-    const auto& drive = static_cast<const model::TopDriveElement&>(*model.elements()[built.top_drive_element]);
+  if (built.top_drive) {
+    const model::TopDriveElement& drive = model.Get(*built.top_drive);
     sample.surface_torque = drive.Torque(model.StateOf(drive, poses, v, time, 1.0));
   }
-  if (built.block_element >= 0) {
-    const auto& block = static_cast<const model::BlockElement&>(*model.elements()[built.block_element]);
+  if (built.block) {
+    const model::BlockElement& block = model.Get(*built.block);
     sample.hook_load = block.HookLoad(model.StateOf(block, poses, v, time, 1.0));
   }
   // With a bottom contact the WOB is what it carries (0 while the bit is off bottom).
-  if (built.bit_bottom_element >= 0) {
-    const auto& bottom = static_cast<const model::BitBottomElement&>(*model.elements()[built.bit_bottom_element]);
+  if (built.bit_bottom) {
+    const model::BitBottomElement& bottom = model.Get(*built.bit_bottom);
     sample.weight_on_bit = bottom.ContactForce(model.StateOf(bottom, poses, v, time, 1.0));
   }
   const model::Energies energies = model.ComputeEnergies(q, v, 1.0);
@@ -107,8 +109,8 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
     out.lateral_z = node.displacement.z();
     out.whirl_angle = node.has_wall ? node.offset_high_side_angle : HighSideAngle(out.lateral_y, out.lateral_z);
     out.bending_moment = node.bending_moment;
-    if (probe.contact_element >= 0) {
-      const auto& contact = static_cast<const model::WallContactElement&>(*model.elements()[probe.contact_element]);
+    if (probe.contact) {
+      const model::WallContactElement& contact = model.Get(*probe.contact);
       const model::WallContactResult state = contact.Result(model.StateOf(contact, poses, v, time, 1.0));
       out.contact_force = state.in_contact ? state.normal_force : 0.0;
     }
@@ -220,7 +222,7 @@ TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, con
   for (const double s : settings.probes) {
     Probe probe;
     probe.station = NearestStation(stations, s);
-    probe.contact_element = ContactElementAt(built, stations[probe.station]);
+    probe.contact = ContactAt(built, stations[probe.station]);
     probes.push_back(probe);
     result.probe_s.push_back(stations[probe.station].s);
   }

@@ -90,9 +90,8 @@ WallState ReadWall(const model::BuiltModel& built, const std::vector<model::Body
   WallState wall;
   const model::SystemModel& model = built.system;
   const VecX v = VecX::Zero(model.num_velocities());
-  for (const int index : built.contact_elements) {
-    const auto* contact = dynamic_cast<const model::WallContactElement*>(model.elements()[index].get());
-    if (!contact) continue;
+  for (const auto handle : built.contacts) {
+    const model::WallContactElement* contact = &model.Get(handle);
     const model::Body* body = contact->bodies().front();
     const int b = model.IndexOf(body);
     const model::WallContactResult result = contact->Result(model.StateOf(*contact, poses, v, 0.0, 1.0));

@@ -32,10 +32,9 @@ double StationOf(const model::WallContactElement& contact) {
 // The model's wall contacts sorted by station (at a joint two may share one: either serves).
 std::vector<ContactAtStation> ContactsByStation(const model::BuiltModel& built) {
   std::vector<ContactAtStation> contacts;
-  for (const int index : built.contact_elements) {
-    const auto* contact = dynamic_cast<const model::WallContactElement*>(built.system.elements().at(index).get());
-    if (contact == nullptr) throw LogicError(fmt::format("AddWallOffsets: element {} is not a wall contact", index));
-    contacts.push_back({StationOf(*contact), contact});
+  for (const auto handle : built.contacts) {
+    const model::WallContactElement& contact = built.Get(handle);
+    contacts.push_back({StationOf(contact), &contact});
   }
   std::stable_sort(contacts.begin(), contacts.end(),
                    [](const ContactAtStation& a, const ContactAtStation& b) { return a.s < b.s; });
@@ -66,7 +65,7 @@ void SetFromContact(const model::WallContactResult& contact, double contact_radi
 }  // namespace
 
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes) {
-  if (built.contact_elements.empty()) return;
+  if (built.contacts.empty()) return;
   const std::size_t stations = StringStations(built.system).size();
   if (nodes.size() != stations) {
     throw LogicError(fmt::format("AddWallOffsets: {} node results for {} stations", nodes.size(), stations));
@@ -78,7 +77,7 @@ void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<S
 
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes,
                     std::span<const int> station_indices) {
-  if (built.contact_elements.empty()) return;
+  if (built.contacts.empty()) return;
   const model::SystemModel& system = built.system;
   const std::vector<Station> stations = StringStations(system);
   if (station_indices.size() != nodes.size()) {

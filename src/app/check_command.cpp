@@ -103,8 +103,8 @@ void PrintModel(const io::Case& c) {
       "model: {} flexible bodies ({} distinct reductions), {} coordinates, {} couplings, {} supports, {} wall "
       "contacts\n",
       built.system.bodies().size(), cache.size(), built.system.num_velocities(),
-      built.system.bodies().empty() ? 0 : built.system.bodies().size() - 1, built.support_elements.size(),
-      built.contact_elements.size());
+      built.system.bodies().empty() ? 0 : built.system.bodies().size() - 1, built.supports.size(),
+      built.contacts.size());
   std::cout << fmt::format("  {} elements and {} fixed-interface modes a body, coupling factor {:g}\n",
                            settings.elements_per_body, settings.modes_per_body, settings.coupling_factor);
 }

@@ -36,14 +36,14 @@ void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& f
   std::size_t supports = c.input.supports.size();
   root["model"] = {{"bodies", built.system.bodies().size()},
                    {"coordinates", built.system.num_velocities()},
-                   {"contacts", built.contact_elements.size()},
+                   {"contacts", built.contacts.size()},
                    {"couplings", built.system.bodies().empty() ? 0 : built.system.bodies().size() - 1},
                    {"supports", supports},
                    {"elements_per_body", c.input.settings.elements_per_body},
                    {"modes_per_body", c.input.settings.modes_per_body},
                    {"coupling_factor", c.input.settings.coupling_factor},
                    // The pipe above holds the top (model/string_above.hpp; model.top).
-                   {"pipe_above", built.string_above_element >= 0}};
+                   {"pipe_above", built.string_above.has_value()}};
   root["column_units"] = {{"s", out.Unit(Quantity::Length)},        {"md", out.Unit(Quantity::Length)},
                           {"position", out.Unit(Quantity::Length)}, {"displacement", out.Unit(Quantity::Diameter)},
                           {"rotation", "deg"},                      {"lateral_offset", out.Unit(Quantity::Diameter)},

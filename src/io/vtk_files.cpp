@@ -171,12 +171,10 @@ struct ContactCircleAt {
 // The model's wall-contact circles by station, ascending in s.
 std::vector<ContactCircleAt> ContactCirclesByStation(const model::BuiltModel& built) {
   std::vector<ContactCircleAt> circles;
-  for (const int index : built.contact_elements) {
-    const auto* contact = dynamic_cast<const model::WallContactElement*>(built.system.elements().at(index).get());
-    if (contact == nullptr) continue;
-    const model::Body& body = *contact->bodies()[0];
-    circles.push_back({body.NodeS(contact->node()),
-                       contact->parameters().contact_radius});
+  for (const auto handle : built.contacts) {
+    const model::WallContactElement& contact = built.Get(handle);
+    const model::Body& body = *contact.bodies()[0];
+    circles.push_back({body.NodeS(contact.node()), contact.parameters().contact_radius});
   }
   std::sort(circles.begin(), circles.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
   return circles;
@@ -202,10 +200,7 @@ double OuterRadiusAt(const Case& c, double s) {
 // origin). Null without a well.
 const model::Wellbore* WellboreOf(const Case& c, const model::BuiltModel& built,
                                   std::optional<model::Wellbore>& storage) {
-  for (const int index : built.contact_elements) {
-    const auto* contact = dynamic_cast<const model::WallContactElement*>(built.system.elements().at(index).get());
-    if (contact != nullptr) return &contact->wellbore();
-  }
+  if (!built.contacts.empty()) return &built.Get(built.contacts.front()).wellbore();
   if (!c.well) return nullptr;
   storage.emplace(model::Wellbore{well::Trajectory(c.well->survey), well::HoleProfile(c.well->hole)});
   return &*storage;

@@ -10,6 +10,7 @@
 
 #include "model/block_pattern.hpp"
 #include "model/body.hpp"
+#include "model/element_handle.hpp"
 #include "model/force_element.hpp"
 #include "solvers/problem.hpp"
 
@@ -30,6 +31,11 @@ class SystemModel {
 
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<std::unique_ptr<ForceElement>>& elements() const { return elements_; }
+  // The element a handle names, with its type (the builder made it so: model/element_handle.hpp).
+  template <class E>
+  const E& Get(ElementHandle<E> handle) const {
+    return static_cast<const E&>(*elements_[static_cast<std::size_t>(handle.index())]);
+  }
   int num_positions() const { return num_positions_; }
   int num_velocities() const { return num_velocities_; }
   double length() const { return length_; }  // of the string, m

@@ -266,36 +266,27 @@ double StudentQuantile975(int dof) {
   return z + g1 / v + g2 / (v * v) + g3 / (v * v * v) + g4 / (v * v * v * v);
 }
 
-CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, const CalibrationSettings& settings) {
-  CalibrationResult result;
-  result.model = settings.model.kind;
-  ReadingsModel model(c, readings, settings.model);
-  result.bit_diameter = model.bit_diameter();
-  const bool has_casing = model::HasCasedHole(c.input.hole);
-  const ReadingsParameters start = CaseReadingsParameters(c);
-  // The cased hole's start: the case's friction (its cased sections' own are a start only when fitted).
-  Parameters p{start.open_hole_friction, start.open_hole_friction, 0.0, start.bit_torque_coefficient};
-  for (const well::HoleSection& section : c.input.hole) {
-    if (section.cased && section.friction) p[1] = *section.friction;
-  }
+namespace {
 
-  // What the readings can determine.
-  int torque_readings = 0, on_bottom_torques = 0;
-  for (const io::RigReading& reading : readings.rows) {
-    if (!reading.surface_torque) continue;
-    ++torque_readings;
-    if (reading.activity == io::RigActivity::kDrilling) ++on_bottom_torques;
-  }
+// Which parameters the readings can determine: those asked for (all four when none is), less those
+// the readings cannot (why_not says why: refused when asked for by name, else held with a warning).
+struct FreeParameters {
+  std::vector<int> free;  // indices of the fitted parameters, ascending
+  std::array<std::string, kParameterCount> why_not;
+};
+FreeParameters ChooseFreeParameters(const io::RigReadings& readings, const CalibrationSettings& settings,
+                                    bool has_casing, int on_bottom_torques, CalibrationResult& result) {
+  FreeParameters chosen;
   const bool asked = !settings.fit.empty();
   std::vector<CalibrationParameter> wanted = settings.fit;
   if (!asked) {
     wanted = {CalibrationParameter::kOpenHoleFriction, CalibrationParameter::kCasedHoleFriction,
               CalibrationParameter::kHookLoadOffset, CalibrationParameter::kBitTorqueCoefficient};
   }
-  std::array<std::string, kParameterCount> why_not;
+  auto& why_not = chosen.why_not;
   if (!has_casing) why_not[1] = "the well has no cased hole section (well.hole `cased: true`)";
   if (on_bottom_torques == 0) why_not[3] = "no surface torque was read on bottom (drilling)";
-  std::vector<int> free;
+  std::vector<int>& free = chosen.free;
   for (const CalibrationParameter parameter : wanted) {
     const int k = Index(parameter);
     if (std::find(free.begin(), free.end(), k) != free.end()) continue;
@@ -312,49 +303,11 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
     free.push_back(k);
   }
   std::sort(free.begin(), free.end());
-  const int observations = static_cast<int>(readings.rows.size()) + torque_readings;
-  if (observations <= static_cast<int>(free.size())) {
-    throw InputError({readings.file, 0, 0}, "",
-                     fmt::format("{} values read (hook loads and torques) cannot determine {} parameters", observations,
-                                 free.size()));
-  }
+  return chosen;
+}
 
-  // The channels' scatter: the readings' own first.
-  std::vector<std::pair<double, double>> hooks, torques;
-  for (const io::RigReading& reading : readings.rows) {
-    hooks.emplace_back(reading.bit_md, reading.hook_load);
-    if (reading.surface_torque) torques.emplace_back(reading.bit_md, *reading.surface_torque);
-  }
-  const bool fit_cased = std::find(free.begin(), free.end(), Index(CalibrationParameter::kCasedHoleFriction)) != free.end();
-  Fit fit(model, readings, free, fit_cased, settings.log);
-  // A floor: 0.1 % of the channel's largest reading (readings repeated exactly have no scatter).
-  const auto floor = [](const std::vector<std::pair<double, double>>& values) {
-    double largest = 0.0;
-    for (const auto& [md, v] : values) largest = std::max(largest, std::abs(v));
-    return std::max(1e-3 * largest, 1e-9);
-  };
-  fit.hook_sigma = std::max(SuccessiveDifferenceScatter(hooks), floor(hooks));
-  fit.torque_sigma = torques.empty() ? 1.0 : std::max(SuccessiveDifferenceScatter(torques), floor(torques));
-
-  int iterations = 0;
-  LmOutcome outcome = LevenbergMarquardt(fit, p, settings.max_iterations, iterations);
-  // Refit with each channel's residual RMS as its scatter.
-  const auto channel_rms = [&](const std::vector<ModelledReading>& modelled) {
-    std::vector<double> hook, torque;
-    for (std::size_t i = 0; i < readings.rows.size(); ++i) {
-      if (modelled[i].failed()) continue;
-      hook.push_back(modelled[i].hook_load - readings.rows[i].hook_load);
-      if (readings.rows[i].surface_torque) torque.push_back(modelled[i].surface_torque - *readings.rows[i].surface_torque);
-    }
-    return std::pair{Rms(hook), Rms(torque)};
-  };
-  {
-    const auto [hook_rms, torque_rms] = channel_rms(outcome.modelled);
-    fit.hook_sigma = std::max(hook_rms, floor(hooks));
-    if (!torques.empty()) fit.torque_sigma = std::max(torque_rms, floor(torques));
-    outcome = LevenbergMarquardt(fit, outcome.p, settings.max_iterations, iterations);
-  }
-  const std::vector<ModelledReading>& modelled = outcome.modelled;
+// Refuses a fit whose model failed at more than half of the readings; warns of fewer failures.
+void CheckModelFailures(const std::vector<ModelledReading>& modelled, CalibrationResult& result) {
   int failures = 0;
   for (const ModelledReading& m : modelled) failures += m.failed() ? 1 : 0;
   if (2 * failures > static_cast<int>(modelled.size())) {
@@ -372,11 +325,14 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
     result.warnings.push_back(fmt::format("the model failed at {} of {} readings; they are left out of the fit",
                                           failures, modelled.size()));
   }
+}
 
-  // Covariance, intervals, correlation.
+// Each parameter's value and 95 % interval (Student's t on the residuals' degrees of freedom, the
+// covariance the pseudo-inverse of JᵀJ of the weighted residuals), fitted or held.
+void AddParameters(const LmOutcome& outcome, const FreeParameters& chosen, bool has_casing,
+                   const Eigen::MatrixXd& covariance, CalibrationResult& result) {
   const Eigen::MatrixXd& J = outcome.J;
-  const Eigen::MatrixXd information = J.transpose() * J;
-  Eigen::MatrixXd covariance = information.completeOrthogonalDecomposition().pseudoInverse();
+  const std::vector<int>& free = chosen.free;
   int used = 0;
   for (Eigen::Index i = 0; i < J.rows(); ++i) used += J.row(i).isZero(0.0) ? 0 : 1;
   const int dof = std::max(1, used - static_cast<int>(free.size()));
@@ -393,15 +349,20 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
       fp.standard_error = std::sqrt(std::max(covariance(j, j), 0.0));
       fp.low = fp.value - t * fp.standard_error;
       fp.high = fp.value + t * fp.standard_error;
-      if (information(j, j) <= 0.0) fp.note = "the readings do not move it";
+      if (J.col(j).squaredNorm() <= 0.0) fp.note = "the readings do not move it";
     } else {
-      fp.note = why_not[static_cast<std::size_t>(k)].empty() ? "not asked for" : why_not[static_cast<std::size_t>(k)];
+      const std::string& why = chosen.why_not[static_cast<std::size_t>(k)];
+      fp.note = why.empty() ? "not asked for" : why;
       if (k == 1 && !has_casing) fp.value = std::numeric_limits<double>::quiet_NaN();
     }
     result.parameters.push_back(fp);
   }
-  // What would tell strongly correlated parameters apart: the activities the readings lack, else
-  // readings over a longer stretch of hole.
+}
+
+// The fitted parameters' correlation, with a warning for each pair beyond ±kStronglyCorrelated naming
+// what would tell them apart: the activities the readings lack, else readings over a longer stretch.
+void AddCorrelations(const io::RigReadings& readings, const std::vector<int>& free, const Eigen::MatrixXd& covariance,
+                     CalibrationResult& result) {
   std::vector<std::string> missing;
   for (const io::RigActivity activity : {io::RigActivity::kPickUp, io::RigActivity::kSlackOff,
                                          io::RigActivity::kRotatingOffBottom, io::RigActivity::kDrilling}) {
@@ -433,7 +394,12 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
       }
     }
   }
+}
 
+// Each reading's modelled values and residuals (NaN where the model failed or nothing was read),
+// and each channel's RMS.
+void AddResiduals(const io::RigReadings& readings, const std::vector<ModelledReading>& modelled,
+                  CalibrationResult& result) {
   std::vector<double> hook_residuals, torque_residuals;
   for (std::size_t i = 0; i < readings.rows.size(); ++i) {
     ReadingResidual residual;
@@ -452,6 +418,77 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
   result.torque_rms = Rms(torque_residuals);
   result.hook_load_count = static_cast<int>(hook_residuals.size());
   result.torque_count = static_cast<int>(torque_residuals.size());
+}
+
+}  // namespace
+
+CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, const CalibrationSettings& settings) {
+  CalibrationResult result;
+  result.model = settings.model.kind;
+  ReadingsModel model(c, readings, settings.model);
+  result.bit_diameter = model.bit_diameter();
+  const bool has_casing = model::HasCasedHole(c.input.hole);
+  const ReadingsParameters start = CaseReadingsParameters(c);
+  // The cased hole's start: the case's friction (its cased sections' own are a start only when fitted).
+  Parameters p{start.open_hole_friction, start.open_hole_friction, 0.0, start.bit_torque_coefficient};
+  for (const well::HoleSection& section : c.input.hole) {
+    if (section.cased && section.friction) p[1] = *section.friction;
+  }
+  int torque_readings = 0, on_bottom_torques = 0;
+  for (const io::RigReading& reading : readings.rows) {
+    if (!reading.surface_torque) continue;
+    ++torque_readings;
+    if (reading.activity == io::RigActivity::kDrilling) ++on_bottom_torques;
+  }
+  const FreeParameters chosen = ChooseFreeParameters(readings, settings, has_casing, on_bottom_torques, result);
+  const std::vector<int>& free = chosen.free;
+  const int observations = static_cast<int>(readings.rows.size()) + torque_readings;
+  if (observations <= static_cast<int>(free.size())) {
+    throw InputError({readings.file, 0, 0}, "",
+                     fmt::format("{} values read (hook loads and torques) cannot determine {} parameters", observations,
+                                 free.size()));
+  }
+
+  // The channels' scatter: the readings' own first.
+  std::vector<std::pair<double, double>> hooks, torques;
+  for (const io::RigReading& reading : readings.rows) {
+    hooks.emplace_back(reading.bit_md, reading.hook_load);
+    if (reading.surface_torque) torques.emplace_back(reading.bit_md, *reading.surface_torque);
+  }
+  const bool fit_cased = std::find(free.begin(), free.end(), Index(CalibrationParameter::kCasedHoleFriction)) != free.end();
+  Fit fit(model, readings, free, fit_cased, settings.log);
+  // A floor: 0.1 % of the channel's largest reading (readings repeated exactly have no scatter).
+  const auto floor = [](const std::vector<std::pair<double, double>>& values) {
+    double largest = 0.0;
+    for (const auto& [md, v] : values) largest = std::max(largest, std::abs(v));
+    return std::max(1e-3 * largest, 1e-9);
+  };
+  fit.hook_sigma = std::max(SuccessiveDifferenceScatter(hooks), floor(hooks));
+  fit.torque_sigma = torques.empty() ? 1.0 : std::max(SuccessiveDifferenceScatter(torques), floor(torques));
+
+  int iterations = 0;
+  LmOutcome outcome = LevenbergMarquardt(fit, p, settings.max_iterations, iterations);
+  // Refit with each channel's residual RMS as its scatter.
+  {
+    std::vector<double> hook, torque;
+    for (std::size_t i = 0; i < readings.rows.size(); ++i) {
+      if (outcome.modelled[i].failed()) continue;
+      hook.push_back(outcome.modelled[i].hook_load - readings.rows[i].hook_load);
+      if (readings.rows[i].surface_torque) {
+        torque.push_back(outcome.modelled[i].surface_torque - *readings.rows[i].surface_torque);
+      }
+    }
+    fit.hook_sigma = std::max(Rms(hook), floor(hooks));
+    if (!torques.empty()) fit.torque_sigma = std::max(Rms(torque), floor(torques));
+    outcome = LevenbergMarquardt(fit, outcome.p, settings.max_iterations, iterations);
+  }
+  CheckModelFailures(outcome.modelled, result);
+
+  const Eigen::MatrixXd covariance =
+      (outcome.J.transpose() * outcome.J).completeOrthogonalDecomposition().pseudoInverse();
+  AddParameters(outcome, chosen, has_casing, covariance, result);
+  AddCorrelations(readings, free, covariance, result);
+  AddResiduals(readings, outcome.modelled, result);
   result.hook_load_scatter = fit.hook_sigma;
   result.torque_scatter = fit.torque_sigma;
   result.iterations = iterations;

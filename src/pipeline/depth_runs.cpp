@@ -210,10 +210,10 @@ SurfaceReading DepthRuns::ReadSurface(const VecX& q, const model::LoadParameters
   const model::SystemModel& system = model_.built.system;
   const auto poses = system.Poses(q);
   const VecX rest = VecX::Zero(system.num_velocities());
-  for (const int index : model_.built.support_elements) {
-    const auto* support = dynamic_cast<const model::SupportElement*>(system.elements()[index].get());
-    if (support == nullptr || support->holds_bit()) continue;
-    const Vec6 reaction = support->Reaction(system.StateOf(*support, poses, rest, 0.0, parameters));
+  for (const auto handle : model_.built.supports) {
+    const model::SupportElement& support = system.Get(handle);
+    if (support.holds_bit()) continue;
+    const Vec6 reaction = support.Reaction(system.StateOf(support, poses, rest, 0.0, parameters));
     // The support's moment about x resists the drive's clockwise turn.
     const SurfaceReading at_top{reaction.x(), -reaction[3]};
     if (!above_) return at_top;

@@ -40,6 +40,82 @@ constexpr int kActiveSetRounds = 6;        // of ContactStep's active-set predic
 // that σ and the stiffness scale).
 constexpr double kCorrectionShift = 1e3;
 
+// a·p: a penalty term's gradient along p.
+double Along(const PenaltyTerm& term, const VecX& p) {
+  double sum = 0.0;
+  for (std::size_t j = 0; j < term.indices.size(); ++j) sum += term.gradient[j] * p[term.indices[j]];
+  return sum;
+}
+
+// The piecewise model of ContactStep along a step, m(t p) for t in [0, 1]:
+//   m(tp) = t smoothᵀp + ½ t² pᵀ(K − Σ_touching k a aᵀ)p + Σ ½ k ⟨δ + t a·p⟩² − Σ_touching ½ k δ²,
+// quadratic between the t where a contact opens or closes (Nocedal & Wright §16.7, the piecewise
+// search of a projected method); `smooth_along` = smoothᵀp, `curvature` = pᵀKp, `constant` =
+// −Σ_touching ½ k δ². Returns its least value on (0, 1] and where (`best_t`).
+//
+// Swept once along t: between two breakpoints the touching contacts are fixed and the model is
+// the quadratic a0 + a1 t + ½ a2 t², whose sums change by one contact at each breakpoint (a
+// contact's ½ k (δ + t a·p)² = ½ k δ² + k δ (a·p) t + ½ k (a·p)² t²): O(contacts + breakpoints ×
+// log), where evaluating the model afresh at every candidate cost contacts × breakpoints (a fifth
+// of a 740-body string's solve).
+double PiecewiseModelMinimum(const std::vector<PenaltyTerm>& terms, const std::vector<char>& touching, double constant,
+                             double smooth_along, double curvature, const VecX& p, double& best_t) {
+  const std::size_t count = terms.size();
+  struct Crossing {
+    double t;
+    std::size_t contact;
+  };
+  std::vector<Crossing> crossings;
+  std::vector<double> moved(count);
+  std::vector<char> on(count, 0);
+  double a0 = constant, a1 = smooth_along, a2 = curvature;
+  auto toggle = [&](std::size_t c, double sign) {
+    const double stiffness = terms[c].stiffness, value = terms[c].value, m = moved[c];
+    a0 += sign * 0.5 * stiffness * value * value;
+    a1 += sign * stiffness * value * m;
+    a2 += sign * stiffness * m * m;
+  };
+  for (std::size_t c = 0; c < count; ++c) {
+    moved[c] = Along(terms[c], p);
+    if (touching[c]) a2 -= terms[c].stiffness * moved[c] * moved[c];
+    // Touching just beyond t = 0.
+    on[c] = terms[c].value > 0.0 || (terms[c].value == 0.0 && moved[c] > 0.0);
+    if (on[c]) toggle(c, 1.0);
+    if (moved[c] != 0.0) {
+      const double t = -terms[c].value / moved[c];
+      if (t > 0.0 && t < 1.0) crossings.push_back({t, c});
+    }
+  }
+  std::sort(crossings.begin(), crossings.end(), [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
+  auto value_at = [&](double t) { return a0 + t * (a1 + 0.5 * t * a2); };
+  best_t = 1.0;
+  double best = kInfinity;
+  auto consider = [&](double t) {
+    if (t <= 0.0) return;
+    const double value = value_at(t);
+    if (value < best) {
+      best = value;
+      best_t = t;
+    }
+  };
+  double lo = 0.0;
+  for (std::size_t i = 0; i <= crossings.size(); ++i) {
+    const double hi = i < crossings.size() ? crossings[i].t : 1.0;
+    if (hi > lo) {
+      consider(lo);
+      consider(hi);
+      if (a2 > 0.0) consider(std::clamp(-a1 / a2, lo, hi));
+    }
+    if (i < crossings.size()) {
+      const std::size_t c = crossings[i].contact;
+      toggle(c, on[c] ? -1.0 : 1.0);
+      on[c] = !on[c];
+      lo = hi;
+    }
+  }
+  return best;
+}
+
 struct Step {
   VecX p;
   double shift = 0.0;         // σ of the factorization p was solved with
@@ -83,6 +159,20 @@ class Minimizer {
   // terms, Subproblem on `plain` (H at q).
   Step ContactStep(const SparseMat& k, ShiftedCholesky& plain, const VecX& g, double radius,
                    const std::vector<PenaltyTerm>& terms, EnergyTrustRegionResult& result);
+  // The tangent H at q assembled into assembled_, the metric M (the mass matrix at the first call, its
+  // trace / 3 into mass_scale), the shift's scale max H_ii / max M_ii, and tangent_ holding H and M.
+  void PrepareTangent(const VecX& q, double& mass_scale);
+  // The trial point of a step from q, with its second-order correction where that releases more.
+  struct Trial {
+    VecX q, residual;
+    double released = 0.0;  // Π(q) − Π(trial), J (−∞ where the trial's residual is not finite)
+    double ratio = 0.0;     // released / predicted
+    double norm = 0.0;      // |R| at the trial (∞ where not finite)
+    bool corrected = false;
+  };
+  Trial TryStep(const VecX& q, const Step& step, EnergyTrustRegionResult& result);
+  // Whether the trial is taken; `judged` names the test ("energy", "|R|" or "noise").
+  static bool Acceptable(const Step& step, const Trial& trial, double norm, double energy_noise, const char*& judged);
   // The lowest eigenpair of (H, M) by inverse iteration on the factorization held (shift σ > −λ₁).
   std::pair<double, VecX> LowestMode(ShiftedCholesky& cholesky) const;
   // p + τz on the boundary ‖p + τz‖_M = radius, τ of the sign that lowers the model more.
@@ -284,11 +374,6 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
   const profile::Scope scope("solver: trust-region subproblem");
   if (terms.empty()) return Subproblem(plain, g, radius, result);
   const std::size_t count = terms.size();
-  auto along = [&](const PenaltyTerm& term, const VecX& p) {
-    double sum = 0.0;
-    for (std::size_t j = 0; j < term.indices.size(); ++j) sum += term.gradient[j] * p[term.indices[j]];
-    return sum;
-  };
   auto add = [](const PenaltyTerm& term, double scale, VecX& v) {
     for (std::size_t j = 0; j < term.indices.size(); ++j) v[term.indices[j]] += scale * term.gradient[j];
   };
@@ -301,70 +386,8 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
     add(terms[c], -terms[c].stiffness * terms[c].value, smooth);
     constant -= 0.5 * terms[c].stiffness * terms[c].value * terms[c].value;
   }
-  // The piecewise model along a step, m(t p) for t in [0, 1]:
-  //   m(tp) = t smoothᵀp + ½ t² pᵀ(K − Σ_touching k a aᵀ)p + Σ ½ k ⟨δ + t a·p⟩² − Σ_touching ½ k δ²,
-  // quadratic between the t where a contact opens or closes (Nocedal & Wright §16.7, the piecewise
-  // search of a projected method). Returns its least value on (0, 1] and where (`best_t`).
-  //
-  // Swept once along t: between two breakpoints the touching contacts are fixed and the model is
-  // the quadratic a0 + a1 t + ½ a2 t², whose sums change by one contact at each breakpoint (a
-  // contact's ½ k (δ + t a·p)² = ½ k δ² + k δ (a·p) t + ½ k (a·p)² t²): O(contacts + breakpoints ×
-  // log), where evaluating the model afresh at every candidate cost contacts × breakpoints (a fifth
-  // of a 740-body string's solve).
   auto search = [&](const VecX& p, double& best_t) {
-    struct Crossing {
-      double t;
-      std::size_t contact;
-    };
-    std::vector<Crossing> crossings;
-    std::vector<double> moved(count);
-    std::vector<char> on(count, 0);
-    double a0 = constant, a1 = smooth.dot(p), a2 = p.dot(plain.TangentTimes(k, p));
-    auto toggle = [&](std::size_t c, double sign) {
-      const double stiffness = terms[c].stiffness, value = terms[c].value, m = moved[c];
-      a0 += sign * 0.5 * stiffness * value * value;
-      a1 += sign * stiffness * value * m;
-      a2 += sign * stiffness * m * m;
-    };
-    for (std::size_t c = 0; c < count; ++c) {
-      moved[c] = along(terms[c], p);
-      if (touching[c]) a2 -= terms[c].stiffness * moved[c] * moved[c];
-      // Touching just beyond t = 0.
-      on[c] = terms[c].value > 0.0 || (terms[c].value == 0.0 && moved[c] > 0.0);
-      if (on[c]) toggle(c, 1.0);
-      if (moved[c] != 0.0) {
-        const double t = -terms[c].value / moved[c];
-        if (t > 0.0 && t < 1.0) crossings.push_back({t, c});
-      }
-    }
-    std::sort(crossings.begin(), crossings.end(), [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
-    auto value_at = [&](double t) { return a0 + t * (a1 + 0.5 * t * a2); };
-    best_t = 1.0;
-    double best = kInfinity;
-    auto consider = [&](double t) {
-      if (t <= 0.0) return;
-      const double value = value_at(t);
-      if (value < best) {
-        best = value;
-        best_t = t;
-      }
-    };
-    double lo = 0.0;
-    for (std::size_t i = 0; i <= crossings.size(); ++i) {
-      const double hi = i < crossings.size() ? crossings[i].t : 1.0;
-      if (hi > lo) {
-        consider(lo);
-        consider(hi);
-        if (a2 > 0.0) consider(std::clamp(-a1 / a2, lo, hi));
-      }
-      if (i < crossings.size()) {
-        const std::size_t c = crossings[i].contact;
-        toggle(c, on[c] ? -1.0 : 1.0);
-        on[c] = !on[c];
-        lo = hi;
-      }
-    }
-    return best;
+    return PiecewiseModelMinimum(terms, touching, constant, smooth.dot(p), p.dot(plain.TangentTimes(k, p)), p, best_t);
   };
   // Active-set rounds; each round's step is scored by the piecewise model (at its best length along
   // it) and the best is kept, so that a set that cycles (a few contacts in and out) costs rounds, not
@@ -393,7 +416,7 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
     if (!step.failure.empty()) return round == 0 ? step : best;
     shift_hint = step.interior || step.negative_curvature ? 0.0 : step.shift;
     std::vector<char> predicted(count);
-    for (std::size_t c = 0; c < count; ++c) predicted[c] = terms[c].value + along(terms[c], step.p) > 0.0;
+    for (std::size_t c = 0; c < count; ++c) predicted[c] = terms[c].value + Along(terms[c], step.p) > 0.0;
     double t = 1.0;
     const double model = search(step.p, t);
     if (model < best_model) {
@@ -410,6 +433,75 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
   }
   best.predicted = -best_model;
   return best;
+}
+
+void Minimizer::PrepareTangent(const VecX& q, double& mass_scale) {
+  problem_.IterationMatrixInto(assembled_, options_.time, q, zero_, zero_, 1.0, 0.0, 0.0);
+  const SparseMat& k = assembled_;
+  // The metric: the mass matrix at the start (only the norm of a step and the shift's scale; its
+  // slight change with the state does not matter, and it is not assembled again).
+  if (metric_.size() == 0) {
+    metric_ = problem_.IterationMatrix(options_.time, q, zero_, zero_, 0.0, 0.0, 1.0);
+    mass_scale = metric_.diagonal().sum() / 3.0;
+  }
+  const SparseMat& m = metric_;
+  const double largest_mass = m.diagonal().cwiseAbs().maxCoeff();
+  shift_scale_ = largest_mass > 0.0 ? k.diagonal().cwiseAbs().maxCoeff() / largest_mass : 0.0;
+  if (!(mass_scale > 0.0) || !(shift_scale_ > 0.0) || !std::isfinite(shift_scale_)) {
+    throw LogicError("MinimizeEnergy: the problem has no positive mass matrix (IterationMatrix with cM = 1), or "
+                     "its tangent is zero or not finite");
+  }
+  if (!tangent_) {
+    tangent_ = std::make_unique<ShiftedCholesky>(k, m, problem_.CoordinateBlocks());
+  } else {
+    tangent_->SetStiffness(k);
+  }
+}
+
+Minimizer::Trial Minimizer::TryStep(const VecX& q, const Step& step, EnergyTrustRegionResult& result) {
+  Trial trial;
+  trial.q = problem_.Increment(q, step.p);
+  trial.residual = Residual(trial.q);
+  double released = trial.residual.allFinite() ? -problem_.EnergyChange(q, trial.q) : -kInfinity;
+  if (!std::isfinite(released)) released = -kInfinity;
+  trial.released = released;
+  trial.ratio = step.predicted > 0.0 ? released / step.predicted : -kInfinity;
+  // Every step with its second-order correction, the better of the two taken: a step the energy
+  // accepts still leaves its stiff directions strained by its second-order error (|R| of 1e5–1e6 N
+  // from a few joules released), which the next iteration would otherwise spend on.
+  if (trial.residual.allFinite()) {
+    VecX corrected_q = trial.q;
+    if (SecondOrderCorrection(trial.residual, step.shift, corrected_q, result)) {
+      VecX corrected_residual = Residual(corrected_q);
+      const double corrected_released =
+          corrected_residual.allFinite() ? -problem_.EnergyChange(q, corrected_q) : -kInfinity;
+      if (std::isfinite(corrected_released) && corrected_released > trial.released) {
+        trial.q = std::move(corrected_q);
+        trial.residual = std::move(corrected_residual);
+        trial.released = corrected_released;
+        trial.ratio = trial.released / step.predicted;
+        trial.corrected = true;
+      }
+    }
+  }
+  trial.norm = trial.residual.allFinite() ? trial.residual.norm() : kInfinity;
+  return trial;
+}
+
+bool Minimizer::Acceptable(const Step& step, const Trial& trial, double norm, double energy_noise,
+                           const char*& judged) {
+  if (step.interior && step.predicted < energy_noise) {
+    // Near the energy's resolution: a full Newton step is taken when it lowers |R|, or when the
+    // energy it released still agrees with the model (a ratio that noise would not give).
+    judged = "|R|";
+    return trial.norm < norm || (trial.ratio > kShrinkRatio && trial.ratio < 1.0 / kShrinkRatio);
+  }
+  if (step.predicted < energy_noise) {
+    judged = "noise";
+    return trial.released > -energy_noise && trial.norm < kInfinity;
+  }
+  judged = "energy";
+  return trial.ratio > kAcceptRatio;
 }
 
 EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
@@ -432,26 +524,9 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
   while (true) {
     const double norm = residual.norm();
     result.residual_norm = norm;
-    problem_.IterationMatrixInto(assembled_, options_.time, result.q, zero_, zero_, 1.0, 0.0, 0.0);
+    PrepareTangent(result.q, mass_scale);
     const SparseMat& k = assembled_;
-    // The metric: the mass matrix at the start (only the norm of a step and the shift's scale; its
-    // slight change with the state does not matter, and it is not assembled again).
-    if (metric_.size() == 0) {
-      metric_ = problem_.IterationMatrix(options_.time, result.q, zero_, zero_, 0.0, 0.0, 1.0);
-      mass_scale = metric_.diagonal().sum() / 3.0;
-    }
     const SparseMat& m = metric_;
-    const double largest_mass = m.diagonal().cwiseAbs().maxCoeff();
-    shift_scale_ = largest_mass > 0.0 ? k.diagonal().cwiseAbs().maxCoeff() / largest_mass : 0.0;
-    if (!(mass_scale > 0.0) || !(shift_scale_ > 0.0) || !std::isfinite(shift_scale_)) {
-      throw LogicError("MinimizeEnergy: the problem has no positive mass matrix (IterationMatrix with cM = 1), or "
-                       "its tangent is zero or not finite");
-    }
-    if (!tangent_) {
-      tangent_ = std::make_unique<ShiftedCholesky>(k, m, problem_.CoordinateBlocks());
-    } else {
-      tangent_->SetStiffness(k);
-    }
     ShiftedCholesky& cholesky = *tangent_;
     const int counted = cholesky.factorizations();  // before this iteration
     rounds_ = 0;
@@ -493,45 +568,14 @@ EnergyTrustRegionResult Minimizer::Run(const VecX& q_start) {
     }
     const double step_length = std::sqrt(std::max(step.p.dot(m * step.p), 0.0) / mass_scale);
     const int step_factorizations = cholesky.factorizations() - counted;
-    VecX trial = problem_.Increment(result.q, step.p);
-    VecX trial_residual = Residual(trial);
-    double released = trial_residual.allFinite() ? -problem_.EnergyChange(result.q, trial) : -kInfinity;
-    if (!std::isfinite(released)) released = -kInfinity;
-    double ratio = step.predicted > 0.0 ? released / step.predicted : -kInfinity;
-    bool corrected = false;
     result.factorizations += cholesky.factorizations() - counted;
-    // Every step with its second-order correction, the better of the two taken: a step the energy
-    // accepts still leaves its stiff directions strained by its second-order error (|R| of 1e5–1e6 N
-    // from a few joules released), which the next iteration would otherwise spend on.
-    if (trial_residual.allFinite()) {
-      VecX corrected_q = trial;
-      if (SecondOrderCorrection(trial_residual, step.shift, corrected_q, result)) {
-        VecX corrected_residual = Residual(corrected_q);
-        const double corrected_released =
-            corrected_residual.allFinite() ? -problem_.EnergyChange(result.q, corrected_q) : -kInfinity;
-        if (std::isfinite(corrected_released) && corrected_released > released) {
-          trial = std::move(corrected_q);
-          trial_residual = std::move(corrected_residual);
-          released = corrected_released;
-          ratio = released / step.predicted;
-          corrected = true;
-        }
-      }
-    }
-    const double trial_norm = trial_residual.allFinite() ? trial_residual.norm() : kInfinity;
-    bool accept = false;
+    Trial tried = TryStep(result.q, step, result);
+    VecX& trial = tried.q;
+    VecX& trial_residual = tried.residual;
+    const double released = tried.released, ratio = tried.ratio, trial_norm = tried.norm;
+    const bool corrected = tried.corrected;
     const char* judged = "energy";
-    if (step.interior && step.predicted < energy_noise) {
-      // Near the energy's resolution: a full Newton step is taken when it lowers |R|, or when the
-      // energy it released still agrees with the model (a ratio that noise would not give).
-      accept = trial_norm < norm || (ratio > kShrinkRatio && ratio < 1.0 / kShrinkRatio);
-      judged = "|R|";
-    } else if (step.predicted < energy_noise) {
-      accept = released > -energy_noise && trial_norm < kInfinity;
-      judged = "noise";
-    } else {
-      accept = ratio > kAcceptRatio;
-    }
+    const bool accept = Acceptable(step, tried, norm, energy_noise, judged);
     if (!accept || (ratio < kShrinkRatio && !step.interior)) {
       radius = kShrinkRatio * std::min(radius, step_length);
     } else if (ratio > kGrowRatio && step_length >= kBoundaryFraction * radius) {

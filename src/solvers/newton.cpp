@@ -61,6 +61,12 @@ class NewtonStepper {
 
   // Factorizes K(q) + σ M(q); returns an empty string or the reason it failed.
   std::string Factorize(const VecX& q, double shift = 0.0);
+  // At the top of an iteration with |R| = norm: true when the run ends here, converged or with its
+  // reason (beyond the iterations allowed, or diverging from the first |R|).
+  bool Finished(StepOutcome& out, double norm, double first_norm) const;
+  // The iteration's line in the log (when there is one).
+  void LogStep(const StepOutcome& out, double norm, const LineSearchResult& search, const VecX& dv, double shift,
+               double radius) const;
 
   // NewtonOptions::mass_shift: the full step along dv if it is acceptable (the shift then lowered),
   // or nothing (the shift raised; `failure` says why when it cannot be raised further).
@@ -261,6 +267,34 @@ std::optional<LineSearchResult> NewtonStepper::ShiftedStep(const VecX& q, const 
   return std::nullopt;
 }
 
+bool NewtonStepper::Finished(StepOutcome& out, double norm, double first_norm) const {
+  if (norm <= tolerance_) {
+    out.converged = true;
+    return true;
+  }
+  if (out.iterations >= options_.max_iterations) {
+    out.reason = fmt::format("no convergence within {} iterations", options_.max_iterations);
+    return true;
+  }
+  if (norm > options_.divergence_factor * std::max(first_norm, tolerance_)) {
+    out.reason = fmt::format("diverging (|R| grew {:.3g} times)", norm / first_norm);
+    return true;
+  }
+  return false;
+}
+
+void NewtonStepper::LogStep(const StepOutcome& out, double norm, const LineSearchResult& search, const VecX& dv,
+                            double shift, double radius) const {
+  if (!options_.log) return;
+  options_.log(fmt::format("  Newton {:3d}: |R| {:.4e} N -> {:.4e} N, step {:.3e}{}; {}", out.iterations, norm,
+                           search.residual.allFinite() ? search.residual.norm() : -1.0,
+                           search.step * problem_.StepLength(out.q, dv),
+                           options_.mass_shift ? fmt::format(" (shift {:.3e})", shift)
+                           : options_.max_increment > 0.0 ? fmt::format(" (trust radius {:.3e})", radius)
+                                                          : "",
+                           LargestEntry(problem_, search.residual)));
+}
+
 StepOutcome NewtonStepper::Run(const VecX& q_start) {
   StepOutcome out;
   out.q = q_start;
@@ -282,18 +316,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
     out.largest = LargestEntry(problem_, residual);
     out.history.push_back(norm);
     if (first_norm < 0.0) first_norm = norm;
-    if (norm <= tolerance_) {
-      out.converged = true;
-      return out;
-    }
-    if (out.iterations >= options_.max_iterations) {
-      out.reason = fmt::format("no convergence within {} iterations", options_.max_iterations);
-      return out;
-    }
-    if (norm > options_.divergence_factor * std::max(first_norm, tolerance_)) {
-      out.reason = fmt::format("diverging (|R| grew {:.3g} times)", norm / first_norm);
-      return out;
-    }
+    if (Finished(out, norm, first_norm)) return out;
     if (options_.mass_shift || !reuse || !factorized_ || out.iterations == 0 || stale_) {
       stale_ = false;
       if (std::string failure = Factorize(out.q, shift); !failure.empty()) {
@@ -350,15 +373,7 @@ StepOutcome NewtonStepper::Run(const VecX& q_start) {
           search.step);
       return out;
     }
-    if (options_.log) {
-      options_.log(fmt::format("  Newton {:3d}: |R| {:.4e} N -> {:.4e} N, step {:.3e}{}; {}", out.iterations, norm,
-                               search.residual.allFinite() ? search.residual.norm() : -1.0,
-                               search.step * problem_.StepLength(out.q, dv),
-                               options_.mass_shift ? fmt::format(" (shift {:.3e})", shift)
-                               : options_.max_increment > 0.0 ? fmt::format(" (trust radius {:.3e})", radius)
-                                                              : "",
-                               LargestEntry(problem_, search.residual)));
-    }
+    LogStep(out, norm, search, dv, shift, radius);
     fresh = false;
     out.q = std::move(search.q);
     residual = std::move(search.residual);

@@ -29,7 +29,7 @@ model::BitRockParameters BottomOnly() {
 
 double ContactForce(const model::BuiltModel& built, const VecX& q) {
   const model::SystemModel& system = built.system;
-  const auto& bottom = static_cast<const model::BitBottomElement&>(*system.elements()[built.bit_bottom_element]);
+  const auto& bottom = built.Get(*built.bit_bottom);
   const auto poses = system.Poses(q);
   return bottom.ContactForce(system.StateOf(bottom, poses, VecX::Zero(bottom.local_size()), 0.0, 1.0));
 }
@@ -70,7 +70,7 @@ TEST(BitBottomStatic, TransientStartsOnBottomInBalance) {
   const model::BuiltModel moving = model::BuildSystemModel(moving_input, cache);
   // The contact carries the start's WOB, pressed in by W/k.
   EXPECT_NEAR(ContactForce(moving, q0), wob, 1e-9 * wob);
-  const auto& bottom = static_cast<const model::BitBottomElement&>(*moving.system.elements()[moving.bit_bottom_element]);
+  const auto& bottom = moving.Get(*moving.bit_bottom);
   const auto poses = moving.system.Poses(q0);
   EXPECT_NEAR(bottom.Penetration(moving.system.StateOf(bottom, poses, VecX::Zero(bottom.local_size()), 0.0, 1.0)),
               wob / bottom.stiffness(), 1e-12);

@@ -64,7 +64,7 @@ DrillRun Drill(double torque, double duration) {
   settings.tolerance = 1e-5;
   DrillRun run;
   run.result = RunTransient(built, built.system.ReferencePositions(), settings);
-  const auto& element = static_cast<const model::BitRockElement&>(*built.system.elements()[built.bit_rock_element]);
+  const auto& element = built.Get(*built.bit_rock);
   const auto poses = built.system.Poses(run.result.final_q);
   const model::ElementState state = built.system.StateOf(element, poses, run.result.final_v, duration, 1.0);
   run.penetration = element.PenetrationRate(state);

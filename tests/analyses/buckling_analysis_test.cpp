@@ -242,7 +242,7 @@ TEST(BucklingInWell, TheStringAboveTheModelBringsTheOnsetToDawsonPaslay) {
     const CollarsInAStraightHole collars = Collars(inclination, wob, model::TopCondition::StringAbove);
     cms::ReductionCache cache;
     const model::BuiltModel built = model::BuildSystemModel(collars.input, cache);
-    ASSERT_GE(built.string_above_element, 0);
+    ASSERT_TRUE(built.string_above.has_value());
     const BucklingResult result = RunBuckling(collars.input, built, BucklingSettings{});
     ASSERT_TRUE(result.scaled_wob);
     const double sinusoidal = collars.sinusoidal;
@@ -264,7 +264,7 @@ TEST(BucklingInWell, TheStringAboveTheModelBringsTheOnsetToDawsonPaslay) {
     // The free top at 60°: far below Dawson–Paslay (0.59 of it before the pipe above was modelled).
     const CollarsInAStraightHole free = Collars(inclination, wob, model::TopCondition::Free);
     const model::BuiltModel free_built = model::BuildSystemModel(free.input, cache);
-    EXPECT_EQ(free_built.string_above_element, -1);
+    EXPECT_EQ(free_built.string_above.has_value(), false);
     const BucklingResult free_result = RunBuckling(free.input, free_built, BucklingSettings{});
     std::printf("[ measure  ] %.0f° hole, the top free: critical WOB %.0f N (%.3f of F_sin)\n", degrees,
                 free_result.critical_wob, free_result.critical_wob / sinusoidal);

@@ -33,8 +33,8 @@ int Touching(const model::BuiltModel& built, const VecX& q) {
   const auto poses = built.system.Poses(q);
   const VecX rest = VecX::Zero(built.system.num_velocities());
   int touching = 0;
-  for (const int index : built.contact_elements) {
-    const auto& contact = static_cast<const model::WallContactElement&>(*built.system.elements()[index]);
+  for (const auto handle : built.contacts) {
+    const auto& contact = built.system.Get(handle);
     touching += contact.Result(built.system.StateOf(contact, poses, rest, 0.0, 1.0)).in_contact ? 1 : 0;
   }
   return touching;
@@ -135,8 +135,8 @@ TEST(LoadParameters, FactorsScaleWhatTheyName) {
   model::LoadParameters free_bit;
   free_bit.bit_support_factor = 0.0;
   int bit_supports = 0;
-  for (const int index : built.support_elements) {
-    const auto& support = static_cast<const model::SupportElement&>(*system.elements()[index]);
+  for (const auto handle : built.supports) {
+    const auto& support = system.Get(handle);
     const Vec6 held = support.Reaction(system.StateOf(support, poses, zero, 0.0, 1.0));
     const Vec6 freed = support.Reaction(system.StateOf(support, poses, zero, 0.0, free_bit));
     if (support.holds_bit()) {

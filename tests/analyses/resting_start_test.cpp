@@ -74,10 +74,10 @@ StartForces Measure(const model::ModelInput& input, const model::BuiltModel& bui
       forces.coupling = std::max(forces.coupling, force);
     }
   }
-  const auto& hook = static_cast<const model::SupportElement&>(*system.elements()[built.support_elements.back()]);
+  const auto& hook = system.Get(built.supports.back());
   forces.hook = hook.Reaction(system.StateOf(hook, poses, rest, 0.0, 1.0))[0];
-  for (const int index : built.contact_elements) {
-    const auto& contact = static_cast<const model::WallContactElement&>(*system.elements()[index]);
+  for (const auto handle : built.contacts) {
+    const auto& contact = system.Get(handle);
     const model::WallContactResult result = contact.Result(system.StateOf(contact, poses, rest, 0.0, 1.0));
     if (result.penetration > forces.penetration) {
       forces.penetration = result.penetration;

@@ -51,8 +51,8 @@ TEST(StaticEnergy, TheResidualIsTheGradientOfTheEnergyChange) {
   // The state is a real one: contacts pressed in and the dead moment at work.
   int pressed = 0;
   const auto poses = system.Poses(q);
-  for (const int index : built.contact_elements) {
-    const auto& contact = static_cast<const model::WallContactElement&>(*system.elements()[index]);
+  for (const auto handle : built.contacts) {
+    const auto& contact = system.Get(handle);
     pressed += contact.Result(system.StateOf(contact, poses, zero, 0.0, 1.0)).in_contact ? 1 : 0;
   }
   EXPECT_GT(pressed, 10);

@@ -47,7 +47,7 @@ ModelInput RodWith(const BitRockParameters& p) {
 }
 
 const BitBottomElement& Bottom(const BuiltModel& built) {
-  return static_cast<const BitBottomElement&>(*built.system.elements()[built.bit_bottom_element]);
+  return built.Get(*built.bit_bottom);
 }
 
 // The bottom element's local force at (q, v, t).
@@ -120,7 +120,7 @@ TEST(BitBottomTest, JacobiansMatchCentralDifferences) {
   p.bottom->frequency = 3.0;
   const BuiltModel built = Build(RodWith(p));
   const SystemModel& model = built.system;
-  const ElementProblem problem(model, built.bit_bottom_element);
+  const ElementProblem problem(model, *built.bit_bottom);
   std::mt19937 rng(11);
   for (int trial = 0; trial < 3; ++trial) {
     const VecX q = PerturbedPositions(model, rng, 0.01);
@@ -172,7 +172,7 @@ TEST(BitBottomTest, BuilderDefaultsAndTheCasesWob) {
   // As stiff as the supports: 10 × c·EA/ℓ of the bit body.
   EXPECT_DOUBLE_EQ(Bottom(built).stiffness(), kSupportStiffnessFactor * input.settings.coupling_factor *
                                                   bit.axial_rigidity / bit.element_length);
-  EXPECT_EQ(built.bit_rock_element, -1);  // no torque law
+  EXPECT_EQ(built.bit_rock.has_value(), false);  // no torque law
   // At the reference (touching, δ = 0) the contact pushes nothing; the case's WOB is not applied,
   // its TOB is (no law replaces it).
   const VecX zero = VecX::Zero(built.system.num_velocities());
@@ -180,7 +180,7 @@ TEST(BitBottomTest, BuilderDefaultsAndTheCasesWob) {
   EXPECT_NEAR(r[0], 0.0, 1e-9);
   EXPECT_NEAR(r[3], -300.0, 1e-9);
   // None of it without a bottom.
-  EXPECT_EQ(Build(RodInput(2, 4, 5)).bit_bottom_element, -1);
+  EXPECT_EQ(Build(RodInput(2, 4, 5)).bit_bottom.has_value(), false);
 }
 
 TEST(BitBottomTest, RefusedWithDetournaysLawAndBadParameters) {
@@ -208,7 +208,7 @@ TEST(BitSideCuttingTest, ForceAgainstTheLateralVelocity) {
   const double ks = 3e7;
   const BuiltModel built = Build(RodWith(SideCutting(ks)));
   const SystemModel& model = built.system;
-  const ForceElement& side = *model.elements()[built.bit_side_element];
+  const ForceElement& side = built.Get(*built.bit_side);
   const VecX q = model.ReferencePositions();
   VecX v = VecX::Zero(model.num_velocities());
   const double spin = 12.0;
@@ -227,7 +227,7 @@ TEST(BitSideCuttingTest, ForceAgainstTheLateralVelocity) {
 TEST(BitSideCuttingTest, JacobiansMatchCentralDifferences) {
   const BuiltModel built = Build(RodWith(SideCutting(3e7)));
   const SystemModel& model = built.system;
-  const ElementProblem problem(model, built.bit_side_element);
+  const ElementProblem problem(model, *built.bit_side);
   std::mt19937 rng(7);
   for (const double spin : {-8.0, 0.02, 0.3}) {
     const VecX q = testing::SpunPositions(model, 0.4, 0.01, rng);

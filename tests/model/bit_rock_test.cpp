@@ -145,7 +145,7 @@ TEST(BitRockLawTest, DerivativesMatchCentralDifferencesOnEveryBranch) {
 struct BitModel {
   BuiltModel built;
   const BitRockElement& element() const {
-    return static_cast<const BitRockElement&>(*built.system.elements()[built.bit_rock_element]);
+    return built.Get(*built.bit_rock);
   }
 };
 
@@ -255,7 +255,7 @@ TEST(BitRockElementTest, BuilderTakesTheRadiusFromTheBitOd) {
   EXPECT_EQ(m.element().bodies()[0], &m.built.system.bodies().front());
   ModelInput none = RodInput(1, 4, 5);
   cms::ReductionCache cache;
-  EXPECT_EQ(BuildSystemModel(none, cache).bit_rock_element, -1);
+  EXPECT_EQ(BuildSystemModel(none, cache).bit_rock.has_value(), false);
 }
 
 // At rest the law puts nothing on the bit; what remains of the operation's bit loads shows in the

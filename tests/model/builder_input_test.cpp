@@ -40,7 +40,7 @@ TEST(BuildSystemModel, ABitAloneInAWellHasNoWallContact) {
   input.hole = {well::HoleSection{std::nullopt, 0.3, std::nullopt}};
   input.bit_md = 100.0;
   cms::ReductionCache cache;
-  EXPECT_TRUE(BuildSystemModel(input, cache).contact_elements.empty());
+  EXPECT_TRUE(BuildSystemModel(input, cache).contacts.empty());
 }
 
 }  // namespace

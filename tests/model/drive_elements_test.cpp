@@ -49,13 +49,13 @@ TEST(TopDriveElement, FollowsTheDriveAngleOverThousandsOfTurns) {
   cms::ReductionCache cache;
   const TopDrive drive{TopDriveMode::Speed, {120.0 * kRpm, 2.0}};
   const BuiltModel built = DrivenRod(cache, drive, std::nullopt);
-  ASSERT_GE(built.top_drive_element, 0);
-  const auto& element = static_cast<const TopDriveElement&>(*built.system.elements()[built.top_drive_element]);
+  ASSERT_TRUE(built.top_drive.has_value());
+  const auto& element = built.Get(*built.top_drive);
   const double t = 1000.0;
   const double angle = element.DriveAngle(t);
   EXPECT_NEAR(angle, 120.0 * kRpm * (t - 1.0), 1e-9 * angle);
   ASSERT_GT(angle / (2.0 * kPi), 1990.0);
-  const ElementProblem problem(built.system, built.top_drive_element);
+  const ElementProblem problem(built.system, *built.top_drive);
   for (const double lag : {0.0, 1e-4}) {
     VecX dv = VecX::Zero(built.system.num_velocities());
     // Clockwise looking down-hole is about −x; the top behind the drive by `lag`.
@@ -81,8 +81,8 @@ TEST(TopDriveElement, SpeedDriveJacobiansMatchCentralDifferences) {
   cms::ReductionCache cache;
   const TopDrive drive{TopDriveMode::Speed, {120.0 * kRpm, 2.0}};
   const BuiltModel built = DrivenRod(cache, drive, std::nullopt);
-  const auto& element = static_cast<const TopDriveElement&>(*built.system.elements()[built.top_drive_element]);
-  const ElementProblem problem(built.system, built.top_drive_element);
+  const auto& element = built.Get(*built.top_drive);
+  const ElementProblem problem(built.system, *built.top_drive);
   std::mt19937 rng(17);
   // During the ramp and 72 turns later; the top bent and twisted off the drive by ~0.05 rad so that
   // every term (the frame's curvature, the torque's geometric part) is visible.
@@ -102,8 +102,8 @@ TEST(TopDriveElement, TorqueDriveAppliesItsTorqueWithAnExactTangent) {
   cms::ReductionCache cache;
   const TopDrive drive{TopDriveMode::Torque, {5000.0, 1.0}};
   const BuiltModel built = DrivenRod(cache, drive, std::nullopt);
-  const auto& element = static_cast<const TopDriveElement&>(*built.system.elements()[built.top_drive_element]);
-  const ElementProblem problem(built.system, built.top_drive_element);
+  const auto& element = built.Get(*built.top_drive);
+  const ElementProblem problem(built.system, *built.top_drive);
   std::mt19937 rng(5);
   const VecX q = SpunPositions(built.system, 300.0, 0.05, rng);
   const VecX v = SpinningVelocities(built.system, -10.0, 0.5, rng);
@@ -131,8 +131,8 @@ TEST(BlockElement, VelocityAndHookLoadJacobiansMatchCentralDifferences) {
   for (const BlockDrive block : {BlockDrive{BlockMode::Velocity, {0.5, 1.0}}, BlockDrive{BlockMode::HookLoad, {2e5, 0.0}},
                                  BlockDrive{BlockMode::HookLoad, {-2e5, 0.3}}, line}) {
     const BuiltModel built = DrivenRod(cache, std::nullopt, block);
-    ASSERT_GE(built.block_element, 0);
-    const ElementProblem problem(built.system, built.block_element);
+    ASSERT_TRUE(built.block.has_value());
+    const ElementProblem problem(built.system, *built.block);
     std::mt19937 rng(23);
     // Within mm of the block (the ramp has pulled 2.5 mm at t = 0.1 s): the spring force k e
     // (k ~ 1e10 N/m) stays small enough for central differences in v to keep 1e-6 of the damping.
@@ -156,8 +156,8 @@ TEST(BlockElement, VelocityAndHookLoadJacobiansMatchCentralDifferences) {
 TEST(BlockElement, HookLoadOfATopBehindTheBlock) {
   cms::ReductionCache cache;
   const BuiltModel built = DrivenRod(cache, std::nullopt, BlockDrive{BlockMode::Velocity, {0.5, 1.0}});
-  const auto& element = static_cast<const BlockElement&>(*built.system.elements()[built.block_element]);
-  const ElementProblem problem(built.system, built.block_element);
+  const auto& element = built.Get(*built.block);
+  const ElementProblem problem(built.system, *built.block);
   const double t = 3.0, travel = 0.5 * (t - 0.5);
   for (const double behind : {0.0, 1e-3}) {
     VecX dv = VecX::Zero(built.system.num_velocities());
@@ -181,8 +181,8 @@ TEST(BlockElement, ASofterLineStartsWithTheHoldsForce) {
   block.line_stiffness = line_stiffness;
   block.start_top_displacement = start;
   const BuiltModel built = DrivenRod(cache, std::nullopt, block);
-  const auto& element = static_cast<const BlockElement&>(*built.system.elements()[built.block_element]);
-  const ElementProblem problem(built.system, built.block_element);
+  const auto& element = built.Get(*built.block);
+  const ElementProblem problem(built.system, *built.block);
   const double axial = 2.1e11 * kPi * 0.0762 * 0.0762 / 4.0 / (5.08 / 8.0);
   const double hold = kSupportStiffnessFactor * 100.0 * axial;  // N/m, the hold the line replaces
   const auto hook_load = [&](double travel) {  // the rod moved up-hole by `travel`, at rest, t = 0

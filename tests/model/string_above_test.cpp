@@ -130,8 +130,8 @@ ModelInput CollarsInAWell(TopCondition top) {
 TEST(StringAboveElement, TheBuilderGivesItTheTopsSectionWeightAndClearance) {
   cms::ReductionCache cache;
   const BuiltModel built = BuildSystemModel(CollarsInAWell(TopCondition::StringAbove), cache);
-  ASSERT_GE(built.string_above_element, 0);
-  const auto& element = static_cast<const StringAboveElement&>(*built.system.elements()[built.string_above_element]);
+  ASSERT_TRUE(built.string_above.has_value());
+  const auto& element = built.Get(*built.string_above);
   const StringAboveParameters& p = element.parameters();
   const double area = kPi / 4.0 * (0.1715 * 0.1715 - 0.0714 * 0.0714);
   const double weight = 7800.0 * 9.81 * area;  // no fluid
@@ -153,10 +153,10 @@ TEST(StringAboveElement, TheBuilderGivesItTheTopsSectionWeightAndClearance) {
   doubled.weight_on_bit = 4.0e4;
   EXPECT_NEAR(element.Tension(doubled), 0.5 * (weight * 10.0 - 4.0e4), 1e-6);
   // The free top, or supports the case gives: none.
-  EXPECT_EQ(BuildSystemModel(CollarsInAWell(TopCondition::Free), cache).string_above_element, -1);
+  EXPECT_EQ(BuildSystemModel(CollarsInAWell(TopCondition::Free), cache).string_above.has_value(), false);
   ModelInput supported = CollarsInAWell(TopCondition::StringAbove);
   supported.supports = DefaultWellSupports(20.0);
-  EXPECT_EQ(BuildSystemModel(supported, cache).string_above_element, -1);
+  EXPECT_EQ(BuildSystemModel(supported, cache).string_above.has_value(), false);
 }
 
 // The tangent against central differences of the residual at a bent, turned state, in tension (the
@@ -167,9 +167,9 @@ TEST(StringAboveElement, JacobianMatchesCentralDifferences) {
     ModelInput input = CollarsInAWell(TopCondition::StringAbove);
     input.operation.weight_on_bit = wob;
     const BuiltModel built = BuildSystemModel(input, cache);
-    const auto& element = static_cast<const StringAboveElement&>(*built.system.elements()[built.string_above_element]);
+    const auto& element = built.Get(*built.string_above);
     ASSERT_FALSE(element.Stiffness(LoadParameters(1.0)).isZero(0.0));
-    const ElementProblem problem(built.system, built.string_above_element);
+    const ElementProblem problem(built.system, *built.string_above);
     std::mt19937 rng(5);
     const VecX q = testing::PerturbedPositions(built.system, rng, 0.05);
     const VecX v = VecX::Zero(built.system.num_velocities());

@@ -148,7 +148,7 @@ ContactModel WithContacts(const ModelInput& input, const std::shared_ptr<const W
   cms::ReductionCache cache;
   m.built = std::make_unique<BuiltModel>(BuildSystemModel(input, cache));
   // The input has no hole profile, so the builder adds no wall contacts of its own.
-  if (!m.built->contact_elements.empty()) throw LogicError("WithContacts: the built model has wall contacts");
+  if (!m.built->contacts.empty()) throw LogicError("WithContacts: the built model has wall contacts");
   const SystemModel& source = m.built->system;
   std::vector<Body> bodies = source.bodies();
   std::vector<std::unique_ptr<ForceElement>> elements;
@@ -158,9 +158,7 @@ ContactModel WithContacts(const ModelInput& input, const std::shared_ptr<const W
       for (const Body* body : element->bodies()) mapped.push_back(&bodies[source.IndexOf(body)]);
       elements.push_back(std::make_unique<ForwardedElement>(element.get(), std::move(mapped)));
     }
-    for (int index : m.built->support_elements) {
-      m.supports.push_back(dynamic_cast<const SupportElement*>(source.elements()[index].get()));
-    }
+    for (const auto handle : m.built->supports) m.supports.push_back(&source.Get(handle));
   }
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Body& body = bodies[b];
@@ -628,7 +626,7 @@ std::vector<double> SupportHighSideReactions(const StaticString& s) {
   const VecX rest = VecX::Zero(s.m.system->num_velocities());
   std::vector<double> reactions;
   for (std::size_t i = 0; i < s.m.supports.size(); ++i) {
-    const ForceElement& forwarded = *s.m.system->elements()[s.m.built->support_elements[i]];
+    const ForceElement& forwarded = *s.m.system->elements()[static_cast<std::size_t>(s.m.built->supports[i].index())];
     reactions.push_back(s.m.supports[i]->Reaction(StateOf(s.m, forwarded, poses, rest))[kZ]);
   }
   return reactions;
@@ -718,8 +716,8 @@ TEST(WallContactBuilder, FrictionVelocityIsTheSpinTimesTheContactRadiusUnlessGiv
   auto velocities = [&](const ModelInput& in) {
     const BuiltModel built = BuildSystemModel(in, cache);
     std::vector<std::pair<double, double>> pairs;  // (R_c, v_ε)
-    for (const int index : built.contact_elements) {
-      const auto& contact = static_cast<const WallContactElement&>(*built.system.elements()[index]);
+    for (const auto handle : built.contacts) {
+      const auto& contact = built.system.Get(handle);
       pairs.emplace_back(contact.parameters().contact_radius, contact.parameters().regularization_velocity);
     }
     return pairs;

@@ -258,7 +258,7 @@ TEST(VtkFiles, ContactFreeCaseWithoutAWellWritesOnlyTheStringAndNoNonFiniteNumbe
   collar.outer_diameter = 6.75 * kIn;
   collar.length = 10.0;
   c.input.string.components = {collar};
-  const model::BuiltModel built{model::SystemModel({}, {}, 10.0), {}, {}, -1, -1, 0.0, -1};
+  const model::BuiltModel built{.system = model::SystemModel({}, {}, 10.0)};
   analyses::StaticResult result;
   for (int i = 0; i <= 4; ++i) {
     analyses::StaticNodeResult node;

@@ -117,7 +117,7 @@ void ExpectSameModelAndStatic(const io::Case& original, const io::Case& again, c
   pipeline::CaseModel model = pipeline::BuildCaseModel(again);
   EXPECT_EQ(model.built.system.bodies().size(), expected.built.system.bodies().size()) << what;
   EXPECT_EQ(model.built.system.num_velocities(), expected.built.system.num_velocities()) << what;
-  EXPECT_EQ(model.built.contact_elements.size(), expected.built.contact_elements.size()) << what;
+  EXPECT_EQ(model.built.contacts.size(), expected.built.contacts.size()) << what;
   const auto reference = pipeline::RunCaseStatic(original, expected);
   const auto result = pipeline::RunCaseStatic(again, model);
   ASSERT_TRUE(result.converged) << what;

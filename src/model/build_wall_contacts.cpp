@@ -1,0 +1,60 @@
+// The builder's wall contacts (model/build_parts.hpp).
+#include <cmath>
+#include <memory>
+
+#include "model/build_parts.hpp"
+#include "model/contact_circles.hpp"
+#include "model/hole_friction.hpp"
+#include "model/wall_contact.hpp"
+#include "well/hole.hpp"
+
+namespace drillflex::model {
+
+// Wall contact at every node (a joint once, on the upper body's start node): tool joints and
+// blades as point contacts, each circle as stiff as the string length it stands for
+// (model/contact_circles.hpp).
+std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& draft) {
+  const ModelInput& input = draft.input;
+  const std::vector<Body>& placed = draft.bodies;
+  std::vector<ElementHandle<WallContactElement>> contacts;
+  if (!input.trajectory || input.hole.empty()) return contacts;
+  auto wellbore = std::make_shared<const Wellbore>(Wellbore{*input.trajectory, well::HoleProfile(input.hole)});
+  struct ContactNode { const Body* body; int node; double s; };
+  std::vector<ContactNode> nodes;
+  for (std::size_t b = 0; b < placed.size(); ++b) {
+    const Body& body = placed[b];
+    // The bit cuts the hole it sits in (its support holds it at the hole centre): no contact.
+    if (input.string.components[body.component].type == ComponentType::Bit) continue;
+    for (int k = 0; k < body.node_count(); ++k) {
+      if (k == body.node_count() - 1 && b + 1 != placed.size()) continue;  // the next body's node 0 carries it
+      nodes.push_back({&body, k, body.NodeS(k)});
+    }
+  }
+  std::vector<double> positions;
+  for (const ContactNode& node : nodes) positions.push_back(node.s);
+  // A string that is a bit alone has no node to touch the wall (found by fuzz/case_file).
+  const std::vector<ContactCircle> circles =
+      nodes.empty() ? std::vector<ContactCircle>{} : ContactCircles(input.string, positions);
+  const ContactSettings& contact = input.settings.contact;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const auto [body, k, s] = nodes[i];
+    const double stiffness = contact.stiffness * circles[i].length;  // N/m per metre × m
+    WallContactParameters parameters;
+    parameters.contact_radius = 0.5 * circles[i].diameter;
+    parameters.normal_stiffness = stiffness;
+    parameters.normal_damping = 2.0 * contact.damping_ratio * std::sqrt(stiffness * ElementInertia(*body)[0]);
+    // The friction of the hole section the contact starts in (the string moves centimetres in a
+    // static, a stand at most in a transient: a contact keeps its section).
+    const HoleFriction friction = HoleFrictionAt(wellbore->hole, contact, input.bit_md - s);
+    parameters.tangential_friction = friction.friction.tangential;
+    parameters.axial_friction = friction.friction.axial;
+    parameters.cased = friction.cased;
+    parameters.regularization_velocity =
+        contact.friction_velocity.value_or(kFrictionRegularizationSpin * parameters.contact_radius);
+    parameters.prescribed_sliding = input.static_sliding;
+    contacts.push_back(draft.elements.Add<WallContactElement>(body, k, wellbore, parameters, input.bit_md - s));
+  }
+  return contacts;
+}
+
+}  // namespace drillflex::model
