@@ -101,5 +101,47 @@ TEST(StringLimitsScreen, ZonesAndUtilisationsOfAGivenAxialForce) {
   EXPECT_EQ(limits.notes.size(), 2u);  // the pipe rated as E-75; no make-up torque
 }
 
+// Fatigue in a dogleg: the same pipe (joints 9 m apart: L = 4.5 m) in a build of 3°/30 m from 100 to 400 m
+// MD, rotating, 200 kN of tension, no bending of its own in the static. By hand (Python, RP 7G's grade E
+// line for the default E-75): σ_t = 200 kN / A = 8519.773 psi, σ_allowed = 119 929 736.3 Pa,
+// K L = √(T/(E I)) 4.5 = 1.801589, σ_b = E D κ/2 · KL/tanh KL = 44 278 170.75 Pa with κ = 1.7453293e-3 /m:
+// the fatigue utilisation 0.3692009; Lubinski's permissible curvature 2 σ_allowed/(E D) · tanh KL/KL =
+// 4.7273154e-3 /m (8.1257 °/30 m).
+TEST(StringLimitsScreen, FatigueInABuildByHand) {
+  const io::Case c = io::ParseCase(R"(name: fatigue
+units: SI
+gravity: 9.81
+well:
+  survey: [[0, 0, 0], [100, 0, 0], [400, 30, 0]]
+  hole: [{diameter: 0.2159}]
+  bit_md: 350
+fluid: {density: 1200}
+string:
+  - {type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}
+  - {type: pipe, od: 0.127, id: 0.1086, length: 9, count: 30, joint_od: 0.1683, joint_id: 0.0826, joint_length: 0.5}
+model: {body_length: 9, elements_per_body: 4, modes_per_body: 4}
+operation: {wob: 40 kN, rpm: 60}
+)",
+                                   "fatigue.yaml");
+  StaticNodeResult node;
+  node.s = 100.0;  // MD 250 m: pipe in the build
+  node.axial_force = 200e3;
+  std::vector<StaticNodeResult> nodes{node};
+  const StringLimits limits = ComputeStringLimits(c.input, nodes, 1.25);
+  ASSERT_EQ(limits.nodes.size(), 1u);
+  const NodeLimits& at = limits.nodes[0];
+  EXPECT_NEAR(at.hole_curvature, 1.7453293e-3, 1e-9);
+  EXPECT_NEAR(at.allowable_bending_stress, 119929736.3, 1.0);
+  EXPECT_NEAR(at.dogleg_bending_stress, 44278170.75, 1.0);
+  EXPECT_NEAR(at.fatigue_utilisation, 0.3692009, 1e-6);
+  EXPECT_NEAR(at.max_dogleg, 4.7273154e-3, 1e-9);
+  EXPECT_EQ(limits.fatigue.limit, "fatigue");
+  EXPECT_DOUBLE_EQ(limits.fatigue.md, 250.0);
+  // Not rotating: no fatigue screen.
+  io::Case still = c;
+  still.input.operation.rotary_speed = 0.0;
+  EXPECT_FALSE(std::isfinite(ComputeStringLimits(still.input, nodes, 1.25).fatigue.utilisation));
+}
+
 }  // namespace
 }  // namespace drillflex::analyses
