@@ -10,6 +10,7 @@
 
 #include "analyses/string_limits.hpp"
 #include "io/case.hpp"
+#include "pipeline/roadmap.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -141,6 +142,40 @@ operation: {wob: 40 kN, rpm: 60}
   io::Case still = c;
   still.input.operation.rotary_speed = 0.0;
   EXPECT_FALSE(std::isfinite(ComputeStringLimits(still.input, nodes, 1.25).fatigue.utilisation));
+}
+
+// A roadmap point's buckled zones (pipeline::RoadmapPointLimits): the same pipe alone, 2000 m down a
+// straight 30° hole, drilling on bottom with 300 kN: the soft string rotating carries no axial friction, so
+// the compression falls from the WOB by w cos 30° = 234.674 N/m up the hole. By hand: beyond F_h (238 386.08 N)
+// for (300 000 − 238 386.08)/234.674 = 262.55 m above the bit, beyond F_s (168 564.41 N) for 560.08 m; the
+// zones end at the soft string's stations (every 30 ft, 9.144 m). Slacking off from the bit (off bottom)
+// nothing is in compression.
+TEST(StringLimitsScreen, RoadmapPointBuckledZonesByHand) {
+  const io::Case c = io::ParseCase(R"(name: zones
+units: SI
+gravity: 9.81
+well:
+  survey: [[0, 30, 0], [2500, 30, 0]]
+  hole: [{diameter: 0.2159}]
+  bit_md: 2000
+fluid: {density: 1200}
+string:
+  - {type: pipe, od: 0.127, id: 0.1086, length: 9, count: 20, joint_od: 0.1683, joint_id: 0.0826, joint_length: 0.5}
+operation: {wob: 300 kN, rpm: 60}
+)",
+                                   "zones.yaml");
+  pipeline::RoadmapPoint point;
+  point.bit_md = 2000.0;
+  point.friction = 0.25;
+  const pipeline::RoadmapLimits limits = pipeline::RoadmapPointLimits(c, analyses::RoadmapSettings{}, point);
+  EXPECT_TRUE(limits.slack_off_zones.empty());
+  ASSERT_EQ(limits.on_bottom_zones.size(), 2u);
+  EXPECT_EQ(limits.on_bottom_zones[0].state, BucklingState::Sinusoidal);
+  EXPECT_NEAR(limits.on_bottom_zones[0].md_from, 2000.0 - 560.08, 9.2);
+  EXPECT_DOUBLE_EQ(limits.on_bottom_zones[0].md_to, 2000.0);
+  EXPECT_EQ(limits.on_bottom_zones[1].state, BucklingState::Helical);
+  EXPECT_NEAR(limits.on_bottom_zones[1].md_from, 2000.0 - 262.55, 9.2);
+  EXPECT_DOUBLE_EQ(limits.on_bottom_zones[1].md_to, 2000.0);
 }
 
 }  // namespace
