@@ -46,20 +46,17 @@ void ScreenFatigue(const model::ModelInput& input, const model::Component& compo
   const double tension = std::max(result.axial_force, 0.0);
   node.fatigue_bending_stress = std::abs(result.bending_moment) * 0.5 * body.outer_diameter / body.second_moment();
   const bool jointed = component.type == model::ComponentType::Pipe || component.type == model::ComponentType::Hwdp;
+  const double half_spacing = 0.5 * component.joint_spacing.value_or(component.length);
+  node.allowable_bending_stress = model::AllowableBendingStress(tension / body.area(), node.yield);
   if (input.trajectory) {
     node.hole_curvature = input.trajectory->Curvature(node.md).norm();
     if (jointed) {
-      const double half_spacing = 0.5 * component.joint_spacing.value_or(component.length);
       node.dogleg_bending_stress = model::DoglegBendingStress(node.hole_curvature, modulus, body.outer_diameter,
                                                               tension, stiffness, half_spacing);
       node.fatigue_bending_stress = std::max(node.fatigue_bending_stress, node.dogleg_bending_stress);
+      node.max_dogleg = model::MaxPermissibleCurvature(node.allowable_bending_stress, modulus, body.outer_diameter,
+                                                       tension, stiffness, half_spacing);
     }
-  }
-  node.allowable_bending_stress = model::AllowableBendingStress(tension / body.area(), node.yield);
-  if (jointed && input.trajectory) {
-    node.max_dogleg = model::MaxPermissibleCurvature(node.allowable_bending_stress, modulus, body.outer_diameter,
-                                                     tension, stiffness,
-                                                     0.5 * component.joint_spacing.value_or(component.length));
   }
   // The tension alone past the endurance line (beyond yield already): a stress of 1 Pa allowed, the
   // utilisation finite and huge.

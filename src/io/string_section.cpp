@@ -177,11 +177,11 @@ void ReadConnection(const YamlView& item, model::Component& component) {
                        units::DefaultUnit(Quantity::Diameter, system));
   };
   if (!(id < model::PinThreadRoot(*found))) {
-    item.Child("joint_id").Fail(fmt::format("a {} pin's bore must be smaller than its thread's root diameter ({})",
+    item.Child("joint_id").Fail(fmt::format("the {} pin's bore must be smaller than its thread's root diameter ({})",
                                             found->name, shown(model::PinThreadRoot(*found))));
   }
   if (!(od > found->counterbore)) {
-    item.Child("joint_od").Fail(fmt::format("a {} box's OD must be larger than its counterbore ({})", found->name,
+    item.Child("joint_od").Fail(fmt::format("the {} box's OD must be larger than its counterbore ({})", found->name,
                                             shown(found->counterbore)));
   }
   component.connection = found->name;

@@ -102,6 +102,19 @@ TEST(StringLimitsScreen, ZonesAndUtilisationsOfAGivenAxialForce) {
   EXPECT_EQ(limits.notes.size(), 2u);  // the pipe rated as E-75; no make-up torque
 }
 
+// The same 5 in pipe (`joints` of it, above `below`'s components) in an 8-1/2 in hole along `survey`
+// (MD, inclination, azimuth rows), 1200 kg/m³ mud, g 9.81, the bit at `bit_md`, under `operation`.
+io::Case PipeCase(const std::string& survey, double bit_md, const std::string& below, int joints,
+                  const std::string& operation) {
+  const std::string text = fmt::format(
+      "name: pipe\nunits: SI\ngravity: 9.81\nwell: {{survey: {}, hole: [{{diameter: 0.2159}}], bit_md: {}}}\n"
+      "fluid: {{density: 1200}}\nstring:\n{}"
+      "  - {{type: pipe, od: 0.127, id: 0.1086, length: 9, count: {}, joint_od: 0.1683, joint_id: 0.0826, "
+      "joint_length: 0.5}}\nmodel: {{body_length: 9, elements_per_body: 4, modes_per_body: 4}}\noperation: {}\n",
+      survey, bit_md, below, joints, operation);
+  return io::ParseCase(text, "pipe.yaml");
+}
+
 // Fatigue in a dogleg: the same pipe (joints 9 m apart: L = 4.5 m) in a build of 3°/30 m from 100 to 400 m
 // MD, rotating, 200 kN of tension, no bending of its own in the static. By hand (Python, RP 7G's grade E
 // line for the default E-75): σ_t = 200 kN / A = 8519.773 psi, σ_allowed = 119 929 736.3 Pa,
@@ -109,21 +122,9 @@ TEST(StringLimitsScreen, ZonesAndUtilisationsOfAGivenAxialForce) {
 // the fatigue utilisation 0.3692009; Lubinski's permissible curvature 2 σ_allowed/(E D) · tanh KL/KL =
 // 4.7273154e-3 /m (8.1257 °/30 m).
 TEST(StringLimitsScreen, FatigueInABuildByHand) {
-  const io::Case c = io::ParseCase(R"(name: fatigue
-units: SI
-gravity: 9.81
-well:
-  survey: [[0, 0, 0], [100, 0, 0], [400, 30, 0]]
-  hole: [{diameter: 0.2159}]
-  bit_md: 350
-fluid: {density: 1200}
-string:
-  - {type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}
-  - {type: pipe, od: 0.127, id: 0.1086, length: 9, count: 30, joint_od: 0.1683, joint_id: 0.0826, joint_length: 0.5}
-model: {body_length: 9, elements_per_body: 4, modes_per_body: 4}
-operation: {wob: 40 kN, rpm: 60}
-)",
-                                   "fatigue.yaml");
+  const io::Case c = PipeCase("[[0, 0, 0], [100, 0, 0], [400, 30, 0]]", 350.0,
+                              "  - {type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}\n", 30,
+                              "{wob: 40 kN, rpm: 60}");
   StaticNodeResult node;
   node.s = 100.0;  // MD 250 m: pipe in the build
   node.axial_force = 200e3;
@@ -151,19 +152,7 @@ operation: {wob: 40 kN, rpm: 60}
 // zones end at the soft string's stations (every 30 ft, 9.144 m). Slacking off from the bit (off bottom)
 // nothing is in compression.
 TEST(StringLimitsScreen, RoadmapPointBuckledZonesByHand) {
-  const io::Case c = io::ParseCase(R"(name: zones
-units: SI
-gravity: 9.81
-well:
-  survey: [[0, 30, 0], [2500, 30, 0]]
-  hole: [{diameter: 0.2159}]
-  bit_md: 2000
-fluid: {density: 1200}
-string:
-  - {type: pipe, od: 0.127, id: 0.1086, length: 9, count: 20, joint_od: 0.1683, joint_id: 0.0826, joint_length: 0.5}
-operation: {wob: 300 kN, rpm: 60}
-)",
-                                   "zones.yaml");
+  const io::Case c = PipeCase("[[0, 30, 0], [2500, 30, 0]]", 2000.0, "", 20, "{wob: 300 kN, rpm: 60}");
   pipeline::RoadmapPoint point;
   point.bit_md = 2000.0;
   point.friction = 0.25;
