@@ -1,10 +1,12 @@
 #include "analyses/string_limits.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
 #include <fmt/format.h>
 
+#include "model/dogleg_fatigue.hpp"
 #include "model/string_limits.hpp"
 #include "well/hole.hpp"
 
@@ -33,6 +35,32 @@ void AddZones(const std::vector<NodeLimits>& nodes, BucklingState state, std::ve
     if (!in && open) zones.push_back(zone), open = false;
   }
   if (open) zones.push_back(zone);
+}
+
+// The fatigue screen of a rotating station (ComputeStringLimits): node's yield set, result its static's.
+void ScreenFatigue(const model::ModelInput& input, const model::Component& component, const StaticNodeResult& result,
+                   NodeLimits& node) {
+  const fe::HollowSection body{component.outer_diameter, component.inner_diameter};
+  const double modulus = input.materials.at(component.material).youngs_modulus;
+  const double stiffness = modulus * body.second_moment();
+  const double tension = std::max(result.axial_force, 0.0);
+  node.fatigue_bending_stress = std::abs(result.bending_moment) * 0.5 * body.outer_diameter / body.second_moment();
+  const bool jointed = component.type == model::ComponentType::Pipe || component.type == model::ComponentType::Hwdp;
+  const double half_spacing = 0.5 * component.joint_spacing.value_or(component.length);
+  node.allowable_bending_stress = model::AllowableBendingStress(tension / body.area(), node.yield);
+  if (input.trajectory) {
+    node.hole_curvature = input.trajectory->Curvature(node.md).norm();
+    if (jointed) {
+      node.dogleg_bending_stress = model::DoglegBendingStress(node.hole_curvature, modulus, body.outer_diameter,
+                                                              tension, stiffness, half_spacing);
+      node.fatigue_bending_stress = std::max(node.fatigue_bending_stress, node.dogleg_bending_stress);
+      node.max_dogleg = model::MaxPermissibleCurvature(node.allowable_bending_stress, modulus, body.outer_diameter,
+                                                       tension, stiffness, half_spacing);
+    }
+  }
+  // The tension alone past the endurance line (beyond yield already): a stress of 1 Pa allowed, the
+  // utilisation finite and huge.
+  node.fatigue_utilisation = node.fatigue_bending_stress / std::max(node.allowable_bending_stress, 1.0);
 }
 
 }  // namespace
@@ -71,6 +99,7 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
   std::set<int> assumed;  // components whose yield is taken as E-75's
   bool any_torque_limit = false;
   const double default_yield = model::FindSteelGrade(model::kDefaultGrade)->yield;
+  const bool rotating = input.operation.rotary_speed > 0.0;
   for (const StaticNodeResult& result : nodes) {
     NodeLimits node;
     node.s = result.s;
@@ -88,6 +117,7 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
       }
       node.allowable_stress = node.yield / design_factor;
       node.stress_utilisation = node.von_mises_stress / node.allowable_stress;
+      if (rotating && std::isfinite(node.yield)) ScreenFatigue(input, component, result, node);
     }
     if (component.makeup_torque) {
       any_torque_limit = true;
@@ -109,11 +139,13 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
     Consider(limits.yield, "yield", node.stress_utilisation, node);
     Consider(limits.makeup_torque, "makeup_torque", node.torque_utilisation, node);
     Consider(limits.helical_buckling, "helical_buckling", node.buckling_utilisation, node);
+    Consider(limits.fatigue, "fatigue", node.fatigue_utilisation, node);
     limits.nodes.push_back(node);
   }
   AddZones(limits.nodes, BucklingState::Sinusoidal, limits.zones);
   AddZones(limits.nodes, BucklingState::Helical, limits.zones);
-  for (const LimitUtilisation* each : {&limits.yield, &limits.makeup_torque, &limits.helical_buckling}) {
+  for (const LimitUtilisation* each :
+       {&limits.yield, &limits.makeup_torque, &limits.helical_buckling, &limits.fatigue}) {
     if (std::isfinite(each->utilisation) &&
         (!std::isfinite(limits.closest.utilisation) || each->utilisation > limits.closest.utilisation)) {
       limits.closest = *each;

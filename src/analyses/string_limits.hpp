@@ -35,6 +35,13 @@ struct NodeLimits {
   double helical_load = kNoLimit;          // Chen's F_h, N
   double buckling_utilisation = kNoLimit;  // compression / F_h (F_h > 0)
   BucklingState buckling = BucklingState::NotScreened;
+  // Fatigue (a rotating string only: rpm > 0; model/dogleg_fatigue.hpp), NaN where it does not apply.
+  double hole_curvature = kNoLimit;             // the hole's dogleg at the station, 1/m (in a well)
+  double dogleg_bending_stress = kNoLimit;      // pipe and HWDP: Lubinski's E D κ/2 · KL/tanh KL, Pa
+  double max_dogleg = kNoLimit;                 // pipe and HWDP: Lubinski's permissible curvature, 1/m
+  double fatigue_bending_stress = kNoLimit;     // the larger of the static's M c/I and the dogleg's, Pa
+  double allowable_bending_stress = kNoLimit;   // RP 7G's endurance limit under the station's tension, Pa
+  double fatigue_utilisation = kNoLimit;        // fatigue_bending_stress / allowable_bending_stress
 };
 
 // A stretch of stations beyond a buckling load, MD from (the shallower end) to.
@@ -45,7 +52,7 @@ struct BuckledZone {
 
 // The largest utilisation of one limit and where; limit "" and NaN when none applies.
 struct LimitUtilisation {
-  std::string limit;  // "yield", "makeup_torque", "helical_buckling"
+  std::string limit;  // "yield", "makeup_torque", "helical_buckling", "fatigue"
   double utilisation = kNoLimit;
   double s = 0.0, md = 0.0;  // m
   int component = -1;
@@ -56,7 +63,8 @@ struct StringLimits {
   std::vector<NodeLimits> nodes;
   std::vector<BuckledZone> zones;  // sinusoidal zones (they include the helical ones), then helical
   LimitUtilisation yield, makeup_torque, helical_buckling;
-  LimitUtilisation closest;        // the largest of the three
+  LimitUtilisation fatigue;        // a rotating string's worst dogleg (or bending) for fatigue
+  LimitUtilisation closest;        // the largest of the four
   // The assumptions the answer rests on, in words (a yield taken as E-75's, no make-up torque given).
   std::vector<std::string> notes;
 };
@@ -79,6 +87,11 @@ BucklingLoads BucklingLoadsAt(const model::ModelInput& input, double s, double m
 // length (model::BuoyedWeightPerLength), E I its body's, θ the hole's inclination at the station and r
 // the radial clearance of the component's contact diameter (model::ContactDiameter: its tool joints',
 // its blades', else its body's) in the hole there. A vertical station (F_s = 0) is not screened.
+// A rotating string (input.operation.rotary_speed > 0) is screened for fatigue at every station of a
+// graded steel (the bit and other materials not): the bending stress, the larger of the static's own
+// (M c/I on the body) and, for pipe and HWDP, Lubinski's in the hole's dogleg under the station's tension
+// (L half the joint spacing: joint_spacing, else the item's length), against RP 7G's allowable bending
+// stress under the tensile stress N/A (model/dogleg_fatigue.hpp).
 StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,
                                  double design_factor);
 

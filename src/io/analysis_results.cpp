@@ -28,6 +28,16 @@ struct OutputUnits {
 
 double StationMd(const Case& c, double s) { return c.well ? c.well->bit_md - s : s; }
 
+json UtilisationJson(const Case& c, const analyses::LimitUtilisation& limit) {
+  const OutputUnits out{c.output_units};
+  if (limit.component < 0) return nullptr;
+  return {{"limit", limit.limit},
+          {"utilisation", limit.utilisation},
+          {"s", out(limit.s, Quantity::Length)},
+          {"md", out(limit.md, Quantity::Length)},
+          {"component", c.input.string.components.at(static_cast<std::size_t>(limit.component)).name}};
+}
+
 void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& files) {
   const OutputUnits out{c.output_units};
   json& root = files.json();
@@ -176,16 +186,6 @@ json BitJson(const Case& c, const analyses::BitReport& bit) {
             {"threshold", out(tendency.threshold, Quantity::Force)}}}};
 }
 
-json UtilisationJson(const Case& c, const analyses::LimitUtilisation& limit) {
-  const OutputUnits out{c.output_units};
-  if (limit.component < 0) return nullptr;
-  return {{"limit", limit.limit},
-          {"utilisation", limit.utilisation},
-          {"s", out(limit.s, Quantity::Length)},
-          {"md", out(limit.md, Quantity::Length)},
-          {"component", c.input.string.components.at(static_cast<std::size_t>(limit.component)).name}};
-}
-
 // The string's limits along the static (analyses/string_limits.hpp): per-station arrays, the buckled
 // zones, each limit's largest utilisation and the closest; a limit that does not apply is 0 at a station
 // and left out of the summary.
@@ -194,7 +194,9 @@ json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
   const analyses::StringLimits limits = analyses::ComputeStringLimits(c.input, result.nodes, c.limits.design_factor);
   json s = json::array(), md = json::array(), yield = json::array(), allowable = json::array(),
        von_mises = json::array(), stress = json::array(), makeup = json::array(), torque = json::array(),
-       sinusoidal = json::array(), helical = json::array(), buckling = json::array(), state = json::array();
+       sinusoidal = json::array(), helical = json::array(), buckling = json::array(), state = json::array(),
+       fatigue_stress = json::array(), fatigue_allowable = json::array(), fatigue = json::array(),
+       dogleg = json::array(), max_dogleg = json::array();
   // A limit that does not apply at a station (the bit, a material without a yield, no make-up torque
   // given, no room to buckle into) is written 0: results.json holds no null.
   const auto shown = [&out](double si, Quantity quantity) {
@@ -214,6 +216,11 @@ json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
     helical.push_back(shown(node.helical_load, Quantity::Force));
     buckling.push_back(ratio(node.buckling_utilisation));
     state.push_back(analyses::BucklingStateName(node.buckling));
+    fatigue_stress.push_back(shown(node.fatigue_bending_stress, Quantity::Stress));
+    fatigue_allowable.push_back(shown(node.allowable_bending_stress, Quantity::Stress));
+    fatigue.push_back(ratio(node.fatigue_utilisation));
+    dogleg.push_back(shown(node.hole_curvature, Quantity::DoglegSeverity));
+    max_dogleg.push_back(shown(node.max_dogleg, Quantity::DoglegSeverity));
   }
   json zones = json::array();
   for (const analyses::BuckledZone& zone : limits.zones) {
@@ -225,9 +232,23 @@ json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
   json summary = json::object();
   for (const auto& [key, limit] : {std::pair{"yield", &limits.yield}, std::pair{"makeup_torque", &limits.makeup_torque},
                                    std::pair{"helical_buckling", &limits.helical_buckling},
-                                   std::pair{"closest", &limits.closest}}) {
+                                   std::pair{"fatigue", &limits.fatigue}, std::pair{"closest", &limits.closest}}) {
     json entry = UtilisationJson(c, *limit);
     if (!entry.is_null()) summary[key] = std::move(entry);
+  }
+  // The worst station for fatigue: the hole's dogleg there and Lubinski's permissible one (pipe, HWDP).
+  if (summary.contains("fatigue")) {
+    const auto at = std::find_if(limits.nodes.begin(), limits.nodes.end(), [&limits](const analyses::NodeLimits& node) {
+      return node.s == limits.fatigue.s && node.fatigue_utilisation == limits.fatigue.utilisation;
+    });
+    if (at != limits.nodes.end()) {
+      summary["fatigue"]["dogleg_severity"] = shown(at->hole_curvature, Quantity::DoglegSeverity);
+      if (std::isfinite(at->max_dogleg)) {
+        summary["fatigue"]["max_dogleg_severity"] = shown(at->max_dogleg, Quantity::DoglegSeverity);
+      }
+      summary["fatigue"]["bending_stress"] = shown(at->fatigue_bending_stress, Quantity::Stress);
+      summary["fatigue"]["allowable_bending_stress"] = shown(at->allowable_bending_stress, Quantity::Stress);
+    }
   }
   return {{"design_factor", limits.design_factor},
           {"nodes",
@@ -242,7 +263,12 @@ json StaticLimitsJson(const Case& c, const analyses::StaticResult& result) {
             {"sinusoidal_load", sinusoidal},
             {"helical_load", helical},
             {"buckling_utilisation", buckling},
-            {"buckling", state}}},
+            {"buckling", state},
+            {"fatigue_bending_stress", fatigue_stress},
+            {"allowable_bending_stress", fatigue_allowable},
+            {"fatigue_utilisation", fatigue},
+            {"dogleg_severity", dogleg},
+            {"max_dogleg_severity", max_dogleg}}},
           {"buckled_zones", zones},
           {"summary", summary},
           {"notes", limits.notes}};

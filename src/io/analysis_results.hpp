@@ -9,6 +9,7 @@
 #include "analyses/static_analysis.hpp"
 #include "analyses/tendency_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
+#include "analyses/string_limits.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "io/case.hpp"
 #include "io/result_files.hpp"
@@ -59,5 +60,9 @@ RuleOfThumbSpeed ComputeRuleOfThumbCriticalSpeed(const Case& c);
 
 // MD of a station: bit MD − s with a well, s without one (measured along the string from the bit).
 double StationMd(const Case& c, double s);
+
+// One limit's largest utilisation and where (results.json `static.limits.summary` entries: limit,
+// utilisation, s, md, component), in the case's output units; null when no station has the limit.
+nlohmann::json UtilisationJson(const Case& c, const analyses::LimitUtilisation& limit);
 
 }  // namespace drillflex::io

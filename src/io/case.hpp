@@ -31,9 +31,20 @@ struct OutputConfig {
   bool vtk = true;     // string.vtp, well.vtp, contacts.vtp (ParaView)
 };
 
+// `limits.wear`: casing wear (model/casing_wear.hpp) over a run of rotating hours at the bit MD, or
+// drilled from `from_md` to the bit MD at `rop`, at `rotary_speed`.
+struct WearConfig {
+  double wear_factor = 0.0;              // 1/Pa
+  std::optional<double> rotating_time;   // s, at the case's bit MD
+  std::optional<double> rate_of_penetration;  // m/s, with from_md
+  std::optional<double> from_md;         // m
+  double rotary_speed = 0.0;             // rad/s: the case's `wear.rpm`, else operation.rpm
+};
+
 // The case's `limits:` (analyses/string_limits.hpp): the allowable stress is yield / design_factor.
 struct LimitsConfig {
   double design_factor = model::kDefaultDesignFactor;
+  std::optional<WearConfig> wear;
 };
 
 struct Case {

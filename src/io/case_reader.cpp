@@ -63,16 +63,7 @@ Case ReadRoot(const YamlView& root, const std::string& file, const std::string& 
     if (const auto report = output->OptionalChild("report")) c.output.report = report->AsBool();
     if (const auto vtk = output->OptionalChild("vtk")) c.output.vtk = vtk->AsBool();
   }
-  if (const auto limits = top.PresentChild("limits")) {
-    limits->ExpectMap("the string's limits ({design_factor: 1.25})");
-    limits->AllowOnlyKeys({"design_factor"});
-    if (const auto factor = limits->OptionalChild("design_factor")) {
-      c.limits.design_factor = factor->AsQuantity(Quantity::Dimensionless);
-      if (!(c.limits.design_factor >= 1.0 && c.limits.design_factor <= 3.0)) {
-        factor->Fail("expected a design factor between 1 and 3 (the allowable stress is yield / design factor)");
-      }
-    }
-  }
+  if (const auto limits = top.PresentChild("limits")) c.limits = ReadLimitsSection(*limits, c);
   CheckCaseConsistency(c, top);
   CompleteModelInput(c);
   return c;

@@ -30,6 +30,9 @@ model::Operation ReadOperationSection(const YamlView& node);
 analyses::AnalysesConfig ReadAnalysesSection(const YamlView& node, const model::Operation& operation);
 model::TopDrive ReadTopDrive(const YamlView& node, const model::Operation& operation);
 model::BlockDrive ReadBlock(const YamlView& node, const model::Operation& operation);
+// `limits:` (io/limits_section.cpp): the design factor and casing wear; `c` read up to its operation
+// and well (a wear run needs a cased section and a rotary speed).
+LimitsConfig ReadLimitsSection(const YamlView& node, const Case& c);
 // `analyses.transient.bit_rock` (io/bit_rock_section.cpp).
 model::BitRockParameters ReadBitRockSection(const YamlView& node);
 

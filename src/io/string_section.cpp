@@ -3,6 +3,7 @@
 
 #include "io/case_sections.hpp"
 #include "model/string_limits.hpp"
+#include "model/tool_joint_torque.hpp"
 
 namespace drillflex::io {
 namespace {
@@ -44,7 +45,7 @@ std::vector<std::string> AllowedComponentKeys(ComponentType type) {
       break;
     case ComponentType::Pipe:
     case ComponentType::Hwdp:
-      keys.insert(keys.end(), {"joint_od", "joint_id", "joint_length", "joint_spacing"});
+      keys.insert(keys.end(), {"joint_od", "joint_id", "joint_length", "joint_spacing", "connection"});
       break;
     case ComponentType::Motor:
       keys.insert(keys.end(), {"bend", "bend_to_bit", "toolface", "rev_per_volume", "lobes", "blade_od", "blade_length"});
@@ -149,6 +150,44 @@ void ReadRatingKeys(const YamlView& item, model::Component& component) {
   component.makeup_torque = item.OptionalPositive("makeup_torque", Quantity::Moment);
 }
 
+// A tool joint's connection by name (pipe and HWDP): its make-up torque by API RP 7G's formula for the
+// joint's OD and pin ID (model/tool_joint_torque.hpp) where no `makeup_torque` is given.
+void ReadConnection(const YamlView& item, model::Component& component) {
+  const auto connection = item.OptionalChild("connection");
+  if (!connection) return;
+  const std::string name = connection->AsString();
+  const auto found = model::FindRotaryConnection(name);
+  if (!found) {
+    std::vector<std::string> names;
+    for (const model::RotaryConnection& known : model::RotaryConnections()) names.emplace_back(known.name);
+    connection->Fail(fmt::format("unknown connection '{}'; expected one of: {} (or give 'makeup_torque')", name,
+                                 JoinWords(names)));
+  }
+  if (item.OptionalChild("makeup_torque")) {
+    item.Child("makeup_torque").Fail("give either 'makeup_torque' or a 'connection' to compute it from, not both");
+  }
+  if (!component.joint_diameter || !component.joint_inner_diameter) {
+    connection->Fail(fmt::format("the make-up torque of {} needs the tool joint's 'joint_od' and 'joint_id' (the pin's bore)",
+                                 found->name));
+  }
+  const double od = *component.joint_diameter, id = *component.joint_inner_diameter;
+  const units::System system = item.context().system;
+  const auto shown = [system](double diameter) {
+    return fmt::format("{:.4g} {}", units::FromSI(diameter, Quantity::Diameter, system),
+                       units::DefaultUnit(Quantity::Diameter, system));
+  };
+  if (!(id < model::PinThreadRoot(*found))) {
+    item.Child("joint_id").Fail(fmt::format("the {} pin's bore must be smaller than its thread's root diameter ({})",
+                                            found->name, shown(model::PinThreadRoot(*found))));
+  }
+  if (!(od > found->counterbore)) {
+    item.Child("joint_od").Fail(fmt::format("the {} box's OD must be larger than its counterbore ({})", found->name,
+                                            shown(found->counterbore)));
+  }
+  component.connection = found->name;
+  component.makeup_torque = model::ConnectionTorsionalStrength(*found, od, id).makeup_torque;
+}
+
 model::Component ReadComponent(const YamlView& item, const std::map<std::string, fe::Material>& materials) {
   item.ExpectMap("a component {type, od, id, length, ...}", false);
   model::Component component;
@@ -186,6 +225,7 @@ model::Component ReadComponent(const YamlView& item, const std::map<std::string,
     default: break;
   }
   ReadRatingKeys(item, component);
+  ReadConnection(item, component);
   return component;
 }
 

@@ -65,7 +65,7 @@ std::vector<well::HoleSection> ReadHole(const YamlView& node) {
   for (std::size_t i = 0; i < node.size(); ++i) {
     const YamlView item = node.Item(i);
     item.ExpectMap("a hole section {to: MD, diameter: D}", false);
-    item.AllowOnlyKeys({"to", "diameter", "diameter_at_end", "cased", "friction", "axial_friction"});
+    item.AllowOnlyKeys({"to", "diameter", "diameter_at_end", "cased", "friction", "axial_friction", "wall"});
     well::HoleSection section;
     section.to_md = item.OptionalPositive("to", Quantity::Length);
     section.diameter = item.Positive("diameter", Quantity::Diameter);
@@ -78,6 +78,13 @@ std::vector<well::HoleSection> ReadHole(const YamlView& node) {
       if (mu && !(*mu >= 0.0 && *mu <= kMaxFriction)) {
         item.Child(key).Fail(fmt::format("expected a friction coefficient from 0 to {:g}", kMaxFriction));
       }
+    }
+    section.wall = item.OptionalPositive("wall", Quantity::Diameter);
+    if (section.wall && !section.cased) {
+      item.Child("wall").Fail("a wall thickness is the casing's (casing wear): give it on a section with 'cased: true'");
+    }
+    if (section.wall && !(*section.wall < 0.25 * section.diameter)) {
+      item.Child("wall").Fail("expected a casing wall thickness below a quarter of the section's diameter (its bore)");
     }
     const bool last = i + 1 == node.size();
     if (!last && !section.to_md) item.Fail("only the last hole section may omit 'to' (it runs to the bottom)");

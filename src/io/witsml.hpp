@@ -70,6 +70,8 @@ struct WitsmlComponent {
   std::optional<WitsmlValue> joint_od, joint_id, joint_length; // drill pipe, HWDP (connections)
   std::optional<WitsmlValue> bend, bend_to_bit;               // motor: angle, distance from the bit
   std::optional<int> lobes;                                   // motor: rotor lobes
+  std::string grade;                                          // an API grade's name (model/string_limits.hpp), else ""
+  std::optional<WitsmlValue> makeup_torque;                   // the connections' smallest tqMakeup
   WitsmlOrigin origin;
 };
 

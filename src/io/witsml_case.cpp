@@ -146,6 +146,8 @@ std::string ComponentLine(const WitsmlComponent& component, const ValueText& val
   add("bend", component.bend, Quantity::Angle);
   if (component.bend) add("bend_to_bit", component.bend_to_bit, Quantity::Length);
   if (component.lobes) line += fmt::format(", lobes: {}", *component.lobes);
+  if (!component.grade.empty()) line += fmt::format(", grade: {}", component.grade);
+  add("makeup_torque", component.makeup_torque, Quantity::Moment);
   return line + "}";
 }
 

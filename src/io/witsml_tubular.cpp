@@ -8,6 +8,7 @@
 #include "core/types.hpp"
 #include "io/witsml_component_types.hpp"
 #include "io/witsml_reader.hpp"
+#include "model/string_limits.hpp"
 
 namespace drillflex::io {
 namespace {
@@ -69,6 +70,10 @@ void ReadToolJoints(const WitsmlReader& reader, const pugi::xml_node& node, Wits
     const auto od = reader.OptionalMeasure(connection, "od", Quantity::Diameter);
     const auto id = reader.OptionalMeasure(connection, "id", Quantity::Diameter);
     const auto length = reader.OptionalMeasure(connection, "len", Quantity::Length);
+    // The weakest connection's make-up torque is the component's torque limit.
+    const auto makeup = reader.OptionalMeasure(connection, "tqMakeup", Quantity::Moment);
+    if (makeup && !(makeup->si > 0.0)) reader.Fail(reader.Child(connection, "tqMakeup"), "the make-up torque must be positive");
+    if (makeup && (!component.makeup_torque || makeup->si < component.makeup_torque->si)) component.makeup_torque = makeup;
     if (od && (!component.joint_od || od->si > component.joint_od->si)) component.joint_od = od;
     if (id && (!component.joint_id || id->si < component.joint_id->si)) component.joint_id = id;
     if (length) {
@@ -78,8 +83,8 @@ void ReadToolJoints(const WitsmlReader& reader, const pugi::xml_node& node, Wits
         component.joint_length = length;
       }
     }
-    reader.WarnUnmapped(connection, {"od", "id", "len", "position", "typeThread", "sizeThread"},
-                        "a tool joint is its OD, ID and length");
+    reader.WarnUnmapped(connection, {"od", "id", "len", "position", "typeThread", "sizeThread", "tqMakeup"},
+                        "a tool joint is its OD, ID, length and make-up torque");
   }
   if (component.joint_od && component.joint_od->si < component.od.si) {
     reader.Fail(node, "the connection's OD must not be smaller than the pipe body's OD");
@@ -163,6 +168,14 @@ Read ReadComponent(const WitsmlReader& reader, const pugi::xml_node& node) {
     ReadMotor(reader, node, read);
     used.insert(used.end(), {"bend", "motor"});
   }
+  // The API grade, where the document names one drillflex knows (its minimum yield rates the component).
+  if (const pugi::xml_node grade = reader.Child(node, "grade")) {
+    const std::string name = TrimmedText(grade);
+    if (const auto found = model::FindSteelGrade(name)) component.grade = found->name;
+    else reader.Warn(grade, fmt::format("<grade> not mapped: '{}' is not an API drill-pipe grade drillflex rates (E-75, "
+                                        "X-95, G-105, S-135): give the component's 'yield' in the case", name));
+  }
+  used.push_back("grade");
   if (const pugi::xml_node material = reader.Child(node, "typeMaterial")) {
     if (const auto name = MapMaterialType(TrimmedText(material))) component.material = *name;
     else reader.Warn(material, fmt::format("'{}' is not a drillflex material: the type's default is taken", TrimmedText(material)));
@@ -228,6 +241,11 @@ model::Component ComponentOf(const WitsmlComponent& witsml) {
   component.bend_angle = si(witsml.bend);
   component.bend_to_bit = si(witsml.bend_to_bit);
   component.lobes = witsml.lobes;
+  if (const auto grade = model::FindSteelGrade(witsml.grade)) {
+    component.grade = grade->name;
+    component.yield_strength = grade->yield;
+  }
+  component.makeup_torque = si(witsml.makeup_torque);
   component.source_line = witsml.origin.line;
   return component;
 }

@@ -49,6 +49,9 @@ struct Component {
   std::string grade;
   PipeClass pipe_class = PipeClass::New;
   std::optional<double> makeup_torque;
+  // Drill pipe and HWDP: the tool joints' rotary-shouldered connection ("NC50"), whose API RP 7G make-up
+  // torque (model/tool_joint_torque.hpp) is the make-up torque above when none is given; "" none.
+  std::string connection;
   int source_line = 0;       // line in the case file, for messages
 };
 

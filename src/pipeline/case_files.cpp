@@ -3,6 +3,8 @@
 #include "io/analysis_results.hpp"
 #include "io/report_html.hpp"
 #include "io/vtk_files.hpp"
+#include "pipeline/casing_wear_run.hpp"
+#include "pipeline/transient_limits.hpp"
 
 namespace drillflex::pipeline {
 
@@ -16,6 +18,7 @@ io::ResultFiles ComposeResultFiles(const io::Case& c, const CaseResults& results
   // string.vtp draw it.
   if (results.static_result) {
     io::AddStaticResults(c, *results.static_result, files);
+    AddCasingWearResults(c, files);
     if (options.report) report.AddStatic(c, input, *results.static_result);
     if (options.vtk) io::AddStaticVtk(c, results.model.built, *results.static_result, files);
   }
@@ -32,6 +35,7 @@ io::ResultFiles ComposeResultFiles(const io::Case& c, const CaseResults& results
   if (results.tendency) io::AddTendencyResults(c, *results.tendency, files);
   if (results.transient) {
     io::AddTransientResults(c, *results.transient, files);
+    if (results.transient_setup) AddTransientLimits(c, results.transient_setup->moving, *results.transient, files);
     if (options.report) report.AddTransient(c, input, *results.transient);
     if (options.vtk && results.transient_setup) {
       io::AddTransientVtk(c, results.transient_setup->moving, *results.transient, files);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
+#include "analyses/string_limits.hpp"
 #include "io/case.hpp"
 #include "io/result_files.hpp"
 
@@ -47,6 +48,9 @@ struct RoadmapLimits {
   // (analyses/string_limits.hpp's screen); the slack-off hook load itself when it is helically buckled
   // off bottom; NaN when all its weight on the bit does not reach it.
   double helical_slack_off = std::numeric_limits<double>::quiet_NaN();
+  // The soft string's buckled zones (analyses/string_limits.hpp's screen on its axial force) slacking off
+  // off bottom and drilling on bottom at the case's WOB and torque on bit, at the point's friction factor.
+  std::vector<analyses::BuckledZone> slack_off_zones, on_bottom_zones;
 };
 RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSettings& settings,
                                  const RoadmapPoint& point);

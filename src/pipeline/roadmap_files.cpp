@@ -79,6 +79,17 @@ RoadmapTables Tabulate(const io::Case& c, const analyses::RoadmapSettings& setti
       cells.push_back(std::isfinite(shown) ? io::CsvTable::Number(shown) : "");
       row[column.name] = std::isfinite(shown) ? nlohmann::json(shown) : nlohmann::json(nullptr);
     }
+    // The buckled zones slacking off and drilling (the soft string's), MD from-to.
+    nlohmann::json zones = nlohmann::json::array();
+    for (const auto& [run, list] : {std::pair{"slack_off", &limits.slack_off_zones}, std::pair{"on_bottom", &limits.on_bottom_zones}}) {
+      for (const analyses::BuckledZone& zone : *list) {
+        zones.push_back({{"run", run},
+                         {"kind", analyses::BucklingStateName(zone.state)},
+                         {"md_from", out(zone.md_from, Quantity::Length)},
+                         {"md_to", out(zone.md_to, Quantity::Length)}});
+      }
+    }
+    row["buckled_zones"] = zones;
     table.AddCells(std::move(cells));
     tables.rows.push_back(std::move(row));
   }

@@ -32,6 +32,23 @@ HelicalScreen ScreenHelical(const model::ModelInput& input, const analyses::Soft
   return screen;
 }
 
+// The buckled zones of the soft string under `operation`: its stations read as a static's (s, MD, axial
+// force) by the limits' screen.
+std::vector<analyses::BuckledZone> SoftZones(const model::ModelInput& input, const analyses::SoftStringOperation& operation) {
+  std::vector<analyses::StaticNodeResult> nodes;
+  for (const analyses::SoftStringStation& station : analyses::ComputeSoftString(input, operation).stations) {
+    analyses::StaticNodeResult node;
+    node.s = station.s;
+    node.has_wall = true;
+    node.md = station.md;
+    node.axial_force = station.axial_force;
+    nodes.push_back(node);
+  }
+  model::ModelInput still = input;  // the zones alone: no fatigue screen
+  still.operation.rotary_speed = 0.0;
+  return analyses::ComputeStringLimits(still, nodes, 1.0).zones;
+}
+
 }  // namespace
 
 RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSettings& settings,
@@ -57,6 +74,12 @@ RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSetti
   operation.axial_friction = operation.tangential_friction = point.friction;
   if (settings.cased_friction) operation.cased_friction = model::WallFriction{*settings.cased_friction, *settings.cased_friction};
   operation.max_element_length = model::kDefaultJointSpacing;  // as the soft roadmap's runs
+  limits.slack_off_zones = SoftZones(input, operation);
+  analyses::SoftStringOperation drilling = operation;
+  drilling.motion = analyses::SoftStringMotion::Rotating;
+  drilling.weight_on_bit = input.operation.weight_on_bit;
+  drilling.torque_on_bit = input.operation.torque_on_bit;
+  limits.on_bottom_zones = SoftZones(input, drilling);
   const HelicalScreen off_bottom = ScreenHelical(input, operation, 0.0);
   if (off_bottom.ratio >= 1.0) {
     limits.helical_slack_off = off_bottom.hook_load;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "analyses/bit_tendency.hpp"
@@ -63,6 +65,9 @@ void WriteStaticLimits(std::ostream& out, const io::Case& c, const analyses::Sta
   out << "    " << line("yield (von Mises / (yield / design factor))", limits.yield) << "\n";
   out << "    " << line("make-up torque", limits.makeup_torque) << "\n";
   out << "    " << line("helical buckling (compression / F_hel)", limits.helical_buckling) << "\n";
+  if (std::isfinite(limits.fatigue.utilisation)) {
+    out << "    " << line("fatigue (bending stress / RP 7G endurance limit)", limits.fatigue) << "\n";
+  }
   if (limits.closest.component >= 0) {
     out << fmt::format("    closest: {} {:.3g}{}\n", limits.closest.limit, limits.closest.utilisation,
                        limits.closest.utilisation >= 1.0 ? "  ** BEYOND THE LIMIT **" : "");

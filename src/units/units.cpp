@@ -60,13 +60,14 @@ constexpr std::array kQuantities{
     QuantityInfo{Quantity::FlowRate, "a flow rate", {3, 0, -1, 0}, "m3/s", "gpm"},
     QuantityInfo{Quantity::RevolutionsPerVolume, "revolutions per volume (angle per volume)",
                  {-3, 0, 0, 1}, "rev/m3", "rev/gal"},
+    QuantityInfo{Quantity::WearFactor, "a wear factor (per stress)", {1, -1, 2, 0}, "1/Pa", "1/psi"},
 };
 
 constexpr bool QuantityTableInEnumOrder() {
   for (std::size_t i = 0; i < kQuantities.size(); ++i) {
     if (static_cast<std::size_t>(kQuantities[i].quantity) != i) return false;
   }
-  return kQuantities.back().quantity == Quantity::RevolutionsPerVolume;
+  return kQuantities.back().quantity == Quantity::WearFactor;
 }
 static_assert(QuantityTableInEnumOrder(), "kQuantities must list every Quantity in enum order");
 

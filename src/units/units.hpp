@@ -50,6 +50,7 @@ enum class Quantity {
   Frequency,          // Hz | Hz
   FlowRate,           // m3/s | gpm
   RevolutionsPerVolume, // mud motor speed per flow: rev/m3 | rev/gal (stored as rad/m3)
+  WearFactor,         // casing wear factor, volume per friction work: 1/Pa | 1/psi (1e-10 1/psi = 1e-10 in²/lbf)
 };
 
 // The dimension of a quantity.

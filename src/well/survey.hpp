@@ -27,6 +27,7 @@ struct HoleSection {
   bool cased = false;
   std::optional<double> friction = std::nullopt;        // μ around the string (rotating), and along it unless...
   std::optional<double> axial_friction = std::nullopt;  // ...this gives μ along the hole axis
+  std::optional<double> wall = std::nullopt;            // a cased section's casing wall thickness, m (wear)
 };
 
 }  // namespace drillflex::well

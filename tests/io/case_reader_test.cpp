@@ -386,6 +386,28 @@ TEST(CaseReader, StringRatingsAndDesignFactor) {
   EXPECT_DOUBLE_EQ(plain.limits.design_factor, 1.25);
 }
 
+// A tool joint's connection (issue 37): its API RP 7G make-up torque, 31 024.539 ft·lbf for NC50 on a
+// 6-5/8 × 3-1/4 in joint by hand (tests/model/tool_joint_torque_test.cpp); casing wear's keys in SI inside.
+TEST(CaseReader, ConnectionMakeupTorqueAndWearKeys) {
+  const Case c = ParseCase(
+      "units: field\nwell:\n  survey: [[0, 0, 0], [8000, 0, 0]]\n"
+      "  hole:\n    - {to: 4500, diameter: 8.835, cased: true, wall: 0.395}\n    - {diameter: 8.5}\n  bit_md: 5000\n"
+      "string:\n  - {type: pipe, od: 5, id: 4.276, length: 30, count: 10, joint_od: 6.625, joint_id: 3.25, connection: NC50}\n"
+      "operation: {rpm: 120}\n"
+      "limits: {wear: {factor: 5e-10, rop: 60 ft/h, from: 4000}}\n",
+      "connection.yaml");
+  const auto& pipe = c.input.string.components[0];
+  EXPECT_EQ(pipe.connection, "NC50");
+  EXPECT_NEAR(*pipe.makeup_torque, 31024.539 * kLbf * kFt, 0.02);
+  ASSERT_TRUE(c.limits.wear);
+  constexpr double kPsi = kLbf / (0.0254 * 0.0254);
+  EXPECT_NEAR(c.limits.wear->wear_factor * kPsi, 5e-10, 1e-22);  // a bare number: 1/psi in field units
+  EXPECT_NEAR(*c.limits.wear->rate_of_penetration, 60.0 * kFt / 3600.0, 1e-12);
+  EXPECT_NEAR(*c.limits.wear->from_md, 4000.0 * kFt, 1e-9);
+  EXPECT_NEAR(c.limits.wear->rotary_speed, 120.0 * 2.0 * 3.14159265358979323846 / 60.0, 1e-12);
+  EXPECT_NEAR(*c.well->hole[0].wall, 0.395 * 0.0254, 1e-12);
+}
+
 struct RejectedCase {
   const char* label;
   std::string text;
@@ -441,6 +463,27 @@ INSTANTIATE_TEST_SUITE_P(
                      2, "string[0].yield", "either 'grade' or a custom 'yield'"},
         RejectedCase{"an unknown class", "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, class: worn}\n", 2,
                      "string[0].class", "expected 'new' or 'premium'"},
+        RejectedCase{"an unknown connection",
+                     "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, joint_od: 0.168, joint_id: 0.08, connection: NC51}\n", 2,
+                     "string[0].connection", "unknown connection 'NC51'; expected one of: NC26, NC38, NC40, NC46, NC50"},
+        RejectedCase{"a connection without the joint's bore",
+                     "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, joint_od: 0.168, connection: NC50}\n", 2,
+                     "string[0].connection", "needs the tool joint's 'joint_od' and 'joint_id'"},
+        RejectedCase{"a connection and a make-up torque",
+                     "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, joint_od: 0.168, joint_id: 0.08, connection: NC50, "
+                     "makeup_torque: 40000}\n", 2, "string[0].makeup_torque", "not both"},
+        RejectedCase{"a wear factor in 1/Pa read as 1/psi",
+                     "units: field\nwell:\n  survey: [[0, 0, 0], [8000, 0, 0]]\n  hole: [{to: 4500, diameter: 8.835, cased: true}, "
+                     "{diameter: 8.5}]\n  bit_md: 5000\nstring:\n  - {type: pipe, od: 5, id: 4.276, length: 30}\n"
+                     "operation: {rpm: 120}\nlimits: {wear: {factor: 7e-14, rotating_time: 100 h}}\n", 9,
+                     "limits.wear.factor", "between 1e-13 and 1e-7 1/psi"},
+        RejectedCase{"wear without a cased section",
+                     "units: field\nwell:\n  survey: [[0, 0, 0], [8000, 0, 0]]\n  hole: 8.5\n  bit_md: 5000\n"
+                     "string:\n  - {type: pipe, od: 5, id: 4.276, length: 30}\noperation: {rpm: 120}\n"
+                     "limits: {wear: {factor: 5e-10, rotating_time: 100 h}}\n", 9, "limits.wear", "needs a cased hole section"},
+        RejectedCase{"a wall on open hole",
+                     "units: field\nwell:\n  survey: [[0, 0, 0], [8000, 0, 0]]\n  hole: [{diameter: 8.5, wall: 0.4}]\n  bit_md: 5000\n"
+                     "string:\n  - {type: pipe, od: 5, id: 4.276, length: 30}\n", 4, "well.hole[0].wall", "cased: true"},
         RejectedCase{"a design factor below 1", std::string(kGoodString) + "limits: {design_factor: 0.8}\n", 3,
                      "limits.design_factor", "between 1 and 3"},
         RejectedCase{"density in ppg read as kg/m3", "materials:\n  steel: {E: 207e9, nu: 0.3, density: 65.5}\n", 2,

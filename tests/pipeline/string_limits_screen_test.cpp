@@ -10,6 +10,7 @@
 
 #include "analyses/string_limits.hpp"
 #include "io/case.hpp"
+#include "pipeline/roadmap.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -99,6 +100,71 @@ TEST(StringLimitsScreen, ZonesAndUtilisationsOfAGivenAxialForce) {
   EXPECT_EQ(limits.closest.limit, "helical_buckling");
   EXPECT_FALSE(std::isfinite(limits.makeup_torque.utilisation));
   EXPECT_EQ(limits.notes.size(), 2u);  // the pipe rated as E-75; no make-up torque
+}
+
+// The same 5 in pipe (`joints` of it, above `below`'s components) in an 8-1/2 in hole along `survey`
+// (MD, inclination, azimuth rows), 1200 kg/m³ mud, g 9.81, the bit at `bit_md`, under `operation`.
+io::Case PipeCase(const std::string& survey, double bit_md, const std::string& below, int joints,
+                  const std::string& operation) {
+  const std::string text = fmt::format(
+      "name: pipe\nunits: SI\ngravity: 9.81\nwell: {{survey: {}, hole: [{{diameter: 0.2159}}], bit_md: {}}}\n"
+      "fluid: {{density: 1200}}\nstring:\n{}"
+      "  - {{type: pipe, od: 0.127, id: 0.1086, length: 9, count: {}, joint_od: 0.1683, joint_id: 0.0826, "
+      "joint_length: 0.5}}\nmodel: {{body_length: 9, elements_per_body: 4, modes_per_body: 4}}\noperation: {}\n",
+      survey, bit_md, below, joints, operation);
+  return io::ParseCase(text, "pipe.yaml");
+}
+
+// Fatigue in a dogleg: the same pipe (joints 9 m apart: L = 4.5 m) in a build of 3°/30 m from 100 to 400 m
+// MD, rotating, 200 kN of tension, no bending of its own in the static. By hand (Python, RP 7G's grade E
+// line for the default E-75): σ_t = 200 kN / A = 8519.773 psi, σ_allowed = 119 929 736.3 Pa,
+// K L = √(T/(E I)) 4.5 = 1.801589, σ_b = E D κ/2 · KL/tanh KL = 44 278 170.75 Pa with κ = 1.7453293e-3 /m:
+// the fatigue utilisation 0.3692009; Lubinski's permissible curvature 2 σ_allowed/(E D) · tanh KL/KL =
+// 4.7273154e-3 /m (8.1257 °/30 m).
+TEST(StringLimitsScreen, FatigueInABuildByHand) {
+  const io::Case c = PipeCase("[[0, 0, 0], [100, 0, 0], [400, 30, 0]]", 350.0,
+                              "  - {type: collar, od: 0.1715, id: 0.0714, length: 9, count: 3}\n", 30,
+                              "{wob: 40 kN, rpm: 60}");
+  StaticNodeResult node;
+  node.s = 100.0;  // MD 250 m: pipe in the build
+  node.axial_force = 200e3;
+  std::vector<StaticNodeResult> nodes{node};
+  const StringLimits limits = ComputeStringLimits(c.input, nodes, 1.25);
+  ASSERT_EQ(limits.nodes.size(), 1u);
+  const NodeLimits& at = limits.nodes[0];
+  EXPECT_NEAR(at.hole_curvature, 1.7453293e-3, 1e-9);
+  EXPECT_NEAR(at.allowable_bending_stress, 119929736.3, 1.0);
+  EXPECT_NEAR(at.dogleg_bending_stress, 44278170.75, 1.0);
+  EXPECT_NEAR(at.fatigue_utilisation, 0.3692009, 1e-6);
+  EXPECT_NEAR(at.max_dogleg, 4.7273154e-3, 1e-9);
+  EXPECT_EQ(limits.fatigue.limit, "fatigue");
+  EXPECT_DOUBLE_EQ(limits.fatigue.md, 250.0);
+  // Not rotating: no fatigue screen.
+  io::Case still = c;
+  still.input.operation.rotary_speed = 0.0;
+  EXPECT_FALSE(std::isfinite(ComputeStringLimits(still.input, nodes, 1.25).fatigue.utilisation));
+}
+
+// A roadmap point's buckled zones (pipeline::RoadmapPointLimits): the same pipe alone, 2000 m down a
+// straight 30° hole, drilling on bottom with 300 kN: the soft string rotating carries no axial friction, so
+// the compression falls from the WOB by w cos 30° = 234.674 N/m up the hole. By hand: beyond F_h (238 386.08 N)
+// for (300 000 − 238 386.08)/234.674 = 262.55 m above the bit, beyond F_s (168 564.41 N) for 560.08 m; the
+// zones end at the soft string's stations (every 30 ft, 9.144 m). Slacking off from the bit (off bottom)
+// nothing is in compression.
+TEST(StringLimitsScreen, RoadmapPointBuckledZonesByHand) {
+  const io::Case c = PipeCase("[[0, 30, 0], [2500, 30, 0]]", 2000.0, "", 20, "{wob: 300 kN, rpm: 60}");
+  pipeline::RoadmapPoint point;
+  point.bit_md = 2000.0;
+  point.friction = 0.25;
+  const pipeline::RoadmapLimits limits = pipeline::RoadmapPointLimits(c, analyses::RoadmapSettings{}, point);
+  EXPECT_TRUE(limits.slack_off_zones.empty());
+  ASSERT_EQ(limits.on_bottom_zones.size(), 2u);
+  EXPECT_EQ(limits.on_bottom_zones[0].state, BucklingState::Sinusoidal);
+  EXPECT_NEAR(limits.on_bottom_zones[0].md_from, 2000.0 - 560.08, 9.2);
+  EXPECT_DOUBLE_EQ(limits.on_bottom_zones[0].md_to, 2000.0);
+  EXPECT_EQ(limits.on_bottom_zones[1].state, BucklingState::Helical);
+  EXPECT_NEAR(limits.on_bottom_zones[1].md_from, 2000.0 - 262.55, 9.2);
+  EXPECT_DOUBLE_EQ(limits.on_bottom_zones[1].md_to, 2000.0);
 }
 
 }  // namespace

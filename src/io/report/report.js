@@ -302,6 +302,23 @@
     return (s) => bit - s;
   }
 
+  // The casing wear run's groove and remaining wall along the casing (results.json static.casing_wear.stations,
+  // casing_wear.csv's columns).
+  function casingWearPlot(parent, wear) {
+    const st = wear.stations || {};
+    const md = st.md || [];
+    if (!md.length) return;
+    const rows = md.map((m, i) => ({groove_depth: st.groove_depth[i], wall: st.wall[i], remaining_wall: st.remaining_wall[i], side_force_per_length: st.side_force_per_length[i]}));
+    const grid = el('div', {class: 'grid'});
+    parent.appendChild(grid);
+    plot(grid, {title: `Casing wear over ${num(wear.rotating_time / 3600, 4)} h rotating at ${num(wear.rpm, 4)} rpm`,
+      x: `MD (${U.length})`, y: `depth (${U.diameter})`,
+      series: [{label: 'groove depth', x: md, y: rows.map((r) => r.groove_depth), color: COLORS[1], width: 2},
+               {label: 'remaining wall', x: md, y: rows.map((r) => (r.wall ? r.remaining_wall : NaN)), color: COLORS[0], width: 1.5}]});
+    plot(grid, {title: 'Side force per length on the casing (the largest over the run)', x: `MD (${U.length})`, y: `side force per length (${U.force_per_length || U.force + '/' + U.length})`,
+      series: [{label: 'side force per length', x: md, y: rows.map((r) => r.side_force_per_length), color: COLORS[2]}]});
+  }
+
   function staticSection(nav) {
     const st = R.static;
     const s = section('static', 'Static equilibrium');
@@ -339,16 +356,39 @@
       span.append(value(peak.von_mises_stress, U.stress, 'static.nodes.max_von_mises_stress'), ` at ${where(peak.s, peak.md)}`);
       rows.push(['peak von Mises stress', span]);
     }
-    // The string's limits (results.json static.limits): each limit's largest utilisation and the closest.
+    // The string's limits (results.json static.limits, static.casing_wear): each limit's largest
+    // utilisation and where, in a table, and a warning for any at or above 1.
     const lim = st.limits;
     const beyond = [];
+    const utilisations = [];
     if (lim && lim.summary) {
-      const names = {yield: 'yield (von Mises / (yield / design factor))', makeup_torque: 'make-up torque', helical_buckling: 'helical buckling (compression / F_hel)'};
-      for (const key of ['yield', 'makeup_torque', 'helical_buckling']) {
+      const names = {yield: 'yield (von Mises / (yield / design factor))', makeup_torque: 'make-up torque (|T| / make-up torque)',
+        helical_buckling: 'helical buckling (compression / F_hel)', fatigue: 'fatigue (bending stress / RP 7G endurance limit)'};
+      for (const key of ['yield', 'makeup_torque', 'helical_buckling', 'fatigue']) {
         const u = lim.summary[key];
-        rows.push([`utilisation: ${names[key]}`, u ? `${num(u.utilisation, 3)} at ${where(u.s, u.md)} (${u.component})` : 'no limit given']);
+        let detail = '';
+        if (key === 'fatigue' && u) {
+          detail = `bending ${num(u.bending_stress, 4)} ${U.stress} against ${num(u.allowable_bending_stress, 4)} ${U.stress}; dogleg ${num(u.dogleg_severity, 3)} ${U.dogleg || 'deg/100ft'}` +
+            (u.max_dogleg_severity !== undefined ? `, Lubinski's permissible ${num(u.max_dogleg_severity, 3)}` : '');
+        }
+        const none = key === 'makeup_torque' ? 'no make-up torque given' : key === 'fatigue' ? 'not rotating' : 'does not apply';
+        utilisations.push([names[key], u ? u.utilisation : undefined, u ? `${where(u.s, u.md)} (${u.component})` : none, detail]);
         if (u && u.utilisation >= 1) beyond.push(`${names[key]} ${num(u.utilisation, 3)} at ${where(u.s, u.md)}`);
       }
+    }
+    const wear = st.casing_wear;
+    if (wear) {
+      const g = wear.deepest_groove;
+      const name = 'casing wear (groove depth / casing wall)';
+      if (g && g.utilisation !== undefined) {
+        utilisations.push([name, g.utilisation, `MD ${num(g.md, 6)} ${U.length}`,
+          `groove ${num(g.groove_depth, 3)} ${U.diameter} of a ${num(g.wall, 3)} ${U.diameter} wall, ${num(g.remaining_wall, 3)} ${U.diameter} left`]);
+        if (g.utilisation >= 1) beyond.push(`${name} ${num(g.utilisation, 3)} at MD ${num(g.md, 6)} ${U.length}`);
+      } else {
+        utilisations.push([name, undefined, g ? `MD ${num(g.md, 6)} ${U.length}` : 'no groove', g ? `groove ${num(g.groove_depth, 3)} ${U.diameter} (no casing wall given)` : '']);
+      }
+    }
+    if (lim && lim.summary) {
       const closest = lim.summary.closest;
       if (closest) rows.push(['closest limit', `${closest.limit.replace('_', ' ')}: ${num(closest.utilisation, 3)} (design factor ${num(lim.design_factor, 3)})`]);
       if (lim.buckled_zones && lim.buckled_zones.length) {
@@ -357,11 +397,22 @@
       for (const note of lim.notes || []) rows.push(['limits note', note]);
     }
     facts(s, rows);
+    if (utilisations.length) {
+      const table = el('table', {class: 'data utilisations'});
+      table.appendChild(el('tr', {}, ['limit', 'largest utilisation', 'where', ''].map((t) => el('th', {text: t}))));
+      for (const [name, u, at, detail] of utilisations) {
+        const cell = el('td', {text: u === undefined ? '–' : num(u, 3)});
+        if (u !== undefined && u >= 1) cell.setAttribute('class', 'beyond');
+        table.appendChild(el('tr', {}, [el('td', {text: name}), cell, el('td', {text: at}), el('td', {text: detail})]));
+      }
+      s.appendChild(table);
+    }
     if (beyond.length) {
       const list = el('ul', {class: 'warnings'});
       for (const b of beyond) list.appendChild(el('li', {text: b}));
       s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: 'Beyond a limit (utilisation above 1)'}), list]));
     }
+    if (wear) casingWearPlot(s, wear);
     const ln = lim && lim.nodes ? lim.nodes : null;
     // The whole string, and the BHA alone (up to the first drill pipe or HWDP) when pipe is above it.
     const pipes = (D.components || []).filter((c) => c.type === 'pipe' || c.type === 'hwdp');
@@ -748,6 +799,28 @@
     p.append(`${num(t.time[t.time.length - 1], 4)} s simulated. Stick-slip severity (max − min) / mean bit RPM over the second half: `,
              el('strong', {text: num(severity, 3)}), ` — ${words}.`);
     s.appendChild(p);
+    // The string's limits over the run's frames (results.json transient.limits): each limit's largest
+    // utilisation, where and when, and a warning for any at or above 1.
+    const tl = R.transient && R.transient.limits;
+    if (tl && tl.summary) {
+      const names = {yield: 'yield', makeup_torque: 'make-up torque', helical_buckling: 'helical buckling', fatigue: 'fatigue'};
+      const table = el('table', {class: 'data utilisations'});
+      table.appendChild(el('tr', {}, ['limit', `largest over ${tl.frames} frames`, 'where', 'when (s)'].map((x) => el('th', {text: x}))));
+      const over = [];
+      for (const key of ['yield', 'makeup_torque', 'helical_buckling', 'fatigue']) {
+        const u = tl.summary[key];
+        if (!u) continue;
+        const cell = el('td', {text: num(u.utilisation, 3)});
+        if (u.utilisation >= 1) { cell.setAttribute('class', 'beyond'); over.push(`${names[key]} ${num(u.utilisation, 3)} at ${where(u.s, u.md)}, t = ${num(u.time, 4)} s`); }
+        table.appendChild(el('tr', {}, [el('td', {text: names[key]}), cell, el('td', {text: `${where(u.s, u.md)} (${u.component})`}), el('td', {text: num(u.time, 4)})]));
+      }
+      s.appendChild(table);
+      if (over.length) {
+        const list = el('ul', {class: 'warnings'});
+        for (const b of over) list.appendChild(el('li', {text: b}));
+        s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: 'Beyond a limit during the run (utilisation above 1)'}), list]));
+      }
+    }
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
     plot(grid, {title: 'Rotary speed', x: 'time (s)', y: 'rpm', series: [
