@@ -311,6 +311,25 @@ TEST(Tendency, PointTheBitHoldsItsToolfaceAgainstTheTwist) {
   EXPECT_NEAR(twisted.curvature.build, calm.build, 0.02 * std::abs(calm.right));
 }
 
+// In a string turning at 120 rpm (the wall's friction rolling it to the right): the search settles, the
+// bend at the high side builds above the rotating BHA's own tendency and at the right turns it right.
+TEST(Tendency, PointTheBitSteersInARotatingString) {
+  model::ModelInput input = PackedBha();
+  input.operation.rotary_speed = 120.0 * kPi / 30.0;
+  input.operation.torque_on_bit = 5000.0 * kLbf * kFt;
+  input.static_sliding = model::PrescribedSliding{0.0, input.operation.rotary_speed};
+  const HoleCurvature own = RunTendency(input, Factory(), StaticSettings{}, TendencySettings{}).curvature;
+  const TendencyResult high = PointTheBitTendency(input, PointTheBitAt(0.5, 0.0, 1.0));
+  const TendencyResult right = PointTheBitTendency(input, PointTheBitAt(0.5, 90.0, 1.0));
+  std::printf("[ measure  ] rotating: own %+.4f build, %+.4f right; toolface 0: %+.4f, %+.4f (%d statics); 90: %+.4f, "
+              "%+.4f (%d statics) deg/100 ft\n",
+              own.build / kDegreesPer100Ft, own.right / kDegreesPer100Ft, high.curvature.build / kDegreesPer100Ft,
+              high.curvature.right / kDegreesPer100Ft, high.statics, right.curvature.build / kDegreesPer100Ft,
+              right.curvature.right / kDegreesPer100Ft, right.statics);
+  EXPECT_GT(high.curvature.build, own.build + 1.0 * kDegreesPer100Ft);
+  EXPECT_GT(right.curvature.right, own.right + 1.0 * kDegreesPer100Ft);
+}
+
 // What every directional driller knows (issue 34's qualitative checks), at 30°, 8-1/2 in hole, S 0.05:
 // a near-bit stabilizer (a fulcrum) builds, a pendulum (the first stabilizer 45 ft up) drops, a second
 // stabilizer 30 ft above the near-bit one damps the fulcrum's build, more WOB lessens the pendulum's drop.
