@@ -388,11 +388,11 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
     const analyses::ThreePointYield& yield = *result.three_point;
     // A point-the-bit system's bend is its fulcrum (the yield at full steer).
     const char* bend = point ? "the fulcrum" : "the bend";
-    out << fmt::format("  three-point geometric yield {} toward toolface {} (bit, {} at {}, {} at {}, the blades at {}; "
+    const std::string pad = yield.pad < yield.bend ? fmt::format("the pad at {}, ", Show(c, yield.pad, Quantity::Length, 4)) : "";
+    out << fmt::format("  three-point geometric yield {} toward toolface {} (bit, {}{} at {}, the blades at {}; "
                        "rigid, no clearance{})\n",
                        Show(c, yield.curvature, Quantity::DoglegSeverity, 4), Show(c, yield.toolface, Quantity::Angle, 4),
-                       yield.pad < yield.bend ? "the pad" : bend, Show(c, yield.pad, Quantity::Length, 4), bend,
-                       Show(c, yield.bend, Quantity::Length, 4), Show(c, yield.stabilizer, Quantity::Length, 4),
+                       pad, bend, Show(c, yield.bend, Quantity::Length, 4), Show(c, yield.stabilizer, Quantity::Length, 4),
                        point ? "; full steer" : "");
   }
 }
