@@ -15,9 +15,15 @@
 //    23.1°/100 ft against 14.87 at 30 klbf. An independent planar beam-column of MADSim's own element
 //    table (v9-tendency/madsim_yield_reference.py) gives 22.5 there, and the yield at 30 klbf is asserted
 //    within 1.5°/100 ft of it (docs/validation.md says what was checked and what is open).
+// 4. Point-the-bit (v9-tendency/point-the-bit.yaml): the bit, a full-gauge stabilizer at the fulcrum and
+//    one 14.75 ft up, weightless, S -> oo: the steady curvature at full steer is the circle through the
+//    three points, 2 θ / L with the offset θ at the lower contact, within 0.2 % and 1.5° of the toolface,
+//    at toolfaces 0, 90 and 180; rotating at 60 rpm the same (the housing holds the toolface); at 50 %
+//    steer half of it (the time-averaged deviation of a linear, force-free fit), within 0.5 %.
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "validation_support.hpp"
 
@@ -52,23 +58,36 @@ nlohmann::json RunFile(const std::string& command, const std::string& path) {
   return nlohmann::json::parse(file);
 }
 
-TEST(V9Tendency, ThreePointMotorIsTheCircleThroughItsContacts) {
-  const double bend = 1.0, a = 2.75, b = 4.75, L = 14.75;  // deg, ft
-  const double three_point = 2.0 * bend * (L - b) / (L * (L - a)) * 100.0;  // deg/100 ft
+// The case `relative` (S -> oo, its `toolface: 0` put at 0, 90 and 180): the steady dogleg is the circle
+// through its three full-gauge contacts, `three_point` deg/100 ft, within 0.2 %, toward the toolface
+// within 1.5°, and the three-point yield is reported beside. The build rates at the three toolfaces.
+std::vector<double> ExpectTheCircleAtEachToolface(const std::string& relative, double three_point) {
+  std::vector<double> builds;
   for (const double toolface : {0.0, 90.0, 180.0}) {
-    const std::string path = Variant("v9-tendency/three-point.yaml", "toolface: 0",
-                                     fmt::format("toolface: {:g}", toolface), fmt::format("tf{:g}", toolface));
+    const std::string path =
+        Variant(relative, "toolface: 0", fmt::format("toolface: {:g}", toolface), fmt::format("tf{:g}", toolface));
     const auto results = RunFile("tendency", path);
-    ASSERT_TRUE(results.contains("tendency"));
+    EXPECT_TRUE(results.contains("tendency")) << path;
+    if (!results.contains("tendency")) return {};
     const auto& t = results["tendency"];
     const double build = t["build_rate"], right = t["right_curvature"], dogleg = t["dogleg_severity"];
     const double direction = std::atan2(right, build) * kDegreesPerRadian;
-    std::printf("V9 three-point, toolface %g: dogleg %.4f deg/100 ft (three-point %.4f, %+.3f %%), toward %.2f deg\n",
-                toolface, dogleg, three_point, 100.0 * RelativeError(dogleg, three_point), direction);
+    std::printf("V9 %s, toolface %g: build %+.4f, right %+.4f, dogleg %.4f deg/100 ft (three-point %.4f, %+.3f %%), "
+                "toward %.2f deg\n",
+                relative.c_str(), toolface, build, right, dogleg, three_point,
+                100.0 * RelativeError(dogleg, three_point), direction);
     EXPECT_LT(std::abs(RelativeError(dogleg, three_point)), 2e-3);
     EXPECT_NEAR(t["three_point"]["dogleg_severity"].get<double>(), three_point, 1e-9 * three_point);  // reported beside
     EXPECT_LT(std::abs(std::remainder(direction - toolface, 360.0)), 1.5);
+    builds.push_back(build);
   }
+  return builds;
+}
+
+TEST(V9Tendency, ThreePointMotorIsTheCircleThroughItsContacts) {
+  const double bend = 1.0, a = 2.75, b = 4.75, L = 14.75;  // deg, ft
+  const double three_point = 2.0 * bend * (L - b) / (L * (L - a)) * 100.0;  // deg/100 ft
+  ExpectTheCircleAtEachToolface("v9-tendency/three-point.yaml", three_point);
 }
 
 // The same motor rotating (60 rpm): its bend sweeps every toolface and the deviation averaged over
@@ -81,6 +100,40 @@ TEST(V9Tendency, ThreePointMotorRotatingDrillsStraight) {
               t["toolfaces"].get<int>());
   EXPECT_EQ(t["toolfaces"].get<int>(), 4);
   EXPECT_LT(t["dogleg_severity"].get<double>(), 0.01);
+}
+
+// The point-the-bit system's geometric yield at full steer: the circle through the bit, the fulcrum's
+// stabilizer and the one above, 2 θ / L (the three-point formula with the bend at the lower contact).
+constexpr double kPointOffset = 0.8, kPointStabilizer = 14.75;  // deg, ft
+constexpr double kPointThreePoint = 2.0 * kPointOffset / kPointStabilizer * 100.0;  // deg/100 ft
+
+TEST(V9Tendency, PointTheBitIsTheCircleThroughItsContacts) {
+  const std::vector<double> builds = ExpectTheCircleAtEachToolface("v9-tendency/point-the-bit.yaml", kPointThreePoint);
+  ASSERT_EQ(builds.size(), 3u);
+  EXPECT_NEAR(builds[2], -builds[0], 1e-3 * builds[0]);  // the low side drops as the high side builds
+}
+
+// Rotating, the housing holds the offset at its toolface (a rotating bent motor's bend averages out:
+// ThreePointMotorRotatingDrillsStraight); at 50 % steer the rate is half, the natural tendency nothing.
+TEST(V9Tendency, PointTheBitRotatingHoldsItsToolfaceAndHalfSteerHalvesIt) {
+  const auto rotating = RunFile("tendency", Variant("v9-tendency/point-the-bit.yaml", "rpm: 0", "rpm: 60", "rotating"));
+  ASSERT_TRUE(rotating.contains("tendency"));
+  const double spun = rotating["tendency"]["build_rate"];
+  const auto half = RunFile("tendency", Variant("v9-tendency/point-the-bit.yaml", "steer: 1", "steer: 0.5", "half"));
+  ASSERT_TRUE(half.contains("tendency"));
+  const auto& steering = half["tendency"]["steering"];
+  const double at_half = half["tendency"]["build_rate"], natural = steering["natural"]["build_rate"],
+               full = steering["full"]["build_rate"], per_steer = steering["yield_per_steer"]["build_rate"];
+  std::printf("V9 point-the-bit rotating at 60 rpm: %.4f deg/100 ft (three-point %.4f); 50 %% steer %.4f (natural "
+              "%.4f, full %.4f, per unit of steer %.4f)\n",
+              spun, kPointThreePoint, at_half, natural, full, per_steer);
+  EXPECT_LT(std::abs(RelativeError(spun, kPointThreePoint)), 2e-3);
+  EXPECT_NEAR(natural, 0.0, 1e-3 * kPointThreePoint);
+  EXPECT_LT(std::abs(RelativeError(full, kPointThreePoint)), 2e-3);
+  EXPECT_NEAR(per_steer, full - natural, 1e-9 * kPointThreePoint);
+  EXPECT_EQ(steering["type"].get<std::string>(), "point");
+  EXPECT_NEAR(steering["offset"].get<double>(), kPointOffset, 1e-12);
+  EXPECT_LT(std::abs(RelativeError(at_half, 0.5 * full)), 5e-3);
 }
 
 TEST(V9Tendency, MadsimTurnLoadingStaticWithinFifteenPercent) {

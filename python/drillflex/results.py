@@ -158,8 +158,10 @@ class TendencyResult(Result):
     static of the search (``build_curvature``, ``right_curvature``, ``build_force``, ``walk_force``,
     ``side_force``, ``tilt``, ``tilt_right``, ``deviation_build``, ``deviation_right``, ``method``),
     the answer at ``steady_index``; ``bit``: that Record; ``toolfaces`` (4: a rotating bent motor's
-    mean), ``statics``; ``steering``: with a push-the-bit system, a Record ``steer``, ``natural_build``,
-    ``natural_right``, ``full_build``, ``full_right`` (curvatures, rad/m), else None.
+    mean), ``statics``; ``steering``: with a rotary steerable system, a Record ``steer``, ``natural_build``,
+    ``natural_right``, ``full_build``, ``full_right`` (curvatures, rad/m), ``type`` (``"push"`` or
+    ``"point"``), ``toolface`` (rad), ``force`` (the pads', N; 0 for point) and ``offset`` (the bit's
+    tilt, rad; 0 for push), else None.
     """
 
     analysis = "tendency"

@@ -9,7 +9,7 @@ namespace drillflex::python {
 
 void BindTendencyResult(py::class_<RunHandle>& run) {
   DefFields(run, "tendency_fields", &pipeline::CaseResults::tendency,
-            [](const RunHandle&, const analyses::TendencyResult& result, const py::capsule&) {
+            [](const RunHandle& handle, const analyses::TendencyResult& result, const py::capsule&) {
     py::dict fields;
     fields["build_rate"] = result.build_rate;
     fields["turn_rate"] = result.turn_rate;
@@ -25,9 +25,19 @@ void BindTendencyResult(py::class_<RunHandle>& run) {
     fields["statics"] = result.statics;
     if (result.steering) {
       const analyses::SteeringRates& steering = *result.steering;
-      fields["steering"] = py::dict(py::arg("steer") = steering.steer, py::arg("natural_build") = steering.natural.build,
-                                    py::arg("natural_right") = steering.natural.right,
-                                    py::arg("full_build") = steering.full.build, py::arg("full_right") = steering.full.right);
+      py::dict fields_steering(py::arg("steer") = steering.steer, py::arg("natural_build") = steering.natural.build,
+                               py::arg("natural_right") = steering.natural.right,
+                               py::arg("full_build") = steering.full.build, py::arg("full_right") = steering.full.right);
+      // The system as the case set it: a push-the-bit's pads' force (N), a point-the-bit's offset (rad).
+      const auto& tendency = handle.c->analyses.tendency;
+      if (tendency && tendency->rss) {
+        const bool point = tendency->rss->type == analyses::RssType::Point;
+        fields_steering["type"] = point ? "point" : "push";
+        fields_steering["toolface"] = tendency->rss->toolface;
+        fields_steering["offset"] = point ? tendency->rss->offset : 0.0;
+        fields_steering["force"] = point ? 0.0 : tendency->rss->force;
+      }
+      fields["steering"] = fields_steering;
     } else {
       fields["steering"] = py::none();
     }

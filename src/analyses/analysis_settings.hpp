@@ -163,12 +163,21 @@ struct RoadmapSettings {
 // tendency"), where every pendulum drops. Set the bit's own where it is known.
 inline constexpr double kDefaultSteerability = 0.25;
 
-// A push-the-bit rotary steerable system (case key analyses.tendency.rss): pads at `at` pushing the
-// bit toward the toolface with `force`. Its housing holds the toolface still while the string turns;
-// it steers a fraction `steer` of the time (the duty cycle: 0 neutral, 1 full steer).
+// A rotary steerable system (case key analyses.tendency.rss). Its housing holds the toolface still in
+// space while the string turns; it steers a fraction `steer` of the time (the duty cycle: 0 neutral, 1
+// full steer). Push-the-bit: pads at `at` push the bit toward the toolface with `force`. Point-the-bit
+// (analyses/point_the_bit.hpp): the drive shaft, deflected between the fulcrum bearing at `at` and a
+// cam above it, tilts the bit's axis by `offset` against the tool's toward the toolface.
+enum class RssType { Push, Point };
+
+// The largest point-the-bit offset the case may ask: the tools' are 0.2–1.2 deg.
+inline constexpr double kMaxRssOffset = 3.0 * kDegree;  // rad
+
 struct RssSettings {
-  double at = 0.0;        // m from the bit: the pads
-  double force = 0.0;     // N
+  RssType type = RssType::Push;
+  double at = 0.0;        // m from the bit: the pads (push), the fulcrum bearing (point)
+  double force = 0.0;     // N: the pads' (push)
+  double offset = 0.0;    // rad: the bit's axis against the tool's (point)
   double toolface = 0.0;  // rad: 0 the high side, π/2 the right
   double steer = 1.0;     // the duty cycle, 0–1
   int source_line = 0;

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/point_the_bit.hpp"
 #include "core/error.hpp"
 
 namespace drillflex::analyses {
@@ -38,13 +39,16 @@ struct Evaluated {
 // The strings whose deviation a point averages, with their weights: the case's alone; a rotating bent
 // motor's bend at kRotatingToolfaces toolfaces a quarter turn apart (the bend sweeps them all in a
 // revolution; four samples average the deviation exactly up to its third harmonic in the toolface);
-// a rotary steerable system neutral for 1 − steer of the time and steering for `steer` of it.
+// a rotary steerable system neutral for 1 − steer of the time and steering for `steer` of it (a
+// point-the-bit system's steering string is bent at its fulcrum when each static is solved, against the
+// twist there: Search::Solve).
 constexpr int kRotatingToolfaces = 4;
 constexpr std::size_t kKeptStatics = 3;  // a variant's statics kept as warm starts
 
 struct Variant {
   model::ModelInput input;
   double weight = 1.0;
+  bool pointing = false;  // the string of a point-the-bit system steering: bent at its fulcrum when solved
 };
 
 // The string with the RSS steering: the pads' force toward the toolface at `at` (string frame: y right,
@@ -61,7 +65,13 @@ std::vector<Variant> Variants(const model::ModelInput& input, const TendencySett
   if (settings.rss) {
     std::vector<Variant> variants;
     if (settings.rss->steer < 1.0) variants.push_back({input, 1.0 - settings.rss->steer});
-    if (settings.rss->steer > 0.0) variants.push_back({Steering(input, *settings.rss), settings.rss->steer});
+    if (settings.rss->steer > 0.0) {
+      if (settings.rss->type == RssType::Point) {
+        variants.push_back({input, settings.rss->steer, settings.rss->offset > 0.0});
+      } else {
+        variants.push_back({Steering(input, *settings.rss), settings.rss->steer});
+      }
+    }
     return variants;
   }
   if (!(input.operation.rotary_speed > 0.0)) return {{input, 1.0}};
@@ -91,6 +101,7 @@ class Search {
                                       : HoleCurvature{}) {}
 
   int variant_count() const { return static_cast<int>(variants_.size()); }
+  int statics() const { return statics_count_; }
   int toolfaces() const { return settings_.rss ? 1 : variant_count(); }
 
   const Evaluated& Evaluate(const Vec2& kappa) {
@@ -133,24 +144,40 @@ class Search {
  private:
   // The static of variant v in `hole` (of curvature kappa): from the nearest of its own statics
   // carried into the hole when it is within kTendencyWarmStep, else from the string resting on the wall.
+  // A point-the-bit system's bend is set at its toolface plus the string's twist at the fulcrum (the
+  // last static's), and solved again from there while the twist moves it by more than
+  // kPointToolfaceTolerance: the housing holds the toolface in space, whatever the string's twist.
   StaticResult Solve(std::size_t v, const Vec2& kappa, const well::Trajectory& hole) {
-    model::ModelInput hole_input = variants_[v].input;
-    hole_input.trajectory = hole;
-    auto built = std::make_shared<const model::BuiltModel>(build_(hole_input));
+    const Variant& variant = variants_[v];
     const Solved* nearest = nullptr;
     for (const Solved& solved : solved_[v]) {
       const double distance = (solved.curvature - kappa).norm();
       if (distance <= kTendencyWarmStep && (!nearest || distance < (nearest->curvature - kappa).norm())) nearest = &solved;
     }
     std::optional<VecX> start;
-    if (nearest) start = CarryIntoHole(nearest->built->system, nearest->q, built->system, bit_md_, nearest->hole, hole);
+    std::shared_ptr<const model::BuiltModel> built;
     StaticResult equilibrium;
-    try {
-      equilibrium = RunStaticInWell(hole_input, *built, statics_, 1.0, start ? &*start : nullptr);
-    } catch (const SolverError& e) {
-      throw SolverError(fmt::format("tendency: the static in a hole of {:.4g} deg/100 ft build, {:.4g} deg/100 ft "
-                                    "right failed: {}",
-                                    InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), e.what()));
+    for (int round = 0;; ++round) {
+      model::ModelInput hole_input =
+          variant.pointing ? PointTheBit(variant.input, *settings_.rss, settings_.rss->toolface + twist_) : variant.input;
+      hole_input.trajectory = hole;
+      built = std::make_shared<const model::BuiltModel>(build_(hole_input));
+      if (round == 0 && nearest) {
+        start = CarryIntoHole(nearest->built->system, nearest->q, built->system, bit_md_, nearest->hole, hole);
+      }
+      try {
+        equilibrium = RunStaticInWell(hole_input, *built, statics_, 1.0, start ? &*start : nullptr);
+      } catch (const SolverError& e) {
+        throw SolverError(fmt::format("tendency: the static in a hole of {:.4g} deg/100 ft build, {:.4g} deg/100 ft "
+                                      "right failed: {}",
+                                      InDegreesPer100Ft(kappa.x()), InDegreesPer100Ft(kappa.y()), e.what()));
+      }
+      ++statics_count_;
+      if (!variant.pointing) break;
+      const double twist = TwistAt(equilibrium, settings_.rss->at);
+      if (std::abs(twist - twist_) <= kPointToolfaceTolerance || round + 1 >= kPointTwistRounds) break;
+      twist_ = twist;
+      start = equilibrium.q;  // the same hole, the bend turned a little
     }
     if (!equilibrium.bit) throw LogicError("RunTendency: the static has no bit report");
     // The last few only: a warm start is a neighbour of a recent point (the differences of the first,
@@ -172,6 +199,8 @@ class Search {
   const double top_md_;
   const HoleCurvature formation_;  // δ, rad
   std::vector<Evaluated> evaluated_;
+  double twist_ = 0.0;   // rad: the string's twist at a point-the-bit system's fulcrum, the last static's
+  int statics_count_ = 0;
 };
 
 Vec2 Deviation(const TendencyPoint& point) { return {point.deviation_build, point.deviation_right}; }
@@ -266,6 +295,11 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   if (!(settings.steerability >= 0.0) || !std::isfinite(settings.steerability)) {
     throw InputError({}, "analyses.tendency.steerability", "the steerability must be a number >= 0");
   }
+  if (settings.rss && settings.rss->type == RssType::Point) {
+    if (const auto problem = PointTheBitProblem(input, *settings.rss)) {
+      throw InputError({"", settings.rss->source_line, 0}, problem->first, problem->second);
+    }
+  }
   Search search(input, build, statics, settings);
 
   Vec2 kappa = AsVector(first.value_or(CurvatureAtBit(*input.trajectory, input.bit_md)));
@@ -311,7 +345,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
     const TendencyPoint at_low = search.Evaluate(low).point;
     const TendencyPoint at_high = search.Evaluate(high).point;
     throw SolverError(fmt::format("tendency: no steady curvature within ±30 deg/100 ft after {} statics: {}; {}",
-                                  search.evaluated().size() * static_cast<std::size_t>(search.variant_count()),
+                                  search.statics(),
                                   DescribeEnd(at_low), DescribeEnd(at_high)));
   }
   Evaluated& steady = search.evaluated()[answer];
@@ -328,10 +362,12 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   result.arc_length = TendencyArcLength(input.string, result.dogleg_severity);
   result.toolfaces = search.toolfaces();
   for (const Evaluated& e : search.evaluated()) result.trace.push_back(e.point);
-  result.statics = static_cast<int>(result.trace.size()) * search.variant_count();
+  result.statics = search.statics();
   result.steady_index = static_cast<int>(answer);
   result.equilibrium = std::move(steady.equilibrium);
-  result.three_point = ComputeThreePointYield(input.string);
+  result.three_point = settings.rss && settings.rss->type == RssType::Point
+                            ? PointTheBitThreePoint(input.string, *settings.rss)
+                            : ComputeThreePointYield(input.string);
   return result;
 }
 

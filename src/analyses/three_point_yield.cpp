@@ -5,19 +5,27 @@
 namespace drillflex::analyses {
 
 std::optional<ThreePointYield> ComputeThreePointYield(const model::StringConfig& string) {
-  const model::Component* motor = nullptr;
+  for (const model::Component& component : string.components) {
+    if (component.bend_angle && component.bend_to_bit && *component.bend_angle > 0.0) {
+      return ThreePointYieldOfBend(string, *component.bend_to_bit, *component.bend_angle,
+                                   component.toolface.value_or(0.0));
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<ThreePointYield> ThreePointYieldOfBend(const model::StringConfig& string, double bend_to_bit,
+                                                     double angle, double toolface) {
   std::vector<double> blades;  // the blades' middles, m from the bit (each item of a count)
   double s = 0.0;
   for (const model::Component& component : string.components) {
-    if (!motor && component.bend_angle && component.bend_to_bit && *component.bend_angle > 0.0) motor = &component;
     for (int item = 0; item < component.count; ++item) {
       if (component.blade_diameter) blades.push_back(s + (item + 0.5) * component.length);
     }
     s += component.length * component.count;
   }
-  if (!motor) return std::nullopt;
   ThreePointYield yield;
-  yield.bend = *motor->bend_to_bit;
+  yield.bend = bend_to_bit;
   yield.pad = yield.bend;
   bool above = false;
   for (const double blade : blades) {
@@ -29,8 +37,8 @@ std::optional<ThreePointYield> ComputeThreePointYield(const model::StringConfig&
   }
   if (!above) return std::nullopt;
   const double a = yield.pad, b = yield.bend, l = yield.stabilizer;
-  yield.curvature = 2.0 * *motor->bend_angle * (l - b) / (l * (l - a));
-  yield.toolface = motor->toolface.value_or(0.0);
+  yield.curvature = 2.0 * angle * (l - b) / (l * (l - a));
+  yield.toolface = toolface;
   return yield;
 }
 

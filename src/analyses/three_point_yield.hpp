@@ -26,4 +26,10 @@ struct ThreePointYield {
 // For the string's first bent motor with a blade above its bend; none otherwise.
 std::optional<ThreePointYield> ComputeThreePointYield(const model::StringConfig& string);
 
+// For a bend of `angle` (rad) at `bend_to_bit` (m) toward `toolface` (rad) in `string`, its blades the
+// contacts (a motor's bent housing, a point-the-bit system's shaft at its fulcrum); none without a blade
+// above the bend.
+std::optional<ThreePointYield> ThreePointYieldOfBend(const model::StringConfig& string, double bend_to_bit,
+                                                     double angle, double toolface);
+
 }  // namespace drillflex::analyses

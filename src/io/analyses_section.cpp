@@ -253,18 +253,39 @@ analyses::RoadmapSettings ReadRoadmap(const YamlView& node) {
   return settings;
 }
 
-// `rss: {type: push, at, force, toolface, steer}` (point-the-bit is not offered: docs/validation.md V9).
+// `rss: {type: push, at, force, toolface, steer}` (push-the-bit) or `{type: point, at, offset, toolface,
+// steer}` (point-the-bit).
 analyses::RssSettings ReadRss(const YamlView& node) {
-  node.ExpectMap("a rotary steerable system {type: push, at, force, toolface, steer}", false);
-  node.AllowOnlyKeys({"type", "at", "force", "toolface", "steer"});
+  node.ExpectMap("a rotary steerable system {type: push, at, force, toolface, steer} or {type: point, at, offset, "
+                 "toolface, steer}",
+                 false);
+  node.AllowOnlyKeys({"type", "at", "force", "offset", "toolface", "steer"});
   analyses::RssSettings rss;
   rss.source_line = node.location().line;
   const std::string type = node.Child("type").AsString();
-  if (type != "push") {
-    node.Child("type").Fail(fmt::format("expected push (a push-the-bit system; point-the-bit is not modelled), got '{}'",
+  if (type == "push") {
+    rss.type = analyses::RssType::Push;
+    if (node.Has("offset")) {
+      node.Child("offset").Fail("a push-the-bit system pushes with its pads' `force`; `offset` (the bit's tilt) is a "
+                                "point-the-bit system's (type: point)");
+    }
+    rss.force = node.Positive("force", Quantity::Force);
+  } else if (type == "point") {
+    rss.type = analyses::RssType::Point;
+    if (node.Has("force")) {
+      node.Child("force").Fail("a point-the-bit system tilts the bit by its `offset`; `force` (the pads') is a "
+                               "push-the-bit system's (type: push)");
+    }
+    rss.offset = node.Quantity("offset", Quantity::Angle);
+    if (!(rss.offset >= 0.0 && rss.offset <= analyses::kMaxRssOffset)) {
+      node.Child("offset").Fail("expected the bit's offset angle against the tool's axis between 0 and 3 deg (the "
+                                "tools' are 0.2-1.2 deg)");
+    }
+  } else {
+    node.Child("type").Fail(fmt::format("expected push (push-the-bit: pads) or point (point-the-bit: the bit's shaft "
+                                        "tilted), got '{}'",
                                         type));
   }
-  rss.force = node.Positive("force", Quantity::Force);
   rss.at = node.Positive("at", Quantity::Length);
   rss.toolface = node.QuantityOr("toolface", Quantity::Angle, 0.0);
   if (rss.toolface < 0.0 || rss.toolface > 2.0 * kPi) {

@@ -70,6 +70,19 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
         {"yield_per_steer",
          {{"build_rate", out(steering.full.build - steering.natural.build, Quantity::DoglegSeverity)},
           {"turn_rate", out(turn(steering.full.right - steering.natural.right), Quantity::DoglegSeverity)}}}};
+    // The system as the case set it: a push-the-bit's pads' force, a point-the-bit's offset.
+    if (c.analyses.tendency && c.analyses.tendency->rss) {
+      const analyses::RssSettings& rss = *c.analyses.tendency->rss;
+      json& system = files.json()["tendency"]["steering"];
+      system["toolface"] = out(rss.toolface, Quantity::Angle);
+      if (rss.type == analyses::RssType::Point) {
+        system["type"] = "point";
+        system["offset"] = out(rss.offset, Quantity::Angle);
+      } else {
+        system["type"] = "push";
+        system["force"] = out(rss.force, Quantity::Force);
+      }
+    }
   }
   if (result.three_point) {
     const analyses::ThreePointYield& yield = *result.three_point;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/point_the_bit.hpp"
 #include "analyses/tendency_sensitivity.hpp"
 #include "analyses/transient_start_places.hpp"
 #include "core/error.hpp"
@@ -253,6 +254,12 @@ void CheckBeforeSolving(const io::Case& c, const AnalysisRequest& request) {
   if (request.tendency) {
     if (const auto problem = analyses::TendencyInputProblem(c.input)) {
       throw InputError({c.file, 0, 0}, problem->first, problem->second);
+    }
+    const std::optional<analyses::RssSettings> rss = c.analyses.tendency ? c.analyses.tendency->rss : std::nullopt;
+    if (rss && rss->type == analyses::RssType::Point) {
+      if (const auto problem = analyses::PointTheBitProblem(c.input, *rss)) {
+        throw InputError({c.file, rss->source_line, 0}, problem->first, problem->second);
+      }
     }
   }
   if (request.vibration) {

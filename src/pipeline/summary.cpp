@@ -360,6 +360,8 @@ void WriteTransient(std::ostream& out, const io::Case& c, const analyses::Transi
 
 void WriteTendency(std::ostream& out, const io::Case& c, const analyses::TendencyResult& result) {
   const analyses::TendencyPoint& steady = result.trace.at(static_cast<std::size_t>(result.steady_index));
+  const bool point = c.analyses.tendency && c.analyses.tendency->rss &&
+                     c.analyses.tendency->rss->type == analyses::RssType::Point;
   out << fmt::format("tendency: builds {} and turns {} (dogleg {}) at inclination {}, azimuth {}; steerability {:g}, "
                      "WOB {} ({} statics)\n",
                      Show(c, result.build_rate, Quantity::DoglegSeverity, 4),
@@ -378,9 +380,9 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
                      Show(c, steady.bit.tilt_right, Quantity::Angle, 4));
   if (result.steering) {
     const analyses::SteeringRates& steering = *result.steering;
-    out << fmt::format("  rotary steerable at {:g} % steer: natural tendency {} build, {} right; full steer {} build, {} "
+    out << fmt::format("  {}-the-bit rotary steerable at {:g} % steer: natural tendency {} build, {} right; full steer {} build, {} "
                        "right; per unit of steer {} build, {} right (curvatures)\n",
-                       100.0 * steering.steer, Show(c, steering.natural.build, Quantity::DoglegSeverity, 4),
+                       point ? "point" : "push", 100.0 * steering.steer, Show(c, steering.natural.build, Quantity::DoglegSeverity, 4),
                        Show(c, steering.natural.right, Quantity::DoglegSeverity, 4),
                        Show(c, steering.full.build, Quantity::DoglegSeverity, 4),
                        Show(c, steering.full.right, Quantity::DoglegSeverity, 4),
@@ -389,11 +391,14 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
   }
   if (result.three_point) {
     const analyses::ThreePointYield& yield = *result.three_point;
-    out << fmt::format("  three-point geometric yield {} toward toolface {} (bit, {} at {}, the bend at {}, the blades at {}; "
-                       "rigid, no clearance)\n",
+    // A point-the-bit system's bend is its fulcrum (the yield at full steer).
+    const char* bend = point ? "the fulcrum" : "the bend";
+    const std::string pad = yield.pad < yield.bend ? fmt::format("the pad at {}, ", Show(c, yield.pad, Quantity::Length, 4)) : "";
+    out << fmt::format("  three-point geometric yield {} toward toolface {} (bit, {}{} at {}, the blades at {}; "
+                       "rigid, no clearance{})\n",
                        Show(c, yield.curvature, Quantity::DoglegSeverity, 4), Show(c, yield.toolface, Quantity::Angle, 4),
-                       yield.pad < yield.bend ? "the pad" : "the bend", Show(c, yield.pad, Quantity::Length, 4),
-                       Show(c, yield.bend, Quantity::Length, 4), Show(c, yield.stabilizer, Quantity::Length, 4));
+                       pad, bend, Show(c, yield.bend, Quantity::Length, 4), Show(c, yield.stabilizer, Quantity::Length, 4),
+                       point ? "; full steer" : "");
   }
 }
 

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import drillflex
-from conftest import ROTATING
+from conftest import ROOT, ROTATING
 
 
 def test_static_typed_result(example: drillflex.Case) -> None:
@@ -198,3 +198,17 @@ def test_tendency_refuses_a_negative_steerability(example: drillflex.Case) -> No
     with pytest.raises(drillflex.InputError) as raised:
         drillflex.tendency(example.with_values({"analyses.tendency.steerability": "-0.1"}))
     assert "steerability" in str(raised.value)
+
+
+def test_tendency_point_the_bit_steering() -> None:
+    # V9's point-the-bit: the bit, full-gauge blades at the 0.8 deg fulcrum (2.75 ft) and 14.75 ft up.
+    path = ROOT / "validation" / "v9-tendency" / "point-the-bit.yaml"
+    td = drillflex.tendency(drillflex.Case.from_yaml(path.read_text(), str(path)))
+    steering = td.steering
+    assert steering.type == "point"
+    assert steering.offset == pytest.approx(np.radians(0.8), rel=1e-12)
+    assert steering.force == 0.0
+    three_point = 2.0 * np.radians(0.8) / (14.75 * 0.3048)  # 2 theta / L, rad/m
+    assert steering.full_build == pytest.approx(three_point, rel=2e-3)
+    assert td.build_rate == pytest.approx(steering.full_build, rel=1e-12)  # the case steers all the time
+    assert abs(steering.natural_build) < 1e-3 * three_point

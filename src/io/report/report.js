@@ -766,6 +766,15 @@
              verb(t.turn_rate, 'turns right ', 'turns left '), value(Math.abs(t.turn_rate), U.dogleg, 'tendency.turn_rate'),
              ` (dogleg ${num(t.dogleg_severity, 4)} ${U.dogleg}; ${t.statics} statics). There the bit pushes the formation with ${num(t.bit.side_force, 4)} ${U.force} (build ${num(t.bit.build_force, 4)}, walk ${num(t.bit.walk_force, 4)}) and tilts ${num(t.bit.tilt, 3)}° toward the high side.`);
     s.appendChild(p);
+    const steering = t.steering;
+    if (steering) {
+      // A rotary steerable system: its rates at 0 % and 100 % steer and the yield per unit of steer.
+      const system = steering.type === 'point'
+        ? `A point-the-bit system (the bit's axis ${num(steering.offset, 3)}° off the tool's toward toolface ${num(steering.toolface, 4)}°)`
+        : `A push-the-bit system (pads pushing ${num(steering.force, 4)} ${U.force} toward toolface ${num(steering.toolface, 4)}°)`;
+      const rates = (r) => `build ${num(r.build_rate, 4)}, turn ${num(r.turn_rate, 4)} ${U.dogleg}`;
+      s.appendChild(el('p', {text: `${system} steering ${num(100 * steering.steer, 3)} % of the time: natural tendency (0 %) ${rates(steering.natural)}; full steer ${rates(steering.full)}; per unit of steer ${rates(steering.yield_per_steer)}.`}));
+    }
     const grid = el('div', {class: 'grid'});
     s.appendChild(grid);
     const trace = t.trace || [];
