@@ -14,14 +14,13 @@
 
 #include <Eigen/Core>
 
+#include "fe/fe_kinds.hpp"
 #include "fe/material.hpp"
 #include "fe/section.hpp"
 
 namespace drillflex::fe {
 
 using Mat12 = Eigen::Matrix<double, 12, 12>;
-
-enum class BeamTheory { kEulerBernoulli, kTimoshenko };
 
 // Rotary inertia of a lumped node (element-level choice, see ElementLumpedMass).
 enum class LumpedRotaryInertia {

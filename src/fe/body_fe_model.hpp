@@ -13,8 +13,6 @@
 
 namespace drillflex::fe {
 
-enum class MassKind { kConsistent, kLumped };
-
 struct BodyFeOptions {
   MassKind mass = MassKind::kConsistent;
   BeamTheory beam = BeamTheory::kEulerBernoulli;

@@ -75,14 +75,14 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
   if (settings.structural_damping < 0.0) node.Child("structural_damping").Fail("expected a damping ratio >= 0");
   if (const auto mass = node.OptionalChild("mass")) {
     const std::string kind = mass->AsString();
-    if (kind == "consistent") settings.mass = model::MassKind::Consistent;
-    else if (kind == "lumped") settings.mass = model::MassKind::Lumped;
+    if (kind == "consistent") settings.mass = fe::MassKind::kConsistent;
+    else if (kind == "lumped") settings.mass = fe::MassKind::kLumped;
     else mass->Fail(fmt::format("expected 'consistent' or 'lumped', got '{}'", kind));
   }
   if (const auto beam = node.OptionalChild("beam")) {
     const std::string kind = beam->AsString();
-    if (kind == "euler_bernoulli") settings.beam = model::BeamTheory::EulerBernoulli;
-    else if (kind == "timoshenko") settings.beam = model::BeamTheory::Timoshenko;
+    if (kind == "euler_bernoulli") settings.beam = fe::BeamTheory::kEulerBernoulli;
+    else if (kind == "timoshenko") settings.beam = fe::BeamTheory::kTimoshenko;
     else beam->Fail(fmt::format("expected 'euler_bernoulli' or 'timoshenko', got '{}'", kind));
   }
   if (const auto rotary = node.OptionalChild("rotary_inertia")) settings.rotary_inertia = rotary->AsBool();

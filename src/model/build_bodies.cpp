@@ -13,8 +13,8 @@ namespace {
 
 fe::BodyFeOptions FeOptions(const ModelSettings& settings) {
   fe::BodyFeOptions options;
-  options.mass = settings.mass == MassKind::Lumped ? fe::MassKind::kLumped : fe::MassKind::kConsistent;
-  options.beam = settings.beam == BeamTheory::Timoshenko ? fe::BeamTheory::kTimoshenko : fe::BeamTheory::kEulerBernoulli;
+  options.mass = settings.mass;
+  options.beam = settings.beam;
   options.bending_rotary_inertia = settings.rotary_inertia;
   options.bending_stiffness_factor = settings.bending_stiffness_factor;
   return options;

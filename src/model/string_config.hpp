@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "fe/fe_kinds.hpp"
 
 namespace drillflex::model {
 
@@ -91,8 +92,6 @@ struct ContactSettings {
   std::optional<double> friction_velocity;
 };
 
-enum class MassKind { Consistent, Lumped };
-enum class BeamTheory { EulerBernoulli, Timoshenko };
 // What holds the top of a string in a well sideways when the case gives no supports: the pipe above
 // it (model/string_above.hpp), nothing (free to move sideways and to tilt, lying on the wall), or a
 // guide (its tilt held along the hole's axis at the top, free to move sideways and to lie on the wall:
@@ -106,8 +105,8 @@ struct ModelSettings {
   double coupling_factor = 1000.0;  // measured: docs/model-study.md
   double structural_damping = 0.01;  // modal damping ratio
   ContactSettings contact;
-  MassKind mass = MassKind::Consistent;
-  BeamTheory beam = BeamTheory::EulerBernoulli;
+  fe::MassKind mass = fe::MassKind::kConsistent;
+  fe::BeamTheory beam = fe::BeamTheory::kEulerBernoulli;
   bool rotary_inertia = true;  // bending rotary inertia ρI of the beam sections
   // Multiplies every section's bending stiffness E I (not E A, G J or the inertia): the soft-string
   // limit (EI → 0) and sensitivity studies; 1, the sections' own.

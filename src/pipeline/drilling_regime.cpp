@@ -48,20 +48,11 @@ ProbeOrbit ReadOrbit(const std::vector<analyses::TransientSample>& samples, std:
 
 }  // namespace
 
-const char* WhirlName(Whirl whirl) {
-  switch (whirl) {
-    case Whirl::Forward: return "forward";
-    case Whirl::Backward: return "backward";
-    case Whirl::None: break;
-  }
-  return "none";
-}
-
 std::string DrillingRegime::Name() const {
   std::string name = stick_slip_severity >= kStickSlipSeverity             ? "stick-slip"
                      : stick_slip_severity >= kTorsionalOscillationSeverity ? "torsional oscillation"
                                                                             : "smooth";
-  if (whirl != Whirl::None) name += std::string(", ") + WhirlName(whirl) + " whirl";
+  if (whirl != Whirl::None) name += std::string(", ") + analyses::WhirlName(whirl) + " whirl";
   return name;
 }
 

@@ -6,12 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "analyses/modes_analysis.hpp"
 #include "analyses/transient_analysis.hpp"
 
 namespace drillflex::pipeline {
 
-enum class Whirl { None, Forward, Backward };
-const char* WhirlName(Whirl whirl);  // "none", "forward", "backward"
+// A run's whirl: analyses::Whirl's None, Forward or Backward (a mode's word, here of an orbit).
+using analyses::Whirl;
 
 // A severity (max − min) / mean bit speed of at least this is torsional oscillation; of at least the
 // stick-slip one the bit stops (its speed swings to zero and back to twice its mean): the report's words.

@@ -94,7 +94,7 @@ SweepOutcome SummarizeRun(const CaseResults& results) {
     }
     const DrillingRegime regime = ClassifyDrillingRegime(*results.transient, clearance);
     outcome.whirl_speed = regime.whirl_speed;
-    outcome.whirl = WhirlName(regime.whirl);
+    outcome.whirl = analyses::WhirlName(regime.whirl);
     outcome.regime = regime.Name();
     if (!results.static_result) {
       outcome.hook_load = results.transient->samples.back().hook_load;

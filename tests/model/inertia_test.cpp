@@ -128,7 +128,7 @@ Eigen::Vector3d JacobianErrors(const solvers::Problem& problem, const RandomStat
 
 struct MassVariant {
   const char* name;
-  MassKind mass;
+  fe::MassKind mass;
   double lateral_mass = 0.0;  // fluid-like lateral node mass, fraction of the structural node mass
 };
 
@@ -217,9 +217,9 @@ TEST_P(InertiaJacobianTest, NodeSumEqualsMassMatrixTimesAccelerationPlusVelocity
 }
 
 INSTANTIATE_TEST_SUITE_P(Model, InertiaJacobianTest,
-                         ::testing::Values(MassVariant{"consistent", MassKind::Consistent, 0.0},
-                                           MassVariant{"lumped", MassKind::Lumped, 0.0},
-                                           MassVariant{"consistent_lateral_mass", MassKind::Consistent, 0.6}),
+                         ::testing::Values(MassVariant{"consistent", fe::MassKind::kConsistent, 0.0},
+                                           MassVariant{"lumped", fe::MassKind::kLumped, 0.0},
+                                           MassVariant{"consistent_lateral_mass", fe::MassKind::kConsistent, 0.6}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Through SystemModel::IterationMatrix and the model's full residual: one free body (no springs,
@@ -285,8 +285,8 @@ TEST(InertiaModel, CoupledStringMatchesCentralDifferences) {
 // per cent of the body length; the margin is the small polar inertia). It is checked here at
 // displacements of up to ~2 cm.
 TEST(InertiaModel, MassMatrixSymmetricPositiveDefinite) {
-  for (const auto& [variant, eta] : {std::pair{MassVariant{"consistent", MassKind::Consistent}, 0.02},
-                                     std::pair{MassVariant{"lumped", MassKind::Lumped}, 0.5}}) {
+  for (const auto& [variant, eta] : {std::pair{MassVariant{"consistent", fe::MassKind::kConsistent}, 0.02},
+                                     std::pair{MassVariant{"lumped", fe::MassKind::kLumped}, 0.5}}) {
     cms::ReductionCache cache;
     const BuiltModel built = BuildSystemModel(VariantInput(variant, 3), cache);
     std::mt19937 rng(23);
@@ -320,7 +320,7 @@ TEST(InertiaModel, MassMatrixSymmetricPositiveDefinite) {
 // neglected, which leaves exactly ½ vᵀṀv − vᵀQ_v = (Ẇv)ᵀ C W v = (−ω × Aᵀṙ)ᵀ (C w)_t,
 // w = (Aᵀṙ, ω, η̇): zero for a lumped FE mass (C = 0), checked as stated for a consistent one.
 TEST(InertiaModel, GyroscopicForcesDoNoWork) {
-  for (MassKind kind : {MassKind::Lumped, MassKind::Consistent}) {
+  for (fe::MassKind kind : {fe::MassKind::kLumped, fe::MassKind::kConsistent}) {
     ModelInput input = RodInput(1, 10, 6);
     input.settings.mass = kind;
     cms::ReductionCache cache;
@@ -344,10 +344,10 @@ TEST(InertiaModel, GyroscopicForcesDoNoWork) {
       const double neglected = frame_rate.dot(body.mass_correction.topRows<3>() * w);
       const double error = std::abs(rate - power - neglected) / std::abs(power);
       std::printf("%s trial %d: vᵀQ_v = %.6e W, ½vᵀṀv = %.6e W, neglected C part %.3e W, error %.2e\n",
-                  kind == MassKind::Lumped ? "lumped" : "consistent", trial, power, rate, neglected, error);
+                  kind == fe::MassKind::kLumped ? "lumped" : "consistent", trial, power, rate, neglected, error);
       EXPECT_GT(std::abs(power), 1.0);  // the check is not vacuous
       EXPECT_LT(error, 1e-7);
-      if (kind == MassKind::Lumped) {
+      if (kind == fe::MassKind::kLumped) {
         EXPECT_LT(std::abs(neglected), 1e-10 * std::abs(power));
       }
     }

@@ -95,16 +95,16 @@ void PrintMassTable(cms::ReductionCache& cache) {
   fmt::print("|---|---|---:|---:|---:|---:|---:|---:|\n");
   std::array<double, kFrequencyCount> consistent_shift{};  // ρI on − off, consistent mass
   for (const bool rotary : {false, true}) {
-    for (const model::MassKind mass : {model::MassKind::Consistent, model::MassKind::Lumped}) {
+    for (const fe::MassKind mass : {fe::MassKind::kConsistent, fe::MassKind::kLumped}) {
       ModelConfig config = PaperModel();
       config.mass = mass;
       config.rotary_inertia = rotary;
       const Measurement m = Measure(config, cache);
       fmt::print("| {} | {} | {} | {} | {} | {} | {:.4g} | {:.3e} |\n",
-                 mass == model::MassKind::Consistent ? "consistent" : "lumped", rotary ? "on" : "off",
+                 mass == fe::MassKind::kConsistent ? "consistent" : "lumped", rotary ? "on" : "off",
                  Percent(m.frequency_error[0]), Percent(m.frequency_error[1]), Percent(m.frequency_error[2]),
                  Percent(m.frequency_error[3]), m.omega_max, m.CriticalTimeStep());
-      if (mass == model::MassKind::Consistent) {
+      if (mass == fe::MassKind::kConsistent) {
         for (int n = 0; n < kFrequencyCount; ++n) consistent_shift[n] += (rotary ? 1.0 : -1.0) * m.frequency_error[n];
       }
     }

@@ -23,7 +23,7 @@ struct ModelConfig {
   int elements_per_body = 10;
   int modes_per_body = 6;  // H: fixed-interface modes (n_f = 6 + H)
   double coupling_factor = model::ModelSettings{}.coupling_factor;  // the library's default
-  model::MassKind mass = model::MassKind::Consistent;
+  fe::MassKind mass = fe::MassKind::kConsistent;
   bool rotary_inertia = false;  // the Euler–Bernoulli reference has none
 };
 
