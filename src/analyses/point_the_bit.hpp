@@ -5,7 +5,7 @@
 // the bit and an eccentric cam above it the shaft is deflected, so that below the fulcrum it, and the
 // bit on it, point at `offset` to the tool's axis toward the toolface (Halliburton's Geo-Pilot,
 // Schlumberger's PowerDrive Xceed). In the static that is a bent housing's bend at the fulcrum: the
-// coupling of the bodies there holds the angle (model/builder.cpp, BentHousingRotation), as an
+// coupling of the bodies there holds the angle (model/string_geometry.cpp, BentHousingRotation), as an
 // equivalent hinge-deflection angle at the steering unit does in the finite-element models of such
 // tools. Unlike a rotating bent motor's, the bend does not sweep the toolfaces: the housing holds it at
 // the toolface in space, so the bend is set against the string's twist at the fulcrum (TwistAt) until

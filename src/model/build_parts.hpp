@@ -8,10 +8,24 @@
 #include <vector>
 
 #include "cms/reduction_cache.hpp"
-#include "model/builder.hpp"
+#include "model/build_defaults.hpp"
 #include "model/element_handle.hpp"
+#include "model/model_input.hpp"
+#include "model/string_geometry.hpp"
+#include "model/system_model.hpp"
 
 namespace drillflex::model {
+
+class BitBottomElement;
+class BitRockElement;
+class BitSideCuttingElement;
+class BlockElement;
+class CouplingElement;
+class ImbalanceElement;
+class StringAboveElement;
+class SupportElement;
+class TopDriveElement;
+class WallContactElement;
 
 inline constexpr double kGravityDirection[3] = {0.0, 0.0, 1.0};  // global +z is down
 

@@ -9,29 +9,6 @@
 
 namespace drillflex::model {
 
-Vec6 SectionCouplingStiffness(const Body& body, double factor) {
-  const double l = body.element_length;
-  Vec6 k;
-  k << body.axial_rigidity / l, 12.0 * body.bending_rigidity / (l * l * l), 12.0 * body.bending_rigidity / (l * l * l),
-      body.torsional_rigidity / l, body.bending_rigidity / l, body.bending_rigidity / l;
-  return factor * k;
-}
-
-std::vector<Support> DefaultWellSupports(double string_length) {
-  Support bit;
-  bit.at = 0.0;
-  bit.fixed[kY] = bit.fixed[kZ] = true;
-  Support hook;
-  hook.at = string_length;
-  hook.fixed[kX] = hook.fixed[kRx] = true;
-  return {bit, hook};
-}
-
-double BitBottomStiffness(const BitBottomParameters& bottom, const Body& bit, const ModelSettings& settings) {
-  return bottom.stiffness > 0.0 ? bottom.stiffness
-                                : kSupportStiffnessFactor * SectionCouplingStiffness(bit, settings.coupling_factor)[kX];
-}
-
 // The parts in the order of the model's elements: couplings, supports, the pipe above, the drives,
 // wall contacts, loads, the bit's elements, imbalances (model/build_parts.hpp).
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cms/reduction_cache.hpp"
+#include "model/build_defaults.hpp"
 #include "model/element_handle.hpp"
 #include "model/model_input.hpp"
 #include "model/string_geometry.hpp"
@@ -25,15 +26,6 @@ class StringAboveElement;
 class SupportElement;
 class TopDriveElement;
 class WallContactElement;
-
-// The supports a string in a well gets when the case gives none (method.md §8, the static BHA
-// convention): the bit held laterally at the hole centre with its tilt and axial motion free (it
-// carries the WOB as an applied force), and the top held axially by the hook and in torsion by the
-// rotary table, free to lie on the wall.
-std::vector<Support> DefaultWellSupports(double string_length);
-
-// Coupling stiffness of a body's section (method.md §5): c·(EA/ℓ, 12EI/ℓ³, 12EI/ℓ³, GJ/ℓ, EI/ℓ, EI/ℓ).
-Vec6 SectionCouplingStiffness(const Body& body, double factor);
 
 // What the builder made, beside the model itself: a typed handle to each element an analysis reads.
 struct BuiltModel {
@@ -56,27 +48,6 @@ struct BuiltModel {
     return system.Get(handle);
   }
 };
-
-// The wall contacts' friction regularization velocity v_ε (method.md §6: below it the friction is
-// viscous) by default, per contact: v_ε = Ω_ε R_c, R_c the contact circle's radius. The paper
-// (Pogorelov et al., ESDA 2012, §2.3) sets v_ε "equal to [...] where [...] is the characteristic size
-// (radius) of contacting bodies"; its factor is lost from the text we have. Taken (drillflex's own
-// choice, not the paper's): Ω_ε = 0.01 rad/s (0.1 rpm), the bit-rock law's stick speed
-// (model/bit_rock.hpp kDefaultStickSpeed): a section
-// turning slower than 0.1 rpm on the wall slides viscously, whatever its size. For the 8 in collar of
-// V8 that is 1.02 mm/s, the 1 mm/s drillflex used for every contact before. The case's
-// `model.contact.friction_velocity` replaces it (ContactSettings::friction_velocity).
-inline constexpr double kFrictionRegularizationSpin = kDefaultStickSpeed;  // Ω_ε, rad/s
-
-// Damping ratio of the coupling and support springs, with the element masses of the joined bodies.
-inline constexpr double kCouplingDampingRatio = 0.05;
-// Supports are this many times stiffer than a coupling of the same section.
-inline constexpr double kSupportStiffnessFactor = 10.0;
-
-// The stiffness of the bit's bottom contact, N/m: the case's, or by default as stiff as the
-// model's supports (kSupportStiffnessFactor × c·EA/ℓ of the bit body: the bottom is the string's
-// axial support at the bit; model/bit_bottom.hpp).
-double BitBottomStiffness(const BitBottomParameters& bottom, const Body& bit, const ModelSettings& settings);
 
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache);
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "model/builder.hpp"
+#include "model/string_geometry.hpp"
 
 namespace drillflex::model {
 namespace {

@@ -23,7 +23,8 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "model/builder.hpp"
+#include "model/model_input.hpp"
+#include "model/system_model.hpp"
 
 namespace drillflex::model {
 
