@@ -1,7 +1,10 @@
 // V4 of validation.md: static BHA in a straight 12-1/4 in hole at 10°, against a 1200-element
 // beam-column model with the axial weight gradient and an active-set wall (computed). Tolerance 2 %
 // on forces and tilt, at default model settings; the first wall contact is found by the contact
-// model (in the last case between the bit and the stabilizer).
+// model (in the last case between the bit and the stabilizer). The stabilizer's full-gauge blades, a
+// contact circle of no clearance, sink into the wall's penalty by a few micrometres only
+// (model.contact.penetration_fraction): those cases agree with the rigid point of the reference to
+// 0.3 % (the tilt was +1.04 % with the wall's stiffness per metre alone).
 #include <cmath>
 #include <cstdio>
 
@@ -28,14 +31,15 @@ class V4BhaInclinedHole : public ::testing::TestWithParam<BhaCase> {};
 
 TEST_P(V4BhaInclinedHole, BitSideForceTiltAndStabilizerForceWithinTwoPercent) {
   const BhaCase c = GetParam();
+  const double tolerance = c.blades ? 0.003 : 0.02;
   const auto results = RunCase("static", std::string("v4-bha-inclined-hole/") + c.file);
   ASSERT_TRUE(results.contains("static"));
   const auto& bit = results["static"]["bit"];
-  EXPECT_LT(std::abs(RelativeError(bit["side_force"].get<double>(), c.side_force_lbf)), 0.02) << bit;
+  EXPECT_LT(std::abs(RelativeError(bit["side_force"].get<double>(), c.side_force_lbf)), tolerance) << bit;
   // The bit pushes the low side (a pendulum drops angle).
-  EXPECT_LT(std::abs(RelativeError(-bit["build_force"].get<double>(), c.side_force_lbf)), 0.02) << bit;
+  EXPECT_LT(std::abs(RelativeError(-bit["build_force"].get<double>(), c.side_force_lbf)), tolerance) << bit;
   EXPECT_LT(std::abs(bit["walk_force"].get<double>()), 1e-6 * c.side_force_lbf);
-  EXPECT_LT(std::abs(RelativeError(bit["tilt"].get<double>() / kDegreesPerRadian, c.tilt_rad)), 0.02) << bit;
+  EXPECT_LT(std::abs(RelativeError(bit["tilt"].get<double>() / kDegreesPerRadian, c.tilt_rad)), tolerance) << bit;
   std::printf("V4 %s: bit side force %.2f lbf (reference %.1f, %+.2f %%), tilt %.6f rad (reference %.6f, %+.2f %%)\n",
               c.file, bit["side_force"].get<double>(), c.side_force_lbf,
               100.0 * RelativeError(bit["side_force"].get<double>(), c.side_force_lbf),
@@ -49,7 +53,7 @@ TEST_P(V4BhaInclinedHole, BitSideForceTiltAndStabilizerForceWithinTwoPercent) {
       const double stabilizer =
           c.blades ? reaction["normal_force"].get<double>()
                    : std::hypot(reaction["force"][1].get<double>(), reaction["force"][2].get<double>());
-      EXPECT_LT(std::abs(RelativeError(stabilizer, c.stabilizer_lbf)), 0.02) << reaction;
+      EXPECT_LT(std::abs(RelativeError(stabilizer, c.stabilizer_lbf)), tolerance) << reaction;
       std::printf("V4 %s: stabilizer force %.2f lbf (reference %.1f, %+.2f %%)\n", c.file, stabilizer, c.stabilizer_lbf,
                   100.0 * RelativeError(stabilizer, c.stabilizer_lbf));
     }

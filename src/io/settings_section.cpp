@@ -100,9 +100,15 @@ model::ModelSettings ReadModelSection(const YamlView& node) {
   }
   if (const auto contact = node.OptionalChild("contact")) {
     contact->ExpectMap("the contact settings {stiffness, damping_ratio, friction}");
-    contact->AllowOnlyKeys({"stiffness", "damping_ratio", "friction", "axial_friction", "friction_velocity"});
+    contact->AllowOnlyKeys(
+        {"stiffness", "penetration_fraction", "damping_ratio", "friction", "axial_friction", "friction_velocity"});
     auto& c = settings.contact;
     c.stiffness = contact->OptionalPositive("stiffness", Quantity::Stiffness).value_or(c.stiffness);
+    c.penetration_fraction =
+        contact->QuantityOr("penetration_fraction", Quantity::Dimensionless, c.penetration_fraction);
+    if (!(c.penetration_fraction >= 0.0 && c.penetration_fraction < 1.0)) {
+      contact->Child("penetration_fraction").Fail("expected a fraction of the radial clearance, 0 <= x < 1 (0: off)");
+    }
     c.damping_ratio = contact->QuantityOr("damping_ratio", Quantity::Dimensionless, c.damping_ratio);
     c.friction = contact->QuantityOr("friction", Quantity::Dimensionless, c.friction);
     c.axial_friction = contact->OptionalQuantity("axial_friction", Quantity::Dimensionless);

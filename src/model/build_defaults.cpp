@@ -1,5 +1,8 @@
 #include "model/build_defaults.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace drillflex::model {
 
 Vec6 SectionCouplingStiffness(const Body& body, double factor) {
@@ -18,6 +21,14 @@ std::vector<Support> DefaultWellSupports(double string_length) {
   hook.at = string_length;
   hook.fixed[kX] = hook.fixed[kRx] = true;
   return {bit, hook};
+}
+
+double WallContactStiffness(const ContactSettings& contact, double circle_length, double weight_per_length,
+                            double clearance) {
+  const double per_metre = contact.stiffness * circle_length;  // N/m per metre × m
+  if (!(contact.penetration_fraction > 0.0)) return per_metre;
+  const double weight = std::abs(weight_per_length) * kContactWeightSpan;
+  return std::max(per_metre, weight / (contact.penetration_fraction * std::max(clearance, kLeastContactClearance)));
 }
 
 double BitBottomStiffness(const BitBottomParameters& bottom, const Body& bit, const ModelSettings& settings) {

@@ -12,7 +12,7 @@ namespace drillflex::model {
 
 // Wall contact at every node (a joint once, on the upper body's start node): tool joints and
 // blades as point contacts, each circle as stiff as the string length it stands for
-// (model/contact_circles.hpp).
+// (model/contact_circles.hpp), a tight one stiffer (WallContactStiffness).
 std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& draft) {
   const ModelInput& input = draft.input;
   const std::vector<Body>& placed = draft.bodies;
@@ -38,7 +38,9 @@ std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& dra
   const ContactSettings& contact = input.settings.contact;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const auto [body, k, s] = nodes[i];
-    const double stiffness = contact.stiffness * circles[i].length;  // N/m per metre × m
+    const double clearance = 0.5 * (wellbore->hole.Diameter(input.bit_md - s) - circles[i].diameter);
+    const double stiffness =
+        WallContactStiffness(contact, circles[i].length, BuoyedWeightPerLength(*body, input), clearance);
     WallContactParameters parameters;
     parameters.contact_radius = 0.5 * circles[i].diameter;
     parameters.normal_stiffness = stiffness;

@@ -83,6 +83,10 @@ struct ContactSettings {
   // The wall's stiffness per metre of string in contact, N/m per m: a contact circle standing for
   // a length l of string (model/contact_lengths.hpp) has k_n = stiffness × l.
   double stiffness = 1.0e8;
+  // A contact of small radial clearance c (a stabilizer's blades) is made at least as stiff as its
+  // section's weight over 30 ft needs to sink into the wall by this fraction of c (0: the stiffness
+  // per metre alone; model/build_defaults.hpp WallContactStiffness).
+  double penetration_fraction = 0.02;
   double damping_ratio = 0.1;
   double friction = 0.25;        // tangential (rotating) Coulomb coefficient
   std::optional<double> axial_friction;  // sliding along the hole, default = friction

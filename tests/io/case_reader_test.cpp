@@ -361,6 +361,21 @@ TEST(CaseReader, FrictionVelocityAndFluidFrequency) {
   EXPECT_FALSE(unset.analyses.transient->fluid_frequency.has_value());
 }
 
+// `model.contact.penetration_fraction`: 0.02 by default, 0 turns the tight contacts' stiffness floor
+// off, a fraction outside [0, 1) is refused naming the key.
+TEST(CaseReader, ContactPenetrationFraction) {
+  const std::string head = std::string("units: field\n") + kGoodString;
+  EXPECT_DOUBLE_EQ(ParseCase(head, "default.yaml").input.settings.contact.penetration_fraction, 0.02);
+  EXPECT_DOUBLE_EQ(ParseCase(head + "model:\n  contact: {penetration_fraction: 0}\n", "off.yaml")
+                       .input.settings.contact.penetration_fraction,
+                   0.0);
+  int line = 0;
+  std::string key;
+  const std::string message = ErrorOf(head + "model:\n  contact: {penetration_fraction: 1.5}\n", &line, &key);
+  EXPECT_NE(message.find("0 <= x < 1"), std::string::npos) << message;
+  EXPECT_EQ(key, "model.contact.penetration_fraction");
+}
+
 // Ratings (issue 37): grade, custom yield, class and make-up torque per component; the design factor.
 TEST(CaseReader, StringRatingsAndDesignFactor) {
   const Case c = ParseCase(

@@ -227,11 +227,13 @@
     if (R.static) {
       for (const w of R.static.warnings || []) warnings.push(w);
       // Into the wall by more than 5 % of the radial clearance there: the contact stiffness is low
-      // for its force (a penetration is the penalty's compliance, normal force / stiffness).
-      const into = (R.static.nodes || []).filter((n) => n.clearance !== undefined && n.clearance < -0.05 * Math.max(n.clearance + n.hole_offset, 0));
+      // for its force (a penetration is the penalty's compliance, normal force / stiffness). Only
+      // where the string has a clearance: the bit cuts its hole (its stations are held at the centre).
+      const into = (R.static.nodes || []).filter((n) => n.clearance !== undefined && n.clearance + n.hole_offset > 0 &&
+                                                       n.clearance < -0.05 * (n.clearance + n.hole_offset));
       if (into.length) {
         const deepest = into.reduce((a, b) => (b.clearance < a.clearance ? b : a));
-        warnings.push(`${into.length} stations lie into the wall by more than 5 % of their clearance (deepest ${num(-deepest.clearance, 3)} ${U.diameter} at ${where(deepest.s, deepest.md)}): raise model.contact.stiffness`);
+        warnings.push(`${into.length} stations lie into the wall by more than 5 % of their clearance (deepest ${num(-deepest.clearance, 3)} ${U.diameter} at ${where(deepest.s, deepest.md)}): raise model.contact.stiffness or lower model.contact.penetration_fraction`);
       }
     }
     if (R.vibration && R.vibration.max_clearance_ratio) {

@@ -1,0 +1,45 @@
+// The wall contacts' stiffness (model/build_defaults.hpp WallContactStiffness): the wall's stiffness
+// per metre × the circle's length, and for a tight contact at least the stiffness under which its
+// section's weight over 30 ft sinks it by the case's fraction of its radial clearance. Hand values.
+#include <gtest/gtest.h>
+
+#include "model/build_defaults.hpp"
+
+namespace drillflex::model {
+namespace {
+
+constexpr double kInch = 0.0254;
+
+ContactSettings Settings(double fraction) {
+  ContactSettings contact;
+  contact.stiffness = 1e8;  // N/m per m
+  contact.penetration_fraction = fraction;
+  return contact;
+}
+
+// A 5 in pipe's body in an 8-1/2 in hole (c = 1.75 in): the wall's stiffness per metre holds.
+TEST(WallContactStiffness, LooseContactTakesTheWallsStiffnessPerMetre) {
+  EXPECT_DOUBLE_EQ(WallContactStiffness(Settings(0.02), 0.3048, 280.0, 1.75 * kInch), 1e8 * 0.3048);
+}
+
+// A stabilizer's blades with 1/32 in of clearance on an 8 in collar (1500 N/m buoyed): 1500 N/m ×
+// 9.144 m / (0.02 × 0.79375 mm) = 8.64e8 N/m, 19 times the wall's 1e8 N/m a metre × 1.5 ft; the
+// weight over 30 ft then sinks it by 2 % of its clearance.
+TEST(WallContactStiffness, TightContactSinksTheGivenFractionOfItsClearanceUnderItsSpansWeight) {
+  const double clearance = kInch / 32.0;
+  const double k = WallContactStiffness(Settings(0.02), 0.4572, 1500.0, clearance);
+  EXPECT_NEAR(k, 8.64e8, 1e-6 * 8.64e8);
+  EXPECT_NEAR(1500.0 * 9.144 / k, 0.02 * clearance, 1e-15);
+  // Buoyancy's sign does not matter (a string lighter than its mud still presses the wall somewhere).
+  EXPECT_DOUBLE_EQ(WallContactStiffness(Settings(0.02), 0.4572, -1500.0, clearance), k);
+}
+
+// A full-gauge blade (no clearance) takes 1/64 in; a fraction of 0 turns the floor off.
+TEST(WallContactStiffness, FullGaugeTakesTheLeastClearanceAndZeroFractionTurnsTheFloorOff) {
+  EXPECT_NEAR(WallContactStiffness(Settings(0.02), 0.4572, 1500.0, 0.0), 1500.0 * 9.144 / (0.02 * kInch / 64.0),
+              1e-3 * 1e9);
+  EXPECT_DOUBLE_EQ(WallContactStiffness(Settings(0.0), 0.4572, 1500.0, 0.0), 1e8 * 0.4572);
+}
+
+}  // namespace
+}  // namespace drillflex::model
