@@ -18,6 +18,7 @@
 #include "analyses/static_minimum.hpp"
 #include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/string_above.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
@@ -137,7 +138,8 @@ void FillBuckledMode(const model::SystemModel& model, const VecX& q, const VecX&
   const auto poses = model.Poses(q);
   double largest = 0.0;
   for (const Station& station : StringStations(model)) {
-    const NodeVelocity node = MapToNode(model.bodies()[station.body], poses[station.body], mode, station.node);
+    const model::NodeRates node =
+        model::ComputeStringFrameNodeRates(model.bodies()[station.body], poses[station.body], mode, station.node);
     result.s.push_back(station.s);
     result.mode_displacement.push_back(node.translation);
     result.mode_rotation.push_back(node.rotation);

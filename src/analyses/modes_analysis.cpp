@@ -8,6 +8,7 @@
 
 #include "core/dense_eigen.hpp"
 #include "core/error.hpp"
+#include "model/node_kinematics.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
 
@@ -22,13 +23,11 @@ EnergySplit SplitKineticEnergy(const model::SystemModel& model, const std::vecto
   for (std::size_t b = 0; b < model.bodies().size(); ++b) {
     const model::Body& body = model.bodies()[b];
     const cms::ReducedBody& reduced = *body.reduced;
-    const model::BodyPose& pose = poses[b];
-    const Vec3 velocity = pose.A.transpose() * v.segment<3>(body.v_offset);
-    const Vec3 omega = v.segment<3>(body.v_offset + 3);
-    const auto eta_dot = v.segment(body.v_offset + 6, body.flexible_count);
+    const VecX body_velocity = v.segment(body.v_offset, body.velocity_count());
     for (int k = 0; k < body.node_count(); ++k) {
-      const Vec3 t = velocity + omega.cross(pose.NodeOffset(body, k)) + reduced.node_translation_modes[k] * eta_dot;
-      const Vec3 w = omega + reduced.node_rotation_modes[k] * eta_dot;
+      const model::NodeRates rates = model::ComputeBodyFrameNodeRates(body, poses[b], k, body_velocity);
+      const Vec3& t = rates.translation;
+      const Vec3& w = rates.rotation;
       const Mat3 mass = reduced.NodeTranslationalMass(k);
       const Mat3& inertia = reduced.node_rotary_inertia[k];
       split.axial += 0.5 * mass(0, 0) * t.x() * t.x();
@@ -48,7 +47,8 @@ void FillShape(const model::SystemModel& model, const std::vector<model::BodyPos
   mode.displacement.clear();
   mode.rotation.clear();
   for (const Station& station : stations) {
-    const NodeVelocity node = MapToNode(model.bodies()[station.body], poses[station.body], mode.vector, station.node);
+    const model::Body& body = model.bodies()[station.body];
+    const model::NodeRates node = model::ComputeStringFrameNodeRates(body, poses[station.body], mode.vector, station.node);
     mode.displacement.push_back(node.translation);
     mode.rotation.push_back(node.rotation);
   }

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/profile.hpp"
 #include "model/internal_forces.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/spring_elements.hpp"
 #include "model/static_problem.hpp"
 #include "model/string_above.hpp"
@@ -108,7 +109,7 @@ std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model,
   for (const int i : station_indices) {
     const Station& station = stations[i];
     const model::Body& body = model.bodies()[station.body];
-    const NodeMotion motion = ComputeNodeMotion(body, poses[station.body], station.node);
+    const model::NodeDisplacement motion = model::ComputeNodeDisplacement(body, poses[station.body], station.node);
     StaticNodeResult node;
     node.s = station.s;
     node.position = motion.position;

@@ -15,6 +15,7 @@
 #include "model/drive_elements.hpp"
 #include "model/dynamic_problem.hpp"
 #include "model/lateral_fluid.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -47,7 +48,7 @@ std::optional<model::ElementHandle<model::WallContactElement>> ContactAt(const m
 double SpinRate(const model::SystemModel& model, const std::vector<model::BodyPose>& poses, const VecX& v,
                 const Station& station) {
   const model::Body& body = model.bodies()[station.body];
-  return -MapToNode(body, poses[station.body], v, station.node).rotation.x();
+  return -model::ComputeStringFrameNodeRates(body, poses[station.body], v, station.node).rotation.x();
 }
 
 // The direction of a lateral offset (y right, z high side) from the high side toward the right, [0, 2π).

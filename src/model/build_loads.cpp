@@ -5,6 +5,7 @@
 
 #include "model/build_parts.hpp"
 #include "model/nodal_loads.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::model {
 namespace {
@@ -12,11 +13,9 @@ namespace {
 // The work-equivalent nodal forces and moments of a uniform global line load over every element of
 // a body (the buoyed weight, N/m).
 void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
-  const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
   for (int k = 0; k + 1 < body.node_count(); ++k) {
-    AddUniformLineLoad(node_position(k), node_position(k + 1), per_length, forces[k], moments[k], forces[k + 1],
-                       moments[k + 1]);
+    AddUniformLineLoad(NodeReferencePosition(body, k), NodeReferencePosition(body, k + 1), per_length, forces[k],
+                       moments[k], forces[k + 1], moments[k + 1]);
   }
 }
 
@@ -24,7 +23,6 @@ void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& fo
 // [from, to]). True when the load reaches the body.
 bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
   bool any = false;
   for (int k = 0; k + 1 < body.node_count(); ++k) {
     const double a = std::max(load.from, body.NodeS(k)), c = std::min(load.to, body.NodeS(k + 1));
@@ -34,7 +32,8 @@ bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& f
     const Vec3 m = frame * load.moment_per_length;
     const double h = body.NodeS(k + 1) - body.NodeS(k);
     if (c - a >= h * (1.0 - 1e-12)) {
-      AddUniformLineLoad(node_position(k), node_position(k + 1), q, forces[k], moments[k], forces[k + 1], moments[k + 1]);
+      AddUniformLineLoad(NodeReferencePosition(body, k), NodeReferencePosition(body, k + 1), q, forces[k], moments[k],
+                         forces[k + 1], moments[k + 1]);
     } else {  // a partly loaded element: the resultant shared by the lever rule
       const double share = (0.5 * (a + c) - body.NodeS(k)) / h;
       forces[k] += (1.0 - share) * (c - a) * q;
