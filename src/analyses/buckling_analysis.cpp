@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/linearization.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/static_minimum.hpp"
