@@ -65,7 +65,7 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   // offsets took ~1 ms a sample, a tenth of the bundled example's run at 100 samples a second).
   std::vector<int> read = {0, static_cast<int>(stations.size()) - 1};
   for (const Probe& probe : probes) read.push_back(probe.station);
-  std::vector<StaticNodeResult> nodes = StaticNodeResults(model, q, 1.0, read);
+  std::vector<StaticNodeResult> nodes = StaticNodeResults(built, q, 1.0, read);
   AddWallOffsets(built, q, nodes, read);
   const auto poses = model.Poses(q);
   TransientSample sample;

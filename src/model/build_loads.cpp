@@ -49,10 +49,15 @@ bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& f
 // Applied loads, each group its own elements (LoadParameters scales or replaces each): the buoyed
 // weight per body; the case's distributed loads per body and point loads; the transient's initial
 // loads; the WOB and the torque on bit per unit of their value.
-double PlaceLoads(ModelDraft& draft) {
+PlacedLoads PlaceLoads(ModelDraft& draft) {
   const ModelInput& input = draft.input;
   const std::vector<Body>& placed = draft.bodies;
   const double length = draft.length;
+  std::vector<ElementHandle<NodalLoadElement>> handles;
+  auto add = [&](const Body& body, std::vector<Vec3> forces, std::vector<Vec3> moments, LoadGroup group,
+                 double value) {
+    handles.push_back(draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), group, value));
+  };
   double force_scale = 0.0;
   for (const Body& body : placed) {
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
@@ -61,7 +66,7 @@ double PlaceLoads(ModelDraft& draft) {
       AddLineLoad(body, weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]), forces, moments);
     }
     for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
-    draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kWeight);
+    add(body, std::move(forces), std::move(moments), LoadGroup::kWeight, 1.0);
   }
   for (const auto& [loads, group] : {std::pair{&input.loads, LoadGroup::kCaseLoads},
                                      std::pair{&input.initial_loads, LoadGroup::kInitialLoads}}) {
@@ -75,7 +80,7 @@ double PlaceLoads(ModelDraft& draft) {
       if (group == LoadGroup::kCaseLoads) {
         for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
       }
-      draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), group);
+      add(body, std::move(forces), std::move(moments), group, 1.0);
     }
     for (const Load& load : *loads) {
       if (load.distributed) continue;
@@ -86,7 +91,7 @@ double PlaceLoads(ModelDraft& draft) {
       forces[node] = frame * load.force;
       moments[node] = frame * load.moment;
       if (group == LoadGroup::kCaseLoads) force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
-      draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), group);
+      add(body, std::move(forces), std::move(moments), group, 1.0);
     }
   }
   // The formation pushes the bit up-hole with the WOB and resists its rotation with the torque on
@@ -103,16 +108,16 @@ double PlaceLoads(ModelDraft& draft) {
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
     forces[node] = axis;
     force_scale += std::abs(wob);
-    draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kWeightOnBit, wob);
+    add(body, std::move(forces), std::move(moments), LoadGroup::kWeightOnBit, wob);
   }
   if (!rock_tob) {
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
     moments[node] = axis;
     force_scale += std::abs(tob) / std::max(length, 1e-3);
-    draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kTorqueOnBit, tob);
+    add(body, std::move(forces), std::move(moments), LoadGroup::kTorqueOnBit, tob);
   }
   if (force_scale == 0.0) force_scale = placed.front().bending_rigidity / (length * length);
-  return force_scale;
+  return {std::move(handles), force_scale};
 }
 
 }  // namespace drillflex::model
