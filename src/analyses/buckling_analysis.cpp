@@ -13,11 +13,13 @@
 
 #include <fmt/format.h>
 
+#include "analyses/linearization.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/static_minimum.hpp"
 #include "analyses/wall_offsets.hpp"
 #include "core/error.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/string_above.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
@@ -53,6 +55,7 @@ class EquilibriumSolver {
   void Forget() { found_.clear(); }
   bool scale_wob() const { return scale_wob_; }
   const model::SystemModel& model() const { return built_.system; }
+  const model::BuiltModel& built() const { return built_; }
   // The model and its load parameters at multiplier μ (at rest: no friction).
   const model::SystemModel& ModelAt(double /*multiplier*/) const { return built_.system; }
   model::LoadParameters LoadsAt(double multiplier) const {
@@ -124,9 +127,9 @@ class EquilibriumSolver {
 };
 
 // The largest axial compression along the string at q (N, ≥ 0).
-double MaxCompression(const model::SystemModel& model, const VecX& q, const model::LoadParameters& load) {
+double MaxCompression(const model::BuiltModel& built, const VecX& q, const model::LoadParameters& load) {
   double compression = 0.0;
-  for (const StaticNodeResult& node : StaticNodeResults(model, q, load)) {
+  for (const StaticNodeResult& node : StaticNodeResults(built, q, load)) {
     compression = std::max(compression, -node.axial_force);
   }
   return compression;
@@ -137,7 +140,8 @@ void FillBuckledMode(const model::SystemModel& model, const VecX& q, const VecX&
   const auto poses = model.Poses(q);
   double largest = 0.0;
   for (const Station& station : StringStations(model)) {
-    const NodeVelocity node = MapToNode(model.bodies()[station.body], poses[station.body], mode, station.node);
+    const model::NodeRates node =
+        model::ComputeStringFrameNodeRates(model.bodies()[station.body], poses[station.body], mode, station.node);
     result.s.push_back(station.s);
     result.mode_displacement.push_back(node.translation);
     result.mode_rotation.push_back(node.rotation);
@@ -187,7 +191,7 @@ void SolveEigenproblem(EquilibriumSolver& solver, const BucklingSettings& settin
   }
   if (!current.converged) throw SolverError("buckling: no static equilibrium found even at 1/64 of the loads");
   result.reference_compression =
-      MaxCompression(model, current.q, current.reference_factor) / current.reference_factor;
+      MaxCompression(solver.built(), current.q, current.reference_factor) / current.reference_factor;
   if (std::isnan(current.multiplier())) {
     throw SolverError("buckling: the case's loads do not buckle the string (no positive load multiplier)");
   }
@@ -282,7 +286,7 @@ bool SampleLateralMode(EquilibriumSolver& solver, double multiplier, LateralSamp
     if (total <= 0.0 || split.lateral < 0.5 * total) continue;
     sample.multiplier = multiplier;
     sample.eigenvalue = modal.eigenvalues[i];
-    sample.compression = MaxCompression(model, equilibrium.q, solver.LoadsAt(multiplier));
+    sample.compression = MaxCompression(solver.built(), equilibrium.q, solver.LoadsAt(multiplier));
     sample.q = equilibrium.q;
     sample.mode = modal.vectors.col(i);
     return true;
@@ -511,7 +515,7 @@ class OnsetSearch {
 SinusoidalBucklingScreen ScreenSinusoidalBuckling(const model::ModelInput& input, const model::BuiltModel& built,
                                                   const VecX& q, bool scale_wob) {
   const model::SystemModel& model = built.system;
-  std::vector<StaticNodeResult> nodes = StaticNodeResults(model, q, 1.0);
+  std::vector<StaticNodeResult> nodes = StaticNodeResults(built, q, 1.0);
   AddWallOffsets(built, q, nodes);
   SinusoidalBucklingScreen screen;
   double least = std::numeric_limits<double>::infinity();
@@ -561,7 +565,7 @@ FrequencyLoadPoint FrequencyAt(EquilibriumSolver& solver, double load_factor, in
   }
   eigenvalue = modal.eigenvalues[rigid];
   point.frequency_hz = std::sqrt(std::max(eigenvalue, 0.0)) / (2.0 * kPi);
-  point.compression = MaxCompression(model, equilibrium.q, load_factor);
+  point.compression = MaxCompression(solver.built(), equilibrium.q, load_factor);
   return point;
 }
 

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "analyses/linearization.hpp"
 #include "analyses/modes_analysis.hpp"
 #include "core/error.hpp"
 #include "solvers/eigen.hpp"

@@ -11,6 +11,7 @@
 #include "analyses/string_stations.hpp"
 #include "core/error.hpp"
 #include "model/gyroscopic_element.hpp"
+#include "model/node_kinematics.hpp"
 #include "solvers/eigen.hpp"
 
 namespace drillflex::analyses {
@@ -111,8 +112,9 @@ ModeResult GyroscopicModeSolver::Data::Describe(Complex s, const Eigen::VectorXc
   double turn = 0.0, size = 0.0;
   for (const Station& station : stations) {
     const model::Body& body = model->bodies()[station.body];
-    const Vec3 real = MapToNode(body, poses[station.body], re, station.node).translation;
-    const Vec3 imaginary = MapToNode(body, poses[station.body], im, station.node).translation;
+    const Vec3 real = model::ComputeStringFrameNodeRates(body, poses[station.body], re, station.node).translation;
+    const Vec3 imaginary =
+        model::ComputeStringFrameNodeRates(body, poses[station.body], im, station.node).translation;
     const Complex y(real.y(), imaginary.y()), z(real.z(), imaginary.z());
     turn += 2.0 * (y * std::conj(z)).imag();
     size += std::norm(y) + std::norm(z);

@@ -8,6 +8,7 @@
 
 #include "core/dense_eigen.hpp"
 #include "core/error.hpp"
+#include "model/node_kinematics.hpp"
 #include "solvers/buckling.hpp"
 #include "solvers/eigen.hpp"
 
@@ -22,13 +23,11 @@ EnergySplit SplitKineticEnergy(const model::SystemModel& model, const std::vecto
   for (std::size_t b = 0; b < model.bodies().size(); ++b) {
     const model::Body& body = model.bodies()[b];
     const cms::ReducedBody& reduced = *body.reduced;
-    const model::BodyPose& pose = poses[b];
-    const Vec3 velocity = pose.A.transpose() * v.segment<3>(body.v_offset);
-    const Vec3 omega = v.segment<3>(body.v_offset + 3);
-    const auto eta_dot = v.segment(body.v_offset + 6, body.flexible_count);
+    const VecX body_velocity = v.segment(body.v_offset, body.velocity_count());
     for (int k = 0; k < body.node_count(); ++k) {
-      const Vec3 t = velocity + omega.cross(pose.NodeOffset(body, k)) + reduced.node_translation_modes[k] * eta_dot;
-      const Vec3 w = omega + reduced.node_rotation_modes[k] * eta_dot;
+      const model::NodeRates rates = model::ComputeBodyFrameNodeRates(body, poses[b], k, body_velocity);
+      const Vec3& t = rates.translation;
+      const Vec3& w = rates.rotation;
       const Mat3 mass = reduced.NodeTranslationalMass(k);
       const Mat3& inertia = reduced.node_rotary_inertia[k];
       split.axial += 0.5 * mass(0, 0) * t.x() * t.x();
@@ -48,7 +47,8 @@ void FillShape(const model::SystemModel& model, const std::vector<model::BodyPos
   mode.displacement.clear();
   mode.rotation.clear();
   for (const Station& station : stations) {
-    const NodeVelocity node = MapToNode(model.bodies()[station.body], poses[station.body], mode.vector, station.node);
+    const model::Body& body = model.bodies()[station.body];
+    const model::NodeRates node = model::ComputeStringFrameNodeRates(body, poses[station.body], mode.vector, station.node);
     mode.displacement.push_back(node.translation);
     mode.rotation.push_back(node.rotation);
   }
@@ -289,25 +289,6 @@ const char* WhirlName(Whirl whirl) {
     case Whirl::Planar: return "planar";
   }
   return "unknown";
-}
-
-LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, model::LoadParameters load) {
-  const VecX zero = VecX::Zero(model.num_velocities());
-  // The wall friction of a sliding string is no stiffness: about the steady sliding its position
-  // derivatives are circulatory (a tangential force μ k δn from a radial move, a radial one from the
-  // contact moving around the hole), and their symmetric part read as a negative stiffness of about
-  // ±μk/2 (the bundled example's "mode" at ω² = −134 rad²/s²). The stiffness is the string's with the
-  // friction off; the friction's velocity derivative about the sliding stays in the damping
-  // (docs/method.md "The friction of a rotating string, linearized").
-  model::LoadParameters conservative = load;
-  conservative.SetWallFriction({0.0, 0.0});
-  const SparseMat tangent = model.IterationMatrix(0.0, q, zero, zero, conservative, 1.0, 0.0, 0.0);
-  const SparseMat mass = model.MassMatrix(q);
-  LinearizedSystem system;
-  system.stiffness = (0.5 * (tangent + SparseMat(tangent.transpose()))).pruned();
-  system.mass = (0.5 * (mass + SparseMat(mass.transpose()))).pruned();
-  system.damping = model.IterationMatrix(0.0, q, zero, zero, load, 0.0, 1.0, 0.0).pruned();
-  return system;
 }
 
 ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings,

@@ -1,13 +1,14 @@
 // Linear vibration modes (method.md §9.2) about a state q: K = ∂R/∂q at q (v = a = 0, load
-// factor 1: the geometric stiffening of the loads in that state is included), M = M(q);
-// K x = ω² M x (solvers::SolveModes: dense, or sparse Lanczos for large models). Each mode is
-// classified by the split of its kinetic energy ½ xᵀ M x over the nodes into axial, torsional and
-// lateral parts.
+// factor 1: the geometric stiffening of the loads in that state is included), M = M(q)
+// (analyses/linearization.hpp Linearize); K x = ω² M x (solvers::SolveModes: dense, or sparse
+// Lanczos for large models). Each mode is classified by the split of its kinetic energy ½ xᵀ M x
+// over the nodes into axial, torsional and lateral parts.
 #pragma once
 
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
+#include "analyses/linearization.hpp"
 #include "analyses/string_stations.hpp"
 #include "core/types.hpp"
 #include "model/builder.hpp"
@@ -102,18 +103,6 @@ ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesS
 // The same on a bare system model at a given load factor (buckling's frequency method).
 ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings,
                          double load_factor = 1.0, const model::LateralFluid* fluid = nullptr);
-
-// The linearized matrices at q (v = a = 0): K = ∂R/∂q at the load factor, symmetrized
-// ½(K + Kᵀ) (the tangent of dead moments and of the rotation parametrization is slightly
-// unsymmetric away from equilibrium), M(q) (the steel; the fluid is added by the analyses) and
-// D = ∂R/∂v (modal structural damping of the bodies, coupling, support and contact damping).
-struct LinearizedSystem {
-  SparseMat stiffness;
-  SparseMat mass;
-  SparseMat damping;
-};
-// `load`: a bare number is the load factor (model::LoadParameters).
-LinearizedSystem Linearize(const model::SystemModel& model, const VecX& q, model::LoadParameters load);
 
 inline constexpr int kMaxModesSearched = 400;
 

@@ -1,6 +1,6 @@
 #include "analyses/response_solver.hpp"
 
-#include "analyses/modes_analysis.hpp"
+#include "analyses/linearization.hpp"
 #include "fe/annulus_fluid.hpp"
 
 namespace drillflex::analyses {

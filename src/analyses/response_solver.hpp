@@ -1,7 +1,7 @@
 // The linear system behind the vibration sweep (analyses/vibration_analysis.hpp) and the two ways
 // of solving it at a frequency ω (rad/s):
 //   (K (1 + 2iζ_s) − ω² M(ω) + iω D(ω)) X = F,
-// K, M (steel and bore fluid) and D = ∂R/∂v of modes_analysis.hpp Linearize; the annulus added mass
+// K, M (steel and bore fluid) and D = ∂R/∂v of analyses/linearization.hpp Linearize; the annulus added mass
 // and damping of each group of nodes with one rod and hole radius, C_m(ω) U_g and C_v(ω) ω U_g
 // (model/lateral_fluid.hpp); the structural damping ratio ζ_s as a loss factor 2ζ_s on K
 // (hysteretic: iω (2ζ_s/ω) K, so every mode gets ζ_s at its resonance; the modal damping of the

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/profile.hpp"
 #include "core/so3.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/spring_elements.hpp"
 #include "model/wall_contact.hpp"
 #include "well/hole.hpp"
@@ -39,14 +40,12 @@ std::vector<NodeStation> Stations(const model::ModelInput& input, const model::S
   std::vector<NodeStation> stations;
   for (int b = 0; b < static_cast<int>(system.bodies().size()); ++b) {
     const model::Body& body = system.bodies()[b];
-    const Mat3 frame = body.reference_orientation.toRotationMatrix();
     for (int k = 0; k < body.node_count(); ++k) {
       NodeStation station;
       station.body = b;
       station.node = k;
-      const Vec3& rho = body.reduced->node_positions[k];
-      station.s = body.s_start + rho.x();
-      station.position = body.reference_position + frame * rho;
+      station.s = body.NodeS(k);
+      station.position = model::NodeReferencePosition(body, k);
       station.md = trajectory.ClosestMd(station.position, input.bit_md - station.s);
       const double contact_radius = 0.5 * model::ContactDiameterAt(input.string, station.s);
       station.clearance = std::max(0.5 * hole.Diameter(station.md) - contact_radius, 0.0);

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/profile.hpp"
 #include "model/internal_forces.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/spring_elements.hpp"
 #include "model/static_problem.hpp"
 #include "model/string_above.hpp"
@@ -80,15 +81,16 @@ solvers::NewtonOptions DefaultNewtonOptions() {
   return options;
 }
 
-std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
+std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
                                                 const model::LoadParameters& load) {
-  std::vector<int> all(StringStations(model).size());
+  std::vector<int> all(StringStations(built.system).size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  return StaticNodeResults(model, q, load, all);
+  return StaticNodeResults(built, q, load, all);
 }
 
-std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
+std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
                                                 const model::LoadParameters& load, std::span<const int> station_indices) {
+  const model::SystemModel& model = built.system;
   const std::vector<Station> stations = StringStations(model);
   // Only the bodies and joints the listed stations read.
   std::vector<int> bodies, joints;
@@ -101,14 +103,14 @@ std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model,
     }
   }
   const auto poses = model.Poses(q);
-  const auto forces = model::ComputeInternalForces(model, q, load, bodies);
-  const auto joint_forces = model::JointInternalForces(model, q, VecX::Zero(model.num_velocities()), joints);
+  const auto forces = model::ComputeInternalForces(built, q, load, bodies);
+  const auto joint_forces = model::JointInternalForces(built, q, VecX::Zero(model.num_velocities()), joints);
   std::vector<StaticNodeResult> nodes;
   nodes.reserve(station_indices.size());
   for (const int i : station_indices) {
     const Station& station = stations[i];
     const model::Body& body = model.bodies()[station.body];
-    const NodeMotion motion = ComputeNodeMotion(body, poses[station.body], station.node);
+    const model::NodeDisplacement motion = model::ComputeNodeDisplacement(body, poses[station.body], station.node);
     StaticNodeResult node;
     node.s = station.s;
     node.position = motion.position;
@@ -167,7 +169,7 @@ constexpr double kUnresolvedFraction = 1e-2;
 StaticResult WithResults(const model::BuiltModel& built, StaticResult result, const model::LoadParameters& parameters) {
   const profile::Scope scope("static: results along the string");
   CheckForcesResolved(built, result);
-  result.nodes = StaticNodeResults(built.system, result.q, parameters);
+  result.nodes = StaticNodeResults(built, result.q, parameters);
   AddWallOffsets(built, result.q, result.nodes);
   result.reactions = SupportReactions(built, result.q, parameters);
   if (built.string_above) {

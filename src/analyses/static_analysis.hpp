@@ -145,11 +145,11 @@ StaticResult WithResults(const model::BuiltModel& built, StaticResult result, co
 // `load` (model::NodalLoadElement::Scale) for the axial force inside bodies
 // (model/internal_forces.hpp). At a joint the internal forces are the coupling force (the section
 // between the two bodies; a point load at the joint acts on the upper body's node, above it).
-std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
+std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
                                                 const model::LoadParameters& load = 1.0);
-// The same at the listed stations only (indices into StringStations(model)), in that order: a
+// The same at the listed stations only (indices into StringStations(built.system)), in that order: a
 // transient run's samples (the bit, the top, the probes) without the forces of the whole string.
-std::vector<StaticNodeResult> StaticNodeResults(const model::SystemModel& model, const VecX& q,
+std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
                                                 const model::LoadParameters& load, std::span<const int> station_indices);
 std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q,
                                              const model::LoadParameters& parameters = 1.0);

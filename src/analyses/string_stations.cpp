@@ -1,8 +1,7 @@
 #include "analyses/string_stations.hpp"
 
+#include <algorithm>
 #include <cmath>
-
-#include "core/so3.hpp"
 
 namespace drillflex::analyses {
 
@@ -30,34 +29,6 @@ std::vector<Station> StringStations(const model::SystemModel& model) {
     }
   }
   return stations;
-}
-
-NodeMotion ComputeNodeMotion(const model::Body& body, const model::BodyPose& pose, int node) {
-  const Mat3 frame = body.reference_orientation.toRotationMatrix();  // string frame at the body
-  const Vec3 reference = body.reference_position + frame * body.reduced->node_positions[node];
-  NodeMotion motion;
-  motion.position = pose.NodePosition(body, node);
-  motion.displacement = frame.transpose() * (motion.position - reference);
-  // Node orientation A · Exp(θ_k) relative to the reference frame, as a rotation vector in it.
-  const Mat3 node_rotation = pose.A * so3::ExpMap(pose.NodeRotation(body, node));
-  motion.rotation = so3::LogMap(frame.transpose() * node_rotation);
-  return motion;
-}
-
-NodeVelocity MapToNode(const model::Body& body, const model::BodyPose& pose, const VecX& v, int node) {
-  const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  const Mat3 to_string = frame.transpose() * pose.A;
-  const int n_f = body.flexible_count;
-  const Vec3 velocity = v.segment<3>(body.v_offset);
-  const Vec3 omega = v.segment<3>(body.v_offset + 3);
-  const auto eta_dot = v.segment(body.v_offset + 6, n_f);
-  const Vec3 offset = pose.NodeOffset(body, node);
-  NodeVelocity result;
-  // ṙ_k = ṙ + A(ω × u_k + Φ_k η̇), ω_k = ω + Ψ_k η̇ (method.md §4).
-  result.translation = frame.transpose() * velocity +
-                       to_string * (omega.cross(offset) + body.reduced->node_translation_modes[node] * eta_dot);
-  result.rotation = to_string * (omega + body.reduced->node_rotation_modes[node] * eta_dot);
-  return result;
 }
 
 }  // namespace drillflex::analyses

@@ -15,6 +15,7 @@
 #include "model/drive_elements.hpp"
 #include "model/dynamic_problem.hpp"
 #include "model/lateral_fluid.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::analyses {
 namespace {
@@ -47,7 +48,7 @@ std::optional<model::ElementHandle<model::WallContactElement>> ContactAt(const m
 double SpinRate(const model::SystemModel& model, const std::vector<model::BodyPose>& poses, const VecX& v,
                 const Station& station) {
   const model::Body& body = model.bodies()[station.body];
-  return -MapToNode(body, poses[station.body], v, station.node).rotation.x();
+  return -model::ComputeStringFrameNodeRates(body, poses[station.body], v, station.node).rotation.x();
 }
 
 // The direction of a lateral offset (y right, z high side) from the high side toward the right, [0, 2π).
@@ -64,7 +65,7 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   // offsets took ~1 ms a sample, a tenth of the bundled example's run at 100 samples a second).
   std::vector<int> read = {0, static_cast<int>(stations.size()) - 1};
   for (const Probe& probe : probes) read.push_back(probe.station);
-  std::vector<StaticNodeResult> nodes = StaticNodeResults(model, q, 1.0, read);
+  std::vector<StaticNodeResult> nodes = StaticNodeResults(built, q, 1.0, read);
   AddWallOffsets(built, q, nodes, read);
   const auto poses = model.Poses(q);
   TransientSample sample;

@@ -1,5 +1,7 @@
 #include "analyses/transient_start_places.hpp"
 
+#include "model/node_kinematics.hpp"
+
 namespace drillflex::analyses {
 namespace {
 
@@ -8,7 +10,7 @@ namespace {
 double AxialDisplacement(const model::SystemModel& system, const VecX& q, std::size_t body_index, int node) {
   const model::Body& body = system.bodies()[body_index];
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  const Vec3 reference = body.reference_position + frame * body.reduced->node_positions[node];
+  const Vec3 reference = model::NodeReferencePosition(body, node);
   return frame.col(0).dot(system.Poses(q)[body_index].NodePosition(body, node) - reference);
 }
 

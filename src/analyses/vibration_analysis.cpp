@@ -17,7 +17,7 @@
 #include "analyses/response_solver.hpp"
 #include "analyses/string_stations.hpp"
 #include "core/error.hpp"
-#include "core/so3.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/wall_contact.hpp"
 #include "solvers/projected_harmonic.hpp"
 #include "solvers/spectrum_count.hpp"
@@ -47,7 +47,7 @@ double OrbitSemiMajorAxis(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 }
 
 // A station's lateral translation (string frame y, z) as rows acting on its body's velocity block:
-// rows y, z of [Fᵀ, Fᵀ A (−ũ_k), Fᵀ A Φ_k], F the string frame (analyses/string_stations.hpp MapToNode).
+// rows y, z of [Fᵀ, Fᵀ A (−ũ_k), Fᵀ A Φ_k], F the string frame (model/node_kinematics.hpp ComputeStringFrameNodeRates).
 struct StationMap {
   int v_offset = 0;
   // Two fixed rows: the products below stay on the stack (a dynamic 2-row result was a heap
@@ -71,15 +71,6 @@ struct ContactMap {
   double stiffness = 0.0;
 };
 
-// The node's global translation Jacobian L_k = [I, −A ũ_k, A Φ_k] (model/node_force.hpp).
-MatX NodeTranslationJacobian(const model::Body& body, const model::BodyPose& pose, int node) {
-  MatX jacobian(3, body.velocity_count());
-  jacobian.leftCols<3>() = Mat3::Identity();
-  jacobian.middleCols<3>(3) = -pose.A * so3::Skew(pose.NodeOffset(body, node));
-  jacobian.rightCols(body.flexible_count) = pose.A * body.reduced->node_translation_modes[node];
-  return jacobian;
-}
-
 // Open-contact clearances and closed contacts at q, by (body, node).
 struct WallState {
   std::map<std::pair<int, int>, double> clearance;  // open contacts: R_h − R_c − ρ, m
@@ -98,7 +89,8 @@ WallState ReadWall(const model::BuiltModel& built, const std::vector<model::Body
     if (result.in_contact) {
       ContactMap map;
       map.v_offset = body->v_offset;
-      map.radial = (result.normal.transpose() * NodeTranslationJacobian(*body, poses[b], contact->node())).transpose();
+      const MatX jacobian = model::NodeTranslationJacobian(*body, poses[b], contact->node());
+      map.radial = (result.normal.transpose() * jacobian).transpose();
       map.stiffness = contact->parameters().normal_stiffness;
       wall.closed.push_back(std::move(map));
     } else {
@@ -117,7 +109,8 @@ std::vector<StationMap> MapStations(const model::SystemModel& model, const std::
     StationMap map;
     map.v_offset = body.v_offset;
     map.s = station.s;
-    map.lateral = (frame.transpose() * NodeTranslationJacobian(body, poses[station.body], station.node)).bottomRows<2>();
+    const MatX jacobian = model::NodeTranslationJacobian(body, poses[station.body], station.node);
+    map.lateral = (frame.transpose() * jacobian).bottomRows<2>();
     const auto found = wall.clearance.find({station.body, station.node});
     if (found != wall.clearance.end()) map.clearance = found->second;
     maps.push_back(std::move(map));

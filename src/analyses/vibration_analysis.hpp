@@ -1,6 +1,6 @@
 // Forced lateral/axial/torsional response against rotary speed (method.md §9.2): the critical-speed
 // map. The string is linearized about a state q (the static equilibrium: RunStaticInWell in a
-// well), modes_analysis.hpp Linearize: K = ∂R/∂q (the geometric stiffening of the axial load and
+// well), analyses/linearization.hpp Linearize: K = ∂R/∂q (the geometric stiffening of the axial load and
 // the springs of the wall contacts closed at q; open contacts add nothing, so free parts may pass
 // the wall: the paper's rule), M(q) with the fluid (model/lateral_fluid.hpp), D = ∂R/∂v plus the
 // fluid damping. For every rotary speed Ω of the sweep and every excitation at its frequency ω

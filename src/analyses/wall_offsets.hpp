@@ -22,7 +22,7 @@
 namespace drillflex::analyses {
 
 // Fills in md, hole_offset, offset_high_side_angle, clearance, hole_diameter, has_wall and
-// wall_contact of every node (StaticNodeResults(built.system, q) order: one per string station,
+// wall_contact of every node (StaticNodeResults(built, q) order: one per string station,
 // from the bit upward) from the wall contact at that node, evaluated at q at rest.
 // Nodes without a contact element of their own (the bit's: it cuts its hole and carries none) in a
 // model with a well get the same geometry for a contact circle of their body's contact diameter
@@ -30,7 +30,7 @@ namespace drillflex::analyses {
 // (has_wall = false). Throws LogicError when `nodes` is not one per station.
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes);
 // The same for results at the listed stations only (nodes[i] at station station_indices[i], as
-// StaticNodeResults(model, q, load_factor, station_indices) gives them).
+// StaticNodeResults(built, q, load_factor, station_indices) gives them).
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes,
                     std::span<const int> station_indices);
 

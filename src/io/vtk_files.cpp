@@ -375,7 +375,7 @@ void AddTransientVtk(const Case& c, const model::BuiltModel& built, const analys
   for (std::size_t i = 0; i < result.frame_q.size(); ++i) {
     const VecX& q = result.frame_q[i];
     if (q.size() != built.system.num_positions()) throw LogicError("AddTransientVtk: a frame is not the model's state");
-    std::vector<analyses::StaticNodeResult> nodes = analyses::StaticNodeResults(built.system, q, 1.0);
+    std::vector<analyses::StaticNodeResult> nodes = analyses::StaticNodeResults(built, q, 1.0);
     analyses::AddWallOffsets(built, q, nodes);
     names.push_back(fmt::format("string_{:04}.vtp", i));
     files.Add(names.back(), StringVtp(c, built, nodes));

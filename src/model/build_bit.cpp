@@ -6,6 +6,7 @@
 #include "model/bit_side_cutting.hpp"
 #include "model/build_parts.hpp"
 #include "model/imbalance_element.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::model {
 
@@ -25,7 +26,7 @@ BitElements PlaceBitElements(ModelDraft& draft) {
     const double stiffness = BitBottomStiffness(bottom, bit, input.settings);
     const double damping = 2.0 * bottom.damping_ratio * std::sqrt(stiffness * ElementInertia(bit)[kX]);
     placed.bit_bottom = draft.elements.Add<BitBottomElement>(
-        &bit, 0, bit.reference_position + frame * bit.reduced->node_positions[0], frame.col(0), bottom, stiffness, damping);
+        &bit, 0, NodeReferencePosition(bit, 0), frame.col(0), bottom, stiffness, damping);
   }
   if (input.bit_rock->side_cutting) {
     placed.bit_side = draft.elements.Add<BitSideCuttingElement>(

@@ -5,6 +5,7 @@
 
 #include "model/build_parts.hpp"
 #include "model/nodal_loads.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::model {
 namespace {
@@ -12,11 +13,9 @@ namespace {
 // The work-equivalent nodal forces and moments of a uniform global line load over every element of
 // a body (the buoyed weight, N/m).
 void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
-  const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
   for (int k = 0; k + 1 < body.node_count(); ++k) {
-    AddUniformLineLoad(node_position(k), node_position(k + 1), per_length, forces[k], moments[k], forces[k + 1],
-                       moments[k + 1]);
+    AddUniformLineLoad(NodeReferencePosition(body, k), NodeReferencePosition(body, k + 1), per_length, forces[k],
+                       moments[k], forces[k + 1], moments[k + 1]);
   }
 }
 
@@ -24,7 +23,6 @@ void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& fo
 // [from, to]). True when the load reaches the body.
 bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  auto node_position = [&](int k) { return body.reference_position + frame * body.reduced->node_positions[k]; };
   bool any = false;
   for (int k = 0; k + 1 < body.node_count(); ++k) {
     const double a = std::max(load.from, body.NodeS(k)), c = std::min(load.to, body.NodeS(k + 1));
@@ -34,7 +32,8 @@ bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& f
     const Vec3 m = frame * load.moment_per_length;
     const double h = body.NodeS(k + 1) - body.NodeS(k);
     if (c - a >= h * (1.0 - 1e-12)) {
-      AddUniformLineLoad(node_position(k), node_position(k + 1), q, forces[k], moments[k], forces[k + 1], moments[k + 1]);
+      AddUniformLineLoad(NodeReferencePosition(body, k), NodeReferencePosition(body, k + 1), q, forces[k], moments[k],
+                         forces[k + 1], moments[k + 1]);
     } else {  // a partly loaded element: the resultant shared by the lever rule
       const double share = (0.5 * (a + c) - body.NodeS(k)) / h;
       forces[k] += (1.0 - share) * (c - a) * q;
@@ -50,10 +49,15 @@ bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& f
 // Applied loads, each group its own elements (LoadParameters scales or replaces each): the buoyed
 // weight per body; the case's distributed loads per body and point loads; the transient's initial
 // loads; the WOB and the torque on bit per unit of their value.
-double PlaceLoads(ModelDraft& draft) {
+PlacedLoads PlaceLoads(ModelDraft& draft) {
   const ModelInput& input = draft.input;
   const std::vector<Body>& placed = draft.bodies;
   const double length = draft.length;
+  std::vector<ElementHandle<NodalLoadElement>> handles;
+  auto add = [&](const Body& body, std::vector<Vec3> forces, std::vector<Vec3> moments, LoadGroup group,
+                 double value) {
+    handles.push_back(draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), group, value));
+  };
   double force_scale = 0.0;
   for (const Body& body : placed) {
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
@@ -62,7 +66,7 @@ double PlaceLoads(ModelDraft& draft) {
       AddLineLoad(body, weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]), forces, moments);
     }
     for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
-    draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kWeight);
+    add(body, std::move(forces), std::move(moments), LoadGroup::kWeight, 1.0);
   }
   for (const auto& [loads, group] : {std::pair{&input.loads, LoadGroup::kCaseLoads},
                                      std::pair{&input.initial_loads, LoadGroup::kInitialLoads}}) {
@@ -76,7 +80,7 @@ double PlaceLoads(ModelDraft& draft) {
       if (group == LoadGroup::kCaseLoads) {
         for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
       }
-      draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), group);
+      add(body, std::move(forces), std::move(moments), group, 1.0);
     }
     for (const Load& load : *loads) {
       if (load.distributed) continue;
@@ -87,7 +91,7 @@ double PlaceLoads(ModelDraft& draft) {
       forces[node] = frame * load.force;
       moments[node] = frame * load.moment;
       if (group == LoadGroup::kCaseLoads) force_scale += load.force.norm() + load.moment.norm() / std::max(length, 1e-3);
-      draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), group);
+      add(body, std::move(forces), std::move(moments), group, 1.0);
     }
   }
   // The formation pushes the bit up-hole with the WOB and resists its rotation with the torque on
@@ -104,16 +108,16 @@ double PlaceLoads(ModelDraft& draft) {
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
     forces[node] = axis;
     force_scale += std::abs(wob);
-    draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kWeightOnBit, wob);
+    add(body, std::move(forces), std::move(moments), LoadGroup::kWeightOnBit, wob);
   }
   if (!rock_tob) {
     std::vector<Vec3> forces(body.node_count(), Vec3::Zero()), moments(body.node_count(), Vec3::Zero());
     moments[node] = axis;
     force_scale += std::abs(tob) / std::max(length, 1e-3);
-    draft.elements.Add<NodalLoadElement>(&body, std::move(forces), std::move(moments), LoadGroup::kTorqueOnBit, tob);
+    add(body, std::move(forces), std::move(moments), LoadGroup::kTorqueOnBit, tob);
   }
   if (force_scale == 0.0) force_scale = placed.front().bending_rigidity / (length * length);
-  return force_scale;
+  return {std::move(handles), force_scale};
 }
 
 }  // namespace drillflex::model

@@ -22,6 +22,7 @@ class BitSideCuttingElement;
 class BlockElement;
 class CouplingElement;
 class ImbalanceElement;
+class NodalLoadElement;
 class StringAboveElement;
 class SupportElement;
 class TopDriveElement;
@@ -64,9 +65,13 @@ struct TopDrives {
 TopDrives PlaceDrives(ModelDraft& draft);
 // build_wall_contacts.cpp: a wall contact at every node (a joint once), from the bit upward.
 std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& draft);
-// build_loads.cpp: the applied loads, each group its own elements; returns the force scale, N (a
-// typical applied force: the Newton tolerance's).
-double PlaceLoads(ModelDraft& draft);
+// build_loads.cpp: the applied loads, each group its own elements, and the force scale, N (a typical
+// applied force: the Newton tolerance's).
+struct PlacedLoads {
+  std::vector<ElementHandle<NodalLoadElement>> loads;
+  double force_scale = 0.0;
+};
+PlacedLoads PlaceLoads(ModelDraft& draft);
 // build_bit.cpp: the bit's elements (the bit-rock law, the bottom contact, side cutting) and the
 // imbalances.
 struct BitElements {

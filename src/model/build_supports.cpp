@@ -1,5 +1,6 @@
 // The builder's supports (model/build_parts.hpp).
 #include "model/build_parts.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/spring_elements.hpp"
 
 namespace drillflex::model {
@@ -27,7 +28,7 @@ std::vector<ElementHandle<SupportElement>> PlaceSupports(ModelDraft& draft) {
     const auto [b, node] = FindNodeAt(placed, support.at);
     const Body& body = placed[b];
     Mat3 frame = body.reference_orientation.toRotationMatrix();
-    const Vec3 position = body.reference_position + frame * body.reduced->node_positions[node];
+    const Vec3 position = NodeReferencePosition(body, node);
     if (guided_top && std::pair{b, node} == top) {
       // Along the hole's axis at the top, not the top body's chord (which a curved hole turns by half
       // the body's arc): the support's rest frame is the frame turned onto the hole's up-hole tangent.

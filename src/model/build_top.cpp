@@ -2,6 +2,7 @@
 #include "model/build_parts.hpp"
 #include "model/drive_elements.hpp"
 #include "model/hole_friction.hpp"
+#include "model/node_kinematics.hpp"
 #include "model/string_above.hpp"
 #include "well/hole.hpp"
 
@@ -17,7 +18,7 @@ std::optional<ElementHandle<StringAboveElement>> PlaceStringAbove(ModelDraft& dr
   }
   const Body& body = draft.bodies[draft.top.first];
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  const Vec3 position = body.reference_position + frame * body.reduced->node_positions[draft.top.second];
+  const Vec3 position = NodeReferencePosition(body, draft.top.second);
   const Component& component = input.string.components.back();
   const double top_md = input.bit_md - draft.length;
   StringAboveParameters above;
@@ -53,7 +54,7 @@ TopDrives PlaceDrives(ModelDraft& draft) {
   const Body& body = draft.bodies[draft.top.first];
   const int node = draft.top.second;
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
-  const Vec3 position = body.reference_position + frame * body.reduced->node_positions[node];
+  const Vec3 position = NodeReferencePosition(body, node);
   // As stiff as the support it replaces, so the start equilibrium holds at t = 0 (drives.hpp).
   const Vec6 stiffness = kSupportStiffnessFactor * SectionCouplingStiffness(body, input.settings.coupling_factor);
   const Vec6 damping = SpringDamping(stiffness, ElementInertia(body));

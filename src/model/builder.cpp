@@ -25,23 +25,24 @@ BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache)
   const auto string_above = PlaceStringAbove(draft);
   const TopDrives drives = PlaceDrives(draft);
   auto contacts = PlaceWallContacts(draft);
-  const double force_scale = PlaceLoads(draft);
+  PlacedLoads loads = PlaceLoads(draft);
   const BitElements bit = PlaceBitElements(draft);
   auto imbalances = PlaceImbalances(draft);
   SystemModel system(std::move(bodies), std::move(draft.elements).Release(), length);
-  system.set_force_scale(force_scale);
+  system.set_force_scale(loads.force_scale);
   return BuiltModel{.system = std::move(system),
                     .supports = std::move(supports),
                     .contacts = std::move(contacts),
                     .couplings = std::move(couplings),
                     .imbalances = std::move(imbalances),
+                    .nodal_loads = std::move(loads.loads),
                     .top_drive = drives.top_drive,
                     .block = drives.block,
                     .bit_rock = bit.bit_rock,
                     .bit_bottom = bit.bit_bottom,
                     .bit_side = bit.bit_side,
                     .string_above = string_above,
-                    .force_scale = force_scale};
+                    .force_scale = loads.force_scale};
 }
 
 }  // namespace drillflex::model

@@ -22,6 +22,7 @@ class BitSideCuttingElement;
 class BlockElement;
 class CouplingElement;
 class ImbalanceElement;
+class NodalLoadElement;
 class StringAboveElement;
 class SupportElement;
 class TopDriveElement;
@@ -34,6 +35,7 @@ struct BuiltModel {
   std::vector<ElementHandle<WallContactElement>> contacts = {};  // each wall contact, from the bit upward
   std::vector<ElementHandle<CouplingElement>> couplings = {};   // body b to body b + 1, from the bit upward
   std::vector<ElementHandle<ImbalanceElement>> imbalances = {};  // in the input's order
+  std::vector<ElementHandle<NodalLoadElement>> nodal_loads = {};  // the dead loads, in the model's order
   std::optional<ElementHandle<TopDriveElement>> top_drive = {};
   std::optional<ElementHandle<BlockElement>> block = {};
   std::optional<ElementHandle<BitRockElement>> bit_rock = {};          // the bit-rock interaction

@@ -1,6 +1,7 @@
 #include "model/fluid_inertia.hpp"
 
 #include "core/so3.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::model {
 namespace {
@@ -11,64 +12,23 @@ using Rows3 = Eigen::Matrix<double, 3, Eigen::Dynamic>;
 // Π v: the part of a body-frame vector across the body's x axis.
 Vec3 Lateral(const Vec3& v) { return Vec3(0.0, v.y(), v.z()); }
 
-// The node's kinematics at (q, v, a), body frame (fluid_inertia.hpp).
-struct NodeMotion {
-  Vec3 offset;           // u_k
-  Vec3 velocity;         // t_k
-  Vec3 rate;             // ṫ_k
-  Vec3 modal_velocity;   // w = Φ_k η̇
-};
-
-struct FrameMotion {
-  Vec3 velocity;      // p = Aᵀṙ
-  Vec3 acceleration;  // Aᵀr̈
-  Vec3 omega, omega_rate;
-};
-
-FrameMotion FrameMotionOf(const BodyPose& pose, const VecX& velocity, const VecX& acceleration) {
-  return {pose.A.transpose() * velocity.head<3>(), pose.A.transpose() * acceleration.head<3>(),
-          velocity.segment<3>(3), acceleration.segment<3>(3)};
-}
-
-NodeMotion NodeMotionOf(const Body& body, const BodyPose& pose, const FrameMotion& frame, const VecX& velocity,
-                        const VecX& acceleration, int k) {
-  const int nf = body.flexible_count;
-  const auto& phi = body.reduced->node_translation_modes[k];
-  NodeMotion node;
-  node.offset = pose.NodeOffset(body, k);
-  node.modal_velocity = phi * velocity.tail(nf);
-  node.velocity = frame.velocity + frame.omega.cross(node.offset) + node.modal_velocity;
-  // d/dt(Aᵀṙ) = Aᵀr̈ − ω × Aᵀṙ, d/dt(ω × u) = ω̇ × u + ω × Φ η̇.
-  node.rate = frame.acceleration + frame.omega_rate.cross(node.offset) + phi * acceleration.tail(nf) +
-              frame.omega.cross(node.modal_velocity) - frame.omega.cross(frame.velocity);
-  return node;
-}
-
 // F_k = m (Π ṫ + ω × Π t) + c Π t, body frame.
-Vec3 NodeForce(double mass, double damping, const Vec3& omega, const NodeMotion& node) {
+Vec3 NodeForce(double mass, double damping, const Vec3& omega, const BodyFrameNodeMotion& node) {
   const Vec3 lateral = Lateral(node.velocity);
   return mass * (Lateral(node.rate) + omega.cross(lateral)) + damping * lateral;
 }
 
 }  // namespace
 
-void NodeVelocityJacobian(const Body& body, const BodyPose& pose, int k, const Vec3& offset,
-                          Eigen::Matrix<double, 3, Eigen::Dynamic>& jacobian) {
-  jacobian.resize(3, body.velocity_count());
-  jacobian.leftCols<3>() = pose.A.transpose();
-  jacobian.middleCols<3>(3) = -Skew(offset);  // ω × u = −ũ ω
-  jacobian.rightCols(body.flexible_count) = body.reduced->node_translation_modes[k];
-}
-
 VecX BodyFluidForces(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration) {
   const int nf = body.flexible_count;
   VecX forces = VecX::Zero(body.velocity_count());
-  const FrameMotion frame = FrameMotionOf(pose, velocity, acceleration);
+  const FrameMotion frame = ComputeFrameMotion(pose, velocity, acceleration);
   Vec3 translational_sum = Vec3::Zero();
   for (int k = 0; k < body.node_count(); ++k) {
     const double mass = body.fluid_lateral_mass[k], damping = body.fluid_lateral_damping[k];
     if (mass == 0.0 && damping == 0.0) continue;
-    const NodeMotion node = NodeMotionOf(body, pose, frame, velocity, acceleration, k);
+    const BodyFrameNodeMotion node = ComputeBodyFrameNodeMotion(body, pose, frame, velocity, acceleration, k);
     const Vec3 force = NodeForce(mass, damping, frame.omega, node);
     // J_kᵀ F = [A F; u × F; Φᵀ F], plus the moment m t × Π t of the turning lateral plane.
     translational_sum += force;
@@ -88,7 +48,7 @@ VecX BodyFluidForces(const Body& body, const BodyPose& pose, const VecX& velocit
 void AddFluidMatrices(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration,
                       double cK, double cD, double cM, MatX& matrix) {
   const int nf = body.flexible_count;
-  const FrameMotion frame = FrameMotionOf(pose, velocity, acceleration);
+  const FrameMotion frame = ComputeFrameMotion(pose, velocity, acceleration);
   const Mat3 projection = Vec3(0.0, 1.0, 1.0).asDiagonal();
   const Mat3 omega_skew = Skew(frame.omega);
   const Mat3 velocity_skew = Skew(frame.velocity);
@@ -97,7 +57,7 @@ void AddFluidMatrices(const Body& body, const BodyPose& pose, const VecX& veloci
     const double mass = body.fluid_lateral_mass[k], damping = body.fluid_lateral_damping[k];
     if (mass == 0.0 && damping == 0.0) continue;
     const auto& phi = body.reduced->node_translation_modes[k];
-    const NodeMotion node = NodeMotionOf(body, pose, frame, velocity, acceleration, k);
+    const BodyFrameNodeMotion node = ComputeBodyFrameNodeMotion(body, pose, frame, velocity, acceleration, k);
     const Vec3 lateral = Lateral(node.velocity);
     NodeVelocityJacobian(body, pose, k, node.offset, jacobian);
     // cK ∂t/∂q + cD ∂t/∂v and cK ∂ṫ/∂q + cD ∂ṫ/∂v + cM ∂ṫ/∂a.
@@ -146,13 +106,10 @@ MatX BodyFluidMassMatrix(const Body& body, const BodyPose& pose) {
 namespace {
 // Σ weight_k |Π t_k|² over the nodes.
 double SumOfLateralSquares(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& weights) {
-  const FrameMotion frame = FrameMotionOf(pose, velocity, VecX::Zero(velocity.size()));
   double sum = 0.0;
   for (int k = 0; k < body.node_count(); ++k) {
     if (weights[k] == 0.0) continue;
-    const Vec3 offset = pose.NodeOffset(body, k);
-    const Vec3 t = frame.velocity + frame.omega.cross(offset) +
-                   body.reduced->node_translation_modes[k] * velocity.tail(body.flexible_count);
+    const Vec3 t = ComputeBodyFrameNodeRates(body, pose, k, velocity).translation;
     sum += weights[k] * Lateral(t).squaredNorm();
   }
   return sum;

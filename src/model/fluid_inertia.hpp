@@ -5,7 +5,7 @@
 //
 // The model: a point mass m_k and a dashpot c_k at each node k (Body::fluid_lateral_mass, _damping:
 // the tributary lumps of lateral_fluid.hpp), acting across the body axis only. With the node's
-// velocity in the body frame (method.md §4)
+// velocity in the body frame (method.md §4, model/node_kinematics.hpp)
 //   t_k = Aᵀṙ + ω × u_k + Φ_k η̇ = J_k v,   J_k = [Aᵀ, −ũ_k, Φ_k],   u_k = ρ_k + Φ_k η,
 // and Π = diag(0, 1, 1) the projection across the body's x axis, the fluid's kinetic energy is
 //   T_f = ½ Σ m_k |Π t_k|²
@@ -27,11 +27,6 @@
 #include "model/body.hpp"
 
 namespace drillflex::model {
-
-// J_k = [Aᵀ, −ũ_k, Φ_k] (3 × (6 + n_f)): node k's body-frame velocity t_k = J_k v, u_k its `offset`.
-// Shared with the linear analyses' J_lat (model/lateral_fluid.hpp: its last two rows).
-void NodeVelocityJacobian(const Body& body, const BodyPose& pose, int k, const Vec3& offset,
-                          Eigen::Matrix<double, 3, Eigen::Dynamic>& jacobian);
 
 // Whether the body carries fluid lumps.
 inline bool HasLateralFluid(const Body& body) { return body.fluid_lateral_mass.size() > 0; }

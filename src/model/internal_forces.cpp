@@ -112,17 +112,17 @@ std::vector<SectionForces> ForcesOfBody(const Body& body, const ElementMatrices&
 }
 
 // Dead axial nodal loads of every body (body frame x, N) from its NodalLoadElements.
-std::vector<std::vector<double>> AxialNodalLoads(const SystemModel& model, const std::vector<BodyPose>& poses,
+std::vector<std::vector<double>> AxialNodalLoads(const BuiltModel& built, const std::vector<BodyPose>& poses,
                                                  const LoadParameters& load) {
+  const SystemModel& model = built.system;
   std::vector<std::vector<double>> loads(model.bodies().size());
   for (std::size_t b = 0; b < loads.size(); ++b) loads[b].assign(model.bodies()[b].node_count(), 0.0);
-  for (const auto& element : model.elements()) {
-    const auto* nodal = dynamic_cast<const NodalLoadElement*>(element.get());
-    if (nodal == nullptr) continue;
-    const int b = model.IndexOf(nodal->bodies()[0]);
+  for (const auto handle : built.nodal_loads) {
+    const NodalLoadElement& nodal = built.Get(handle);
+    const int b = model.IndexOf(nodal.bodies()[0]);
     const Vec3 axis = poses[b].A.col(0);
-    const auto& forces = nodal->forces();
-    const double scale = nodal->Scale(load);
+    const auto& forces = nodal.forces();
+    const double scale = nodal.Scale(load);
     for (std::size_t k = 0; k < forces.size(); ++k) loads[b][k] += scale * axis.dot(forces[k]);
   }
   return loads;
@@ -148,17 +148,18 @@ std::vector<SectionForces> BodyInternalForces(const Body& body, const VecX& eta,
   return ForcesOfBody(body, MakeElementMatrices(body.reduced->spec), eta, axial_loads);
 }
 
-std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
+std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& built, const VecX& q,
                                                               const LoadParameters& load) {
-  std::vector<int> all(model.bodies().size());
+  std::vector<int> all(built.system.bodies().size());
   for (std::size_t b = 0; b < all.size(); ++b) all[b] = static_cast<int>(b);
-  return ComputeInternalForces(model, q, load, all);
+  return ComputeInternalForces(built, q, load, all);
 }
 
-std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
+std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& built, const VecX& q,
                                                               const LoadParameters& load, std::span<const int> bodies) {
+  const SystemModel& model = built.system;
   const std::vector<BodyPose> poses = model.Poses(q);
-  const auto axial_loads = AxialNodalLoads(model, poses, load);
+  const auto axial_loads = AxialNodalLoads(built, poses, load);
   ElementMatrixCache cache;
   std::vector<std::vector<SectionForces>> result(model.bodies().size());
   for (const int b : bodies) {
@@ -168,25 +169,26 @@ std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel&
   return result;
 }
 
-std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v) {
-  std::vector<int> all(model.bodies().size() > 0 ? model.bodies().size() - 1 : 0);
+std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v) {
+  const std::size_t bodies = built.system.bodies().size();
+  std::vector<int> all(bodies > 0 ? bodies - 1 : 0);
   for (std::size_t j = 0; j < all.size(); ++j) all[j] = static_cast<int>(j);
-  return JointInternalForces(model, q, v, all);
+  return JointInternalForces(built, q, v, all);
 }
 
-std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v,
+std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v,
                                                std::span<const int> joints) {
+  const SystemModel& model = built.system;
   const std::size_t bodies = model.bodies().size();
   std::vector<SectionForces> result(bodies > 0 ? bodies - 1 : 0);
   std::vector<bool> wanted(result.size(), false), found(result.size(), false);
   for (const int j : joints) wanted.at(static_cast<std::size_t>(j)) = true;
   const std::vector<BodyPose> poses = model.Poses(q);
-  for (const auto& element : model.elements()) {
-    const auto* coupling = dynamic_cast<const CouplingElement*>(element.get());
-    if (coupling == nullptr) continue;
-    const int lower = model.IndexOf(coupling->bodies()[0]);
-    if (model.IndexOf(coupling->bodies()[1]) != lower + 1 || !wanted[lower]) continue;
-    const Vec6 force = coupling->Force(model.StateOf(*coupling, poses, v, 0.0, 1.0));
+  for (const auto handle : built.couplings) {
+    const CouplingElement& coupling = built.Get(handle);
+    const int lower = model.IndexOf(coupling.bodies()[0]);
+    if (model.IndexOf(coupling.bodies()[1]) != lower + 1 || !wanted[lower]) continue;
+    const Vec6 force = coupling.Force(model.StateOf(coupling, poses, v, 0.0, 1.0));
     result[lower].force = force.head<3>();
     result[lower].moment = force.tail<3>();
     found[lower] = true;

@@ -29,7 +29,7 @@
 
 #include "core/types.hpp"
 #include "model/load_parameters.hpp"
-#include "model/system_model.hpp"
+#include "model/builder.hpp"
 
 namespace drillflex::model {
 
@@ -57,11 +57,11 @@ struct SectionForces {
 // N_e = N̄ + c_e − mean(c), c_e = −Σ_{j=1..e} a_j: the static FE solution when N̄ is exact (it is
 // for a uniform bar: linear elements are nodally exact). Axial loads of other elements (contact
 // friction, fluid) and axial inertia inside a body are not resolved this way.
-std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
+std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& built, const VecX& q,
                                                               const LoadParameters& load = 1.0);
 // The same for the listed bodies only (result[b] empty for the others): what a transient run reads
 // at its output times (the bit, the top, the probes) without the whole string.
-std::vector<std::vector<SectionForces>> ComputeInternalForces(const SystemModel& model, const VecX& q,
+std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& built, const VecX& q,
                                                               const LoadParameters& load, std::span<const int> bodies);
 
 // The internal forces of one body from its modal coordinates η (body frame); `axial_loads` are
@@ -77,9 +77,9 @@ Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta,
 // The internal force at each joint (size bodies − 1; joint j between body j and body j + 1):
 // the coupling force f = K e + C ė (CouplingElement::Force) in the lower body's frame, which is
 // the force the upper body exerts on the lower one. Throws LogicError if a joint has no coupling.
-std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v);
+std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v);
 // The same for the listed joints only (the others left zero).
-std::vector<SectionForces> JointInternalForces(const SystemModel& model, const VecX& q, const VecX& v,
+std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v,
                                                std::span<const int> joints);
 
 }  // namespace drillflex::model

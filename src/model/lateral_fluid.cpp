@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 #include "fe/annulus_fluid.hpp"
-#include "model/fluid_inertia.hpp"
+#include "model/node_kinematics.hpp"
 #include "well/hole.hpp"
 
 namespace drillflex::model {

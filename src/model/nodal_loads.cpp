@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/so3.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::model {
 
@@ -182,10 +183,9 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
 double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {
   const Body& body = *bodies()[0];
   const BodyPose& pose = *state.poses[0];
-  const Mat3 reference = body.reference_orientation.toRotationMatrix();
   double energy = 0.0;
   for (int k = 0; k < body.node_count(); ++k) {
-    const Vec3 rest = body.reference_position + reference * body.reduced->node_positions[k];
+    const Vec3 rest = NodeReferencePosition(body, k);
     energy -= Scale(state.parameters) * forces_[k].dot(pose.NodePosition(body, k) - rest);
   }
   return energy + GradientEnergy(pose, Scale(state.parameters));

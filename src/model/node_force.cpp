@@ -102,22 +102,6 @@ void AddModalRows(const Factor& modes, const Mat3& b, double scale, Factor& out)
 
 }  // namespace
 
-NodeMotion ComputeNodeMotion(const Body& body, const BodyPose& pose, int node,
-                             const Eigen::Ref<const VecX>& body_velocity) {
-  const auto& phi = body.reduced->node_translation_modes[node];
-  const auto& psi = body.reduced->node_rotation_modes[node];
-  const auto eta_rate = body_velocity.segment(6, body.flexible_count);
-  NodeMotion motion;
-  motion.offset = body.reduced->node_positions[node] + phi * pose.eta;
-  motion.position = pose.r + pose.A * motion.offset;
-  motion.body_rate = body_velocity.segment<3>(3);
-  motion.relative_velocity = motion.body_rate.cross(motion.offset) + phi * eta_rate;
-  motion.node_rate = motion.body_rate + psi * eta_rate;
-  motion.velocity = body_velocity.head<3>() + pose.A * motion.relative_velocity;
-  motion.angular_velocity = pose.A * motion.node_rate;
-  return motion;
-}
-
 void AddNodeForce(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion, const Vec3& force,
                   const Vec3& moment, const NodeForceJacobian* jacobian, bool with_matrices,
                   ElementContribution& out, int offset) {

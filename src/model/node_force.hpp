@@ -2,7 +2,7 @@
 // generalized force with its exact derivatives, for forces that themselves depend on the node's
 // position, velocity and angular velocity (wall contact, fluid forces, ...).
 //
-// Node kinematics (method.md §4), body velocities v_b = (ṙ global, ω body frame, η̇):
+// Node kinematics (model/node_kinematics.hpp, method.md §4), body velocities v_b = (ṙ global, ω body frame, η̇):
 //   r_k = r + A u_k,  u_k = ρ_k + Φ_k η                     (node position, global)
 //   ṙ_k = ṙ + A (ω × u_k + Φ_k η̇)      = L_k v_b,  L_k = [I, −A ũ_k, A Φ_k]
 //   ω_k = A (ω + Ψ_k η̇)                = G_k v_b,  G_k = [0, A, A Ψ_k]   (global angular velocity,
@@ -24,23 +24,9 @@
 #pragma once
 
 #include "model/force_element.hpp"
+#include "model/node_kinematics.hpp"
 
 namespace drillflex::model {
-
-// The motion of one node of a body at a state.
-struct NodeMotion {
-  Vec3 offset = Vec3::Zero();             // u_k = ρ_k + Φ_k η (body frame), m
-  Vec3 position = Vec3::Zero();           // r_k (global), m
-  Vec3 velocity = Vec3::Zero();           // ṙ_k (global), m/s
-  Vec3 angular_velocity = Vec3::Zero();   // ω_k = A (ω + Ψ_k η̇) (global), rad/s
-  Vec3 body_rate = Vec3::Zero();          // ω (body frame): the frame's own rate
-  Vec3 relative_velocity = Vec3::Zero();  // ω × u_k + Φ_k η̇ (body frame)
-  Vec3 node_rate = Vec3::Zero();          // ω + Ψ_k η̇ (body frame)
-};
-
-// The motion of `node` from the body's pose and its velocity block (ṙ, ω, η̇) (size 6 + n_f).
-NodeMotion ComputeNodeMotion(const Body& body, const BodyPose& pose, int node,
-                             const Eigen::Ref<const VecX>& body_velocity);
 
 // Derivatives of the global force and moment on the node with respect to the node's global
 // position r_k, velocity ṙ_k and angular velocity ω_k (3 × 3 each).

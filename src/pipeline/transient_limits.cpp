@@ -35,7 +35,7 @@ void AddTransientLimits(const io::Case& c, const model::BuiltModel& moving, cons
   std::array<double, kLimits.size()> when{};
   for (std::size_t f = 0; f < result.frame_q.size(); ++f) {
     const analyses::StringLimits limits = analyses::ComputeStringLimits(
-        c.input, analyses::StaticNodeResults(moving.system, result.frame_q[f]), c.limits.design_factor);
+        c.input, analyses::StaticNodeResults(moving, result.frame_q[f]), c.limits.design_factor);
     if (stations.empty()) {
       stations = limits.nodes;
       most.assign(stations.size(), {0.0, 0.0, 0.0, 0.0});

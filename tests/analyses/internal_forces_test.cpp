@@ -104,8 +104,8 @@ TEST(InternalForces, BodyEndForcesAgreeWithTheCouplingForces) {
       {testing::PointLoad(kRodLength, Vec3(2e4, 100, -60), Vec3(300, 40, -20))}, cache);
   const model::SystemModel& system = solved.built.system;
   const VecX& q = solved.result.q;
-  const auto forces = model::ComputeInternalForces(system, q);
-  const auto joints = model::JointInternalForces(system, q, VecX::Zero(system.num_velocities()));
+  const auto forces = model::ComputeInternalForces(solved.built, q);
+  const auto joints = model::JointInternalForces(solved.built, q, VecX::Zero(system.num_velocities()));
   ASSERT_EQ(joints.size(), 3u);
   const auto poses = system.Poses(q);
   const double ei = 2.1e11 * testing::RodSecondMoment();
@@ -159,8 +159,8 @@ TEST(InternalForces, GeometricTermCarriesTheCompressionIntoTheShear) {
 
   const model::SystemModel& system = solved.built.system;
   const VecX& q = solved.result.q;
-  const auto forces = model::ComputeInternalForces(system, q);
-  const auto joints = model::JointInternalForces(system, q, VecX::Zero(system.num_velocities()));
+  const auto forces = model::ComputeInternalForces(solved.built, q);
+  const auto joints = model::JointInternalForces(solved.built, q, VecX::Zero(system.num_velocities()));
   const auto poses = system.Poses(q);
   const fe::Mat12 stiffness =
       fe::ElementStiffness(fe::BodyElementProperties(system.bodies()[0].reduced->spec), fe::BeamTheory::kEulerBernoulli);

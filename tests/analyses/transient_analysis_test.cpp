@@ -130,7 +130,7 @@ TEST(TransientAnalysis, StateFramesKeepEveryKthSampleFromTheStartAndTheEndWithou
     const TransientSample& sample = framed.samples[kept[i]];
     EXPECT_EQ(framed.frame_times[i], sample.time) << "frame " << i;
     // The frame's tip is where the sample's probe read it.
-    const StaticNodeResult tip = StaticNodeResults(built.system, framed.frame_q[i]).back();
+    const StaticNodeResult tip = StaticNodeResults(built, framed.frame_q[i]).back();
     EXPECT_DOUBLE_EQ(tip.displacement.y(), sample.probes[0].lateral_y) << "frame " << i;
   }
   EXPECT_EQ(framed.frame_times.front(), 0.0);

@@ -236,9 +236,9 @@ TEST(WallOffsets, ResultsAtListedStationsAreTheWholeStringsThere) {
   ASSERT_GE(joint, 0);
   const int top = static_cast<int>(stations.size()) - 1;
   const std::vector<int> listed = {top, 0, joint, top / 2, 0};
-  std::vector<StaticNodeResult> all = StaticNodeResults(s.built.system, s.result.q, 1.0);
+  std::vector<StaticNodeResult> all = StaticNodeResults(s.built, s.result.q, 1.0);
   AddWallOffsets(s.built, s.result.q, all);
-  std::vector<StaticNodeResult> some = StaticNodeResults(s.built.system, s.result.q, 1.0, listed);
+  std::vector<StaticNodeResult> some = StaticNodeResults(s.built, s.result.q, 1.0, listed);
   AddWallOffsets(s.built, s.result.q, some, listed);
   ASSERT_EQ(some.size(), listed.size());
   for (std::size_t i = 0; i < listed.size(); ++i) {

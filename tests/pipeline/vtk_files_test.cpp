@@ -359,7 +359,7 @@ TEST(VtkFiles, TransientFramesAreACollectionOfStringFilesAtTheirTimes) {
               std::adjacent_find(times.begin(), times.end()) == times.end());
 
   // Each frame: the string.vtp form, one point per station on one polyline.
-  const std::vector<analyses::StaticNodeResult> at_end = analyses::StaticNodeResults(moving.system, result.final_q);
+  const std::vector<analyses::StaticNodeResult> at_end = analyses::StaticNodeResults(moving, result.final_q);
   const std::size_t n = at_end.size();
   ASSERT_GT(n, 40u);
   std::vector<std::string> frames;
