@@ -37,7 +37,8 @@ void AddZones(const std::vector<NodeLimits>& nodes, BucklingState state, std::ve
   if (open) zones.push_back(zone);
 }
 
-// The fatigue screen of a rotating station (ComputeStringLimits): node's yield set, result its static's.
+// The fatigue screen of a rotating station (LoadStationLimits): node's yield and (in a well) the hole's
+// curvature set, result its section forces.
 void ScreenFatigue(const model::ModelInput& input, const model::Component& component, const StaticNodeResult& result,
                    NodeLimits& node) {
   const fe::HollowSection body{component.outer_diameter, component.inner_diameter};
@@ -48,15 +49,12 @@ void ScreenFatigue(const model::ModelInput& input, const model::Component& compo
   const bool jointed = component.type == model::ComponentType::Pipe || component.type == model::ComponentType::Hwdp;
   const double half_spacing = 0.5 * component.joint_spacing.value_or(component.length);
   node.allowable_bending_stress = model::AllowableBendingStress(tension / body.area(), node.yield);
-  if (input.trajectory) {
-    node.hole_curvature = input.trajectory->Curvature(node.md).norm();
-    if (jointed) {
-      node.dogleg_bending_stress = model::DoglegBendingStress(node.hole_curvature, modulus, body.outer_diameter,
-                                                              tension, stiffness, half_spacing);
-      node.fatigue_bending_stress = std::max(node.fatigue_bending_stress, node.dogleg_bending_stress);
-      node.max_dogleg = model::MaxPermissibleCurvature(node.allowable_bending_stress, modulus, body.outer_diameter,
-                                                       tension, stiffness, half_spacing);
-    }
+  if (std::isfinite(node.hole_curvature) && jointed) {
+    node.dogleg_bending_stress = model::DoglegBendingStress(node.hole_curvature, modulus, body.outer_diameter,
+                                                            tension, stiffness, half_spacing);
+    node.fatigue_bending_stress = std::max(node.fatigue_bending_stress, node.dogleg_bending_stress);
+    node.max_dogleg = model::MaxPermissibleCurvature(node.allowable_bending_stress, modulus, body.outer_diameter,
+                                                     tension, stiffness, half_spacing);
   }
   // The tension alone past the endurance line (beyond yield already): a stress of 1 Pa allowed, the
   // utilisation finite and huge.
@@ -91,6 +89,49 @@ BucklingLoads BucklingLoadsAt(const model::ModelInput& input, double s, double m
           std::max(model::HelicalBucklingLoad(inclined), model::VerticalHelicalBucklingLoad(stiffness, weight))};
 }
 
+NodeLimits StationRatings(const model::ModelInput& input, double s, double md, double design_factor) {
+  NodeLimits node;
+  node.s = s;
+  node.md = md;
+  const model::Component& component = model::ComponentAt(input.string, s);
+  node.component = static_cast<int>(&component - input.string.components.data());
+  if (component.type != model::ComponentType::Bit) {
+    if (component.yield_strength) {
+      node.yield = *component.yield_strength;
+    } else if (IsSteel(component.material)) {
+      node.yield = model::FindSteelGrade(model::kDefaultGrade)->yield;
+    }
+    node.allowable_stress = node.yield / design_factor;
+    const bool rotating = input.operation.rotary_speed > 0.0;
+    if (rotating && std::isfinite(node.yield) && input.trajectory) {
+      node.hole_curvature = input.trajectory->Curvature(node.md).norm();
+    }
+  }
+  if (component.makeup_torque) node.makeup_torque = *component.makeup_torque;
+  const BucklingLoads buckling = BucklingLoadsAt(input, node.s, node.md);
+  node.sinusoidal_load = buckling.sinusoidal;
+  if (std::isfinite(node.sinusoidal_load)) node.helical_load = buckling.helical;
+  return node;
+}
+
+void LoadStationLimits(const model::ModelInput& input, const StaticNodeResult& result, NodeLimits& node) {
+  const model::Component& component = input.string.components[static_cast<std::size_t>(node.component)];
+  node.von_mises_stress =
+      model::VonMisesStress(model::RatedSection(component), result.axial_force, result.torque, result.bending_moment);
+  if (component.type != model::ComponentType::Bit) {
+    node.stress_utilisation = node.von_mises_stress / node.allowable_stress;
+    if (input.operation.rotary_speed > 0.0 && std::isfinite(node.yield)) ScreenFatigue(input, component, result, node);
+  }
+  if (std::isfinite(node.makeup_torque)) node.torque_utilisation = std::abs(result.torque) / node.makeup_torque;
+  node.compression = -result.axial_force;
+  if (std::isfinite(node.sinusoidal_load) && node.helical_load > 0.0) {
+    node.buckling_utilisation = std::max(node.compression, 0.0) / node.helical_load;
+    node.buckling = node.compression >= node.helical_load      ? BucklingState::Helical
+                    : node.compression >= node.sinusoidal_load ? BucklingState::Sinusoidal
+                                                               : BucklingState::None;
+  }
+}
+
 StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,
                                  double design_factor) {
   StringLimits limits;
@@ -98,44 +139,13 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
   const auto& components = input.string.components;
   std::set<int> assumed;  // components whose yield is taken as E-75's
   bool any_torque_limit = false;
-  const double default_yield = model::FindSteelGrade(model::kDefaultGrade)->yield;
-  const bool rotating = input.operation.rotary_speed > 0.0;
   for (const StaticNodeResult& result : nodes) {
-    NodeLimits node;
-    node.s = result.s;
-    node.md = result.has_wall ? result.md : (input.trajectory ? input.bit_md - result.s : result.s);
-    const model::Component& component = model::ComponentAt(input.string, result.s);
-    node.component = static_cast<int>(&component - components.data());
-    const fe::HollowSection rated = model::RatedSection(component);
-    node.von_mises_stress = model::VonMisesStress(rated, result.axial_force, result.torque, result.bending_moment);
-    if (component.type != model::ComponentType::Bit) {
-      if (component.yield_strength) {
-        node.yield = *component.yield_strength;
-      } else if (IsSteel(component.material)) {
-        node.yield = default_yield;
-        assumed.insert(node.component);
-      }
-      node.allowable_stress = node.yield / design_factor;
-      node.stress_utilisation = node.von_mises_stress / node.allowable_stress;
-      if (rotating && std::isfinite(node.yield)) ScreenFatigue(input, component, result, node);
-    }
-    if (component.makeup_torque) {
-      any_torque_limit = true;
-      node.makeup_torque = *component.makeup_torque;
-      node.torque_utilisation = std::abs(result.torque) / node.makeup_torque;
-    }
-    node.compression = -result.axial_force;
-    const BucklingLoads buckling = BucklingLoadsAt(input, node.s, node.md);
-    node.sinusoidal_load = buckling.sinusoidal;
-    if (std::isfinite(node.sinusoidal_load)) {
-      node.helical_load = buckling.helical;
-      if (node.helical_load > 0.0) {
-        node.buckling_utilisation = std::max(node.compression, 0.0) / node.helical_load;
-        node.buckling = node.compression >= node.helical_load      ? BucklingState::Helical
-                        : node.compression >= node.sinusoidal_load ? BucklingState::Sinusoidal
-                                                                   : BucklingState::None;
-      }
-    }
+    const double md = result.has_wall ? result.md : (input.trajectory ? input.bit_md - result.s : result.s);
+    NodeLimits node = StationRatings(input, result.s, md, design_factor);
+    LoadStationLimits(input, result, node);
+    const model::Component& component = components[static_cast<std::size_t>(node.component)];
+    if (std::isfinite(node.yield) && !component.yield_strength) assumed.insert(node.component);
+    any_torque_limit = any_torque_limit || std::isfinite(node.makeup_torque);
     Consider(limits.yield, "yield", node.stress_utilisation, node);
     Consider(limits.makeup_torque, "makeup_torque", node.torque_utilisation, node);
     Consider(limits.helical_buckling, "helical_buckling", node.buckling_utilisation, node);
@@ -151,6 +161,7 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
       limits.closest = *each;
     }
   }
+  const double default_yield = model::FindSteelGrade(model::kDefaultGrade)->yield;
   for (const int index : assumed) {
     limits.notes.push_back(fmt::format("'{}': no grade or yield given, its utilisation taken against {} ({:.0f} ksi), "
                                        "the lowest grade",

@@ -80,6 +80,16 @@ struct BucklingLoads {
 };
 BucklingLoads BucklingLoadsAt(const model::ModelInput& input, double s, double md);
 
+// ComputeStringLimits (below) in two halves, for answers read many times over (a transient's samples:
+// analyses/limits_envelope.hpp). StationRatings: what of a station's limits does not depend on its load:
+// s, md, its component, yield and allowable stress, make-up torque, buckling loads and (rotating, in a
+// well) the hole's curvature; the rest as a NodeLimits{} has it. LoadStationLimits: the rest under the
+// station's section forces (`result`'s axial force, torque and bending moment), into `node` made by
+// StationRatings of the same `input` (every loaded field overwritten where it applies: start each load
+// from the ratings).
+NodeLimits StationRatings(const model::ModelInput& input, double s, double md, double design_factor);
+void LoadStationLimits(const model::ModelInput& input, const StaticNodeResult& result, NodeLimits& node);
+
 // The limits along `nodes` (a static's stations, from the bit upward) of `input`'s string: the rated
 // section and yield of the component at each station (model::ComponentAt; its grade or yield, else
 // E-75's for steel and nonmag, none for other materials; not the bit), the make-up torque where the

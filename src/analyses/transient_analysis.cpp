@@ -211,7 +211,7 @@ VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltM
 }
 
 TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, const TransientSettings& settings,
-                             const TransientProgress& progress) {
+                             const TransientProgress& progress, const TransientSampleObserver& on_sample) {
   if (!(settings.duration > 0.0) || !(settings.output_interval > 0.0)) {
     throw LogicError("RunTransient: the duration and the output interval must be positive");
   }
@@ -235,6 +235,7 @@ TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, con
   }
   integrator.Initialize(0.0, q0, VecX::Zero(model.num_velocities()));
   result.samples.push_back(Sample(built, stations, probes, 0.0, q0, integrator.state().v));
+  if (on_sample) on_sample(0.0, q0, integrator.state().v);
   // Sample times k·Δt, the last one the duration itself (a shorter last interval if need be).
   const long intervals = std::max(1L, static_cast<long>(std::ceil(settings.duration / settings.output_interval - 1e-9)));
   auto keep_frame = [&](long k, double time, const VecX& q) {
@@ -248,6 +249,7 @@ TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, con
     integrator.AdvanceTo(time);
     const auto& state = integrator.state();
     result.samples.push_back(Sample(built, stations, probes, time, state.q, state.v));
+    if (on_sample) on_sample(time, state.q, state.v);
     keep_frame(k, time, state.q);
   }
   result.final_q = integrator.state().q;

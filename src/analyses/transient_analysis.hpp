@@ -74,6 +74,9 @@ struct TransientResult {
 
 // Called after every accepted step with the time reached and the duration (s).
 using TransientProgress = std::function<void(double time, double duration)>;
+// Called at every output sample, t = 0 first, with its time (s) and the state (q, v) there: what a
+// caller reads from the whole string at each sample (the string's limits: analyses/limits_envelope.hpp).
+using TransientSampleObserver = std::function<void(double time, const VecX& q, const VecX& v)>;
 
 // The model a transient run integrates: the case's `input` with the settings' drives and bit-rock
 // law, and without a static analysis's prescribed sliding (the friction follows the motion). Same
@@ -104,10 +107,10 @@ double TransientFluidFrequency(const model::ModelInput& input, const model::Buil
 VecX TransientStartPositions(const model::ModelInput& input, const model::BuiltModel& built,
                              const TransientSettings& settings, const StaticSettings& static_settings);
 
-// Integrates `built` from (q0, v = 0) over settings.duration. Throws SolverError (with the time and
-// reason) when a step cannot be completed.
+// Integrates `built` from (q0, v = 0) over settings.duration, `on_sample` (if any) called at each
+// output sample. Throws SolverError (with the time and reason) when a step cannot be completed.
 TransientResult RunTransient(const model::BuiltModel& built, const VecX& q0, const TransientSettings& settings,
-                             const TransientProgress& progress = {});
+                             const TransientProgress& progress = {}, const TransientSampleObserver& on_sample = {});
 
 // The integrator options a TransientSettings asks for: fixed steps of time_step, or adaptive steps
 // (starting at min(output_interval, 1e-4 s)) at the relative tolerance.

@@ -1,4 +1,7 @@
 // Reads `materials:` and `string:` (the components from the bit upward).
+#include <cctype>
+#include <string_view>
+
 #include <fmt/format.h>
 
 #include "io/case_sections.hpp"
@@ -150,6 +153,13 @@ void ReadRatingKeys(const YamlView& item, model::Component& component) {
   component.makeup_torque = item.OptionalPositive("makeup_torque", Quantity::Moment);
 }
 
+// Whether a connection's name is of the regular (REG) or full-hole (FH) style ("6-5/8 REG", "4-1/2 FH").
+bool NamesRegularOrFullHole(const std::string& name) {
+  std::string upper;
+  for (const char c : name) upper.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+  return upper.find("REG") != std::string::npos || upper.find("FH") != std::string::npos;
+}
+
 // A tool joint's connection by name (pipe and HWDP): its make-up torque by API RP 7G's formula for the
 // joint's OD and pin ID (model/tool_joint_torque.hpp) where no `makeup_torque` is given.
 void ReadConnection(const YamlView& item, model::Component& component) {
@@ -159,7 +169,19 @@ void ReadConnection(const YamlView& item, model::Component& component) {
   const auto found = model::FindRotaryConnection(name);
   if (!found) {
     std::vector<std::string> names;
-    for (const model::RotaryConnection& known : model::RotaryConnections()) names.emplace_back(known.name);
+    for (const model::RotaryConnection& known : model::RotaryConnections()) {
+      std::string shown = known.name;
+      for (const model::ConnectionAlias& alias : model::RotaryConnectionAliases()) {
+        if (std::string_view(alias.numbered) == known.name) shown += fmt::format(" ({})", alias.name);
+      }
+      names.push_back(shown);
+    }
+    if (NamesRegularOrFullHole(name)) {
+      connection->Fail(fmt::format("connection '{}': the regular (REG) and full-hole (FH) connections other than 4 FH "
+                                   "(NC40) are not supported, their thread data could not be checked against a source "
+                                   "(docs/case-format.md); expected one of: {} (or give 'makeup_torque')",
+                                   name, JoinWords(names)));
+    }
     connection->Fail(fmt::format("unknown connection '{}'; expected one of: {} (or give 'makeup_torque')", name,
                                  JoinWords(names)));
   }

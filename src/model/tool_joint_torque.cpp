@@ -38,14 +38,23 @@ std::string Squeezed(std::string_view text) {
 const std::vector<RotaryConnection>& RotaryConnections() {
   // C (gauge-point pitch diameter), L_pc (pin length), Q_c (counterbore), inches (API Spec 7-2).
   static const std::vector<RotaryConnection> connections = {
-      Numbered("NC26", 2.668, 3.0, 2.9375),  Numbered("NC38", 3.808, 4.0, 4.0625),
-      Numbered("NC40", 4.072, 4.5, 4.34375), Numbered("NC46", 4.626, 4.5, 4.90625),
-      Numbered("NC50", 5.0417, 4.5, 5.3125)};
+      Numbered("NC26", 2.668, 3.0, 2.9375),  Numbered("NC31", 3.183, 3.5, 3.453125),
+      Numbered("NC38", 3.808, 4.0, 4.078125), Numbered("NC40", 4.072, 4.5, 4.34375),
+      Numbered("NC46", 4.626, 4.5, 4.90625), Numbered("NC50", 5.0417, 4.5, 5.3125)};
   return connections;
 }
 
+const std::vector<ConnectionAlias>& RotaryConnectionAliases() {
+  static const std::vector<ConnectionAlias> aliases = {{"2-3/8 IF", "NC26"}, {"2-7/8 IF", "NC31"}, {"3-1/2 IF", "NC38"},
+                                                       {"4 FH", "NC40"},     {"4 IF", "NC46"},     {"4-1/2 IF", "NC50"}};
+  return aliases;
+}
+
 std::optional<RotaryConnection> FindRotaryConnection(std::string_view name) {
-  const std::string wanted = Squeezed(name);
+  std::string wanted = Squeezed(name);
+  for (const ConnectionAlias& alias : RotaryConnectionAliases()) {
+    if (Squeezed(alias.name) == wanted) wanted = alias.numbered;
+  }
   for (const RotaryConnection& connection : RotaryConnections()) {
     if (Squeezed(connection.name) == wanted) return connection;
   }

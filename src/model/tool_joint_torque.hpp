@@ -22,10 +22,21 @@ struct RotaryConnection {
   double counterbore;       // Q_c, the box's counterbore diameter
 };
 
-// The numbered connections NC26, NC38, NC40, NC46 and NC50 (V-0.038R thread, 4 threads per inch, taper
-// 2 in/ft): docs/case-format.md lists their data and where it was taken from.
+// The numbered connections NC26, NC31, NC38, NC40, NC46 and NC50 (V-0.038R thread, 4 threads per inch,
+// taper 2 in/ft): docs/case-format.md lists their data and where it was taken from.
 const std::vector<RotaryConnection>& RotaryConnections();
-// The connection named `name` (as listed, case-insensitive, spaces and dashes ignored: "nc 50"), or none.
+
+// A numbered connection's common name: the older style cut on the same thread (API Spec 7-2's
+// interchangeability of the numbered connections): the internal-flush (IF) connections 2-3/8 IF (NC26),
+// 2-7/8 IF (NC31), 3-1/2 IF (NC38), 4 IF (NC46), 4-1/2 IF (NC50), and 4 FH (NC40).
+struct ConnectionAlias {
+  const char* name;      // "4-1/2 IF"
+  const char* numbered;  // "NC50"
+};
+const std::vector<ConnectionAlias>& RotaryConnectionAliases();
+
+// The connection named `name`, a numbered connection or its common name (case-insensitive, spaces and
+// dashes ignored: "nc 50", "4-1/2 IF", "4 1/2 if"), or none.
 std::optional<RotaryConnection> FindRotaryConnection(std::string_view name);
 
 // RP 7G's tool-joint steel: a minimum yield of 120 ksi whatever the pipe's grade; the recommended

@@ -35,7 +35,7 @@ io::ResultFiles ComposeResultFiles(const io::Case& c, const CaseResults& results
   if (results.tendency) io::AddTendencyResults(c, *results.tendency, files);
   if (results.transient) {
     io::AddTransientResults(c, *results.transient, files);
-    if (results.transient_setup) AddTransientLimits(c, results.transient_setup->moving, *results.transient, files);
+    if (results.transient_limits) AddTransientLimits(c, *results.transient_limits, files);
     if (options.report) report.AddTransient(c, input, *results.transient);
     if (options.vtk && results.transient_setup) {
       io::AddTransientVtk(c, results.transient_setup->moving, *results.transient, files);

@@ -243,7 +243,13 @@ void RunCaseTransient(const io::Case& c, const RunOptions& options, CaseResults&
   if (observer.progress) {
     progress = [&observer](double time, double duration) { observer.progress(Analysis::Transient, time, duration); };
   }
-  results.transient = analyses::RunTransient(setup.moving, setup.start, setup.settings, progress);
+  // The string's limits at every output sample, whether or not VTK frames are kept (issue 37).
+  analyses::LimitsRecorder limits(c.input, setup.moving, c.limits.design_factor);
+  const analyses::TransientSampleObserver read_limits = [&limits](double time, const VecX& q, const VecX&) {
+    limits.Read(time, q);
+  };
+  results.transient = analyses::RunTransient(setup.moving, setup.start, setup.settings, progress, read_limits);
+  results.transient_limits = limits.envelope();
   Finished(observer, Analysis::Transient, results);
 }
 

@@ -14,6 +14,7 @@
 #include "analyses/modes_analysis.hpp"
 #include "analyses/static_analysis.hpp"
 #include "analyses/tendency_analysis.hpp"
+#include "analyses/limits_envelope.hpp"
 #include "analyses/transient_analysis.hpp"
 #include "analyses/vibration_analysis.hpp"
 #include "cms/reduction_cache.hpp"
@@ -146,6 +147,8 @@ struct CaseResults {
   std::optional<analyses::BucklingResult> buckling{};
   std::optional<TransientSetup> transient_setup{};
   std::optional<analyses::TransientResult> transient{};
+  // The string's limits at every sample of the transient (analyses/limits_envelope.hpp).
+  std::optional<analyses::LimitsEnvelope> transient_limits{};
   std::optional<analyses::TendencyResult> tendency{};
   std::vector<AnalysisFailure> failures{};  // in the order the analyses run (RunOptions::keep_finished)
 };

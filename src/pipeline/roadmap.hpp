@@ -48,9 +48,10 @@ struct RoadmapLimits {
   // (analyses/string_limits.hpp's screen); the slack-off hook load itself when it is helically buckled
   // off bottom; NaN when all its weight on the bit does not reach it.
   double helical_slack_off = std::numeric_limits<double>::quiet_NaN();
-  // The soft string's buckled zones (analyses/string_limits.hpp's screen on its axial force) slacking off
-  // off bottom and drilling on bottom at the case's WOB and torque on bit, at the point's friction factor.
-  std::vector<analyses::BuckledZone> slack_off_zones, on_bottom_zones;
+  // The soft string's buckled zones (analyses/string_limits.hpp's screen on its axial force) in the point's
+  // four runs at its friction factor: pulling out (pick-up) and running in (slack-off) off bottom, rotating
+  // off bottom, and drilling on bottom at the case's WOB and torque on bit.
+  std::vector<analyses::BuckledZone> pick_up_zones, slack_off_zones, rotating_zones, on_bottom_zones;
 };
 RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSettings& settings,
                                  const RoadmapPoint& point);

@@ -79,9 +79,10 @@ RoadmapTables Tabulate(const io::Case& c, const analyses::RoadmapSettings& setti
       cells.push_back(std::isfinite(shown) ? io::CsvTable::Number(shown) : "");
       row[column.name] = std::isfinite(shown) ? nlohmann::json(shown) : nlohmann::json(nullptr);
     }
-    // The buckled zones slacking off and drilling (the soft string's), MD from-to.
+    // The buckled zones of the four runs (the soft string's), MD from-to.
     nlohmann::json zones = nlohmann::json::array();
-    for (const auto& [run, list] : {std::pair{"slack_off", &limits.slack_off_zones}, std::pair{"on_bottom", &limits.on_bottom_zones}}) {
+    for (const auto& [run, list] : {std::pair{"pick_up", &limits.pick_up_zones}, std::pair{"slack_off", &limits.slack_off_zones},
+                                    std::pair{"rotating", &limits.rotating_zones}, std::pair{"on_bottom", &limits.on_bottom_zones}}) {
       for (const analyses::BuckledZone& zone : *list) {
         zones.push_back({{"run", run},
                          {"kind", analyses::BucklingStateName(zone.state)},

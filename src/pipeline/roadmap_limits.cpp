@@ -75,8 +75,13 @@ RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSetti
   if (settings.cased_friction) operation.cased_friction = model::WallFriction{*settings.cased_friction, *settings.cased_friction};
   operation.max_element_length = model::kDefaultJointSpacing;  // as the soft roadmap's runs
   limits.slack_off_zones = SoftZones(input, operation);
-  analyses::SoftStringOperation drilling = operation;
-  drilling.motion = analyses::SoftStringMotion::Rotating;
+  analyses::SoftStringOperation pick_up = operation;
+  pick_up.motion = analyses::SoftStringMotion::PickUp;
+  limits.pick_up_zones = SoftZones(input, pick_up);
+  analyses::SoftStringOperation rotating = operation;  // off bottom: no WOB, no torque on bit
+  rotating.motion = analyses::SoftStringMotion::Rotating;
+  limits.rotating_zones = SoftZones(input, rotating);
+  analyses::SoftStringOperation drilling = rotating;
   drilling.weight_on_bit = input.operation.weight_on_bit;
   drilling.torque_on_bit = input.operation.torque_on_bit;
   limits.on_bottom_zones = SoftZones(input, drilling);

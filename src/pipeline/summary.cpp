@@ -1,6 +1,7 @@
 #include "pipeline/summary.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include <cmath>
 
@@ -402,6 +403,28 @@ void WriteTendency(std::ostream& out, const io::Case& c, const analyses::Tendenc
   }
 }
 
+void WriteTransientLimits(std::ostream& out, const io::Case& c, const analyses::LimitsEnvelope& envelope) {
+  if (envelope.times.empty()) return;
+  out << fmt::format("  limits over {} samples (design factor {:.3g}), the largest utilisation = load / limit:\n",
+                     envelope.times.size(), envelope.design_factor);
+  constexpr std::array<const char*, analyses::kEnvelopeLimits> kWords{"yield", "make-up torque", "helical buckling",
+                                                                      "fatigue"};
+  for (std::size_t k = 0; k < analyses::kEnvelopeLimits; ++k) {
+    const analyses::LimitUtilisation& limit = envelope.summary[k];
+    if (limit.limit.empty()) continue;
+    const std::string md = c.well ? fmt::format(" (MD {})", Show(c, limit.md, Quantity::Length)) : "";
+    out << fmt::format("    {} {:.3g} at {} from the bit{} ({}), t = {}{}\n", kWords[k], limit.utilisation,
+                       Show(c, limit.s, Quantity::Length), md,
+                       c.input.string.components.at(static_cast<std::size_t>(limit.component)).name,
+                       Show(c, envelope.summary_time[k], Quantity::Time, 4),
+                       limit.utilisation >= 1.0 ? "  ** BEYOND THE LIMIT **" : "");
+  }
+  const std::size_t closest = envelope.closest();
+  if (closest < analyses::kEnvelopeLimits) {
+    out << fmt::format("    closest: {} {:.3g}\n", kWords[closest], envelope.summary[closest].utilisation);
+  }
+}
+
 void WriteSummary(std::ostream& out, const io::Case& c, Analysis analysis, const CaseResults& results) {
   switch (analysis) {
     case Analysis::Static:
@@ -426,6 +449,7 @@ void WriteSummary(std::ostream& out, const io::Case& c, Analysis analysis, const
         const bool driven =
             block || settings.top_drive.has_value() || settings.bit_rock.has_value() || c.input.operation.rotary_speed != 0.0;
         WriteTransient(out, c, *results.transient, driven, block);
+        if (results.transient_limits) WriteTransientLimits(out, c, *results.transient_limits);
       }
       return;
     case Analysis::Tendency:

@@ -29,5 +29,7 @@ void WriteBuckling(std::ostream& out, const io::Case& c, const analyses::Bucklin
 // holds the top (its force is the hook load).
 void WriteTransient(std::ostream& out, const io::Case& c, const analyses::TransientResult& result, bool driven,
                     bool block);
+// The string's limits over a transient's samples: each limit's largest utilisation, where and when.
+void WriteTransientLimits(std::ostream& out, const io::Case& c, const analyses::LimitsEnvelope& envelope);
 
 }  // namespace drillflex::pipeline

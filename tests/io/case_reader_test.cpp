@@ -423,6 +423,19 @@ TEST(CaseReader, ConnectionMakeupTorqueAndWearKeys) {
   EXPECT_NEAR(*c.well->hole[0].wall, 0.395 * 0.0254, 1e-12);
 }
 
+// A connection by its common name: 4-1/2 IF is NC50 (the same thread), so the same joint's make-up torque,
+// 31 024.539 ft·lbf by hand; 2-7/8 IF is NC31.
+TEST(CaseReader, ConnectionsByTheirCommonNames) {
+  const Case c = ParseCase(
+      "units: field\nstring:\n"
+      "  - {type: pipe, od: 2.875, id: 2.151, length: 30, joint_od: 4.125, joint_id: 2.125, connection: 2-7/8 IF}\n"
+      "  - {type: pipe, od: 5, id: 4.276, length: 30, joint_od: 6.625, joint_id: 3.25, connection: 4-1/2 IF}\n",
+      "aliases.yaml");
+  EXPECT_EQ(c.input.string.components[0].connection, "NC31");
+  EXPECT_EQ(c.input.string.components[1].connection, "NC50");
+  EXPECT_NEAR(*c.input.string.components[1].makeup_torque, 31024.539 * kLbf * kFt, 0.02);
+}
+
 struct RejectedCase {
   const char* label;
   std::string text;
@@ -480,7 +493,15 @@ INSTANTIATE_TEST_SUITE_P(
                      "string[0].class", "expected 'new' or 'premium'"},
         RejectedCase{"an unknown connection",
                      "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, joint_od: 0.168, joint_id: 0.08, connection: NC51}\n", 2,
-                     "string[0].connection", "unknown connection 'NC51'; expected one of: NC26, NC38, NC40, NC46, NC50"},
+                     "string[0].connection",
+                     "unknown connection 'NC51'; expected one of: NC26 (2-3/8 IF), NC31 (2-7/8 IF), NC38 (3-1/2 IF), "
+                     "NC40 (4 FH), NC46 (4 IF), NC50 (4-1/2 IF) (or give 'makeup_torque')"},
+        RejectedCase{"a regular connection",
+                     "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, joint_od: 0.168, joint_id: 0.08, connection: 6-5/8 REG}\n", 2,
+                     "string[0].connection", "the regular (REG) and full-hole (FH) connections other than 4 FH (NC40) are not supported"},
+        RejectedCase{"a full-hole connection other than 4 FH",
+                     "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, joint_od: 0.168, joint_id: 0.08, connection: 4-1/2 FH}\n", 2,
+                     "string[0].connection", "expected one of: NC26 (2-3/8 IF), NC31 (2-7/8 IF)"},
         RejectedCase{"a connection without the joint's bore",
                      "string:\n  - {type: pipe, od: 0.127, id: 0.1, length: 9, joint_od: 0.168, connection: NC50}\n", 2,
                      "string[0].connection", "needs the tool joint's 'joint_od' and 'joint_id'"},

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "field_units.hpp"
 
 namespace drillflex::model::test {
@@ -53,6 +55,55 @@ TEST(ToolJointTorque, NamesAreFoundLoosely) {
   EXPECT_TRUE(FindRotaryConnection("nc 50"));
   EXPECT_TRUE(FindRotaryConnection("NC-38"));
   EXPECT_FALSE(FindRotaryConnection("NC51"));
+}
+
+// NC31 (2-7/8 IF: C 3.183 in, L_pc 3.5 in, Q_c 3-29/64 in) on a 4-1/8 × 2-1/8 in tool joint, 120 ksi, f 0.08.
+// By hand (Python, the formula as above): B = 0.160838 in, A_p = π/4 ((3.183 − B)² − 2.125²) = 3.626840 in²,
+// A_b = π/4 (4.125² − (3.453125 − 0.0625)²) = 4.334838 in² (the pin the weaker), R_t = (2 · 3.183 − 2.875/6)/4
+// = 1.471708 in, R_s = (4.125 + 3.453125)/4 = 1.894531 in: T_y = 11 870.714 ft·lbf, make-up 7 122.428 ft·lbf.
+TEST(ToolJointTorque, Nc31AgainstTheFormulaByHand) {
+  const auto nc31 = FindRotaryConnection("NC31");
+  ASSERT_TRUE(nc31);
+  const ConnectionStrength strength = ConnectionTorsionalStrength(*nc31, 4.125 * kInch, 2.125 * kInch);
+  EXPECT_NEAR(strength.pin_area / (kInch * kInch), 3.626840, 1e-6);
+  EXPECT_NEAR(strength.box_area / (kInch * kInch), 4.334838, 1e-6);
+  EXPECT_TRUE(strength.pin_weaker);
+  EXPECT_NEAR(strength.torsional_yield / kFootPound, 11870.714, 0.01);
+  EXPECT_NEAR(strength.makeup_torque / kFootPound, 7122.428, 0.01);
+}
+
+// The thread data against API Spec 7-2 (2017), Annex B, Table B.1 (the preferred connections in SI units,
+// as a published copy of the table gives them: 123doc.top, "Api spec 7 2 2017"): C, L_pc and Q_c in mm,
+// which the table rounds to 0.0001 (C) and 0.01 mm.
+TEST(ToolJointTorque, ThreadDataAsApiSpec72TableB1) {
+  struct Row {
+    const char* name;
+    double pitch_diameter, pin_length, counterbore;  // mm
+  };
+  for (const Row& row : {Row{"NC26", 67.7672, 76.21, 74.63}, Row{"NC31", 80.8482, 88.91, 87.71},
+                         Row{"NC38", 96.7232, 101.61, 103.58}, Row{"NC40", 103.4288, 114.31, 110.34},
+                         Row{"NC46", 117.5004, 114.31, 124.61}, Row{"NC50", 128.0592, 114.31, 134.95}}) {
+    const auto connection = FindRotaryConnection(row.name);
+    ASSERT_TRUE(connection) << row.name;
+    EXPECT_NEAR(connection->pitch_diameter * 1e3, row.pitch_diameter, 1e-4) << row.name;
+    EXPECT_NEAR(connection->pin_length * 1e3, row.pin_length, 0.02) << row.name;
+    EXPECT_NEAR(connection->counterbore * 1e3, row.counterbore, 0.02) << row.name;
+  }
+}
+
+// The internal-flush connections are the numbered ones of the same thread (API Spec 7-2's
+// interchangeability; docs/case-format.md), and 4 FH is NC40; the other REG and FH connections are not known.
+TEST(ToolJointTorque, CommonNamesAreTheNumberedConnections) {
+  for (const auto& [alias, numbered] : {std::pair{"2-3/8 IF", "NC26"}, std::pair{"2 7/8 if", "NC31"},
+                                        std::pair{"3-1/2 IF", "NC38"}, std::pair{"4 IF", "NC46"},
+                                        std::pair{"4-1/2IF", "NC50"}, std::pair{"4 FH", "NC40"}}) {
+    const auto found = FindRotaryConnection(alias);
+    ASSERT_TRUE(found) << alias;
+    EXPECT_STREQ(found->name, numbered) << alias;
+  }
+  EXPECT_FALSE(FindRotaryConnection("6-5/8 REG"));
+  EXPECT_FALSE(FindRotaryConnection("4-1/2 FH"));
+  EXPECT_FALSE(FindRotaryConnection("5-1/2 IF"));
 }
 
 }  // namespace

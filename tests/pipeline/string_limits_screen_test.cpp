@@ -165,6 +165,46 @@ TEST(StringLimitsScreen, RoadmapPointBuckledZonesByHand) {
   EXPECT_EQ(limits.on_bottom_zones[1].state, BucklingState::Helical);
   EXPECT_NEAR(limits.on_bottom_zones[1].md_from, 2000.0 - 262.55, 9.2);
   EXPECT_DOUBLE_EQ(limits.on_bottom_zones[1].md_to, 2000.0);
+  // Pulling out and rotating off bottom the string hangs in tension from the bit up: no zone.
+  EXPECT_TRUE(limits.pick_up_zones.empty());
+  EXPECT_TRUE(limits.rotating_zones.empty());
+}
+
+// The zones of all four runs of a roadmap point (pipeline::RoadmapPointLimits), by hand: the same pipe
+// 2000 m down a straight hole rising at 150° (60° above the horizontal: steep enough that even pulling
+// out leaves the string in compression), friction 0.25, drilling with 50 kN. In a straight hole the soft
+// string's wall force is w sin 150° a metre and its axial force changes by w cos 150° ± μ w sin 150° up the
+// hole (w = 270.97859 N/m): the compression grows by 200.8020 N/m pulling out (−cos + μ sin), 268.5467 N/m
+// running in (−cos − μ sin), 234.6743 N/m rotating (−cos), from 0 off bottom and from the WOB on bottom.
+// sin 150° = sin 30°: F_s and F_h are the 30° hole's. Beyond F_s (F_h) from (F − WOB)/rate above the bit
+// to the surface (Python): pick-up 839.46 (1187.17) m, slack-off 627.69 (887.69) m, rotating 718.29
+// (1015.82) m, on bottom 505.23 (802.76) m. Each zone runs from the surface to MD 2000 m less that; its
+// deep end lies at a soft-string station (every 9.144 m).
+TEST(StringLimitsScreen, RoadmapPointZonesOfEveryRunByHand) {
+  const io::Case c = PipeCase("[[0, 150, 0], [2500, 150, 0]]", 2000.0, "", 20, "{wob: 50 kN, rpm: 60}");
+  pipeline::RoadmapPoint point;
+  point.bit_md = 2000.0;
+  point.friction = 0.25;
+  const pipeline::RoadmapLimits limits = pipeline::RoadmapPointLimits(c, analyses::RoadmapSettings{}, point);
+  struct Expected {
+    const char* run;
+    const std::vector<BuckledZone>* zones;
+    double sinusoidal, helical;  // m above the bit where the compression reaches F_s, F_h
+  };
+  for (const Expected& run : {Expected{"pick-up", &limits.pick_up_zones, 839.46, 1187.17},
+                              Expected{"slack-off", &limits.slack_off_zones, 627.69, 887.69},
+                              Expected{"rotating", &limits.rotating_zones, 718.29, 1015.82},
+                              Expected{"on bottom", &limits.on_bottom_zones, 505.23, 802.76}}) {
+    ASSERT_EQ(run.zones->size(), 2u) << run.run;
+    const BuckledZone& sinusoidal = (*run.zones)[0];
+    const BuckledZone& helical = (*run.zones)[1];
+    EXPECT_EQ(sinusoidal.state, BucklingState::Sinusoidal) << run.run;
+    EXPECT_NEAR(sinusoidal.md_from, 0.0, 9.2) << run.run;
+    EXPECT_NEAR(sinusoidal.md_to, 2000.0 - run.sinusoidal, 9.2) << run.run;
+    EXPECT_EQ(helical.state, BucklingState::Helical) << run.run;
+    EXPECT_NEAR(helical.md_from, 0.0, 9.2) << run.run;
+    EXPECT_NEAR(helical.md_to, 2000.0 - run.helical, 9.2) << run.run;
+  }
 }
 
 }  // namespace

@@ -810,13 +810,13 @@
     p.append(`${num(t.time[t.time.length - 1], 4)} s simulated. Stick-slip severity (max − min) / mean bit RPM over the second half: `,
              el('strong', {text: num(severity, 3)}), ` — ${words}.`);
     s.appendChild(p);
-    // The string's limits over the run's frames (results.json transient.limits): each limit's largest
-    // utilisation, where and when, and a warning for any at or above 1.
+    // The string's limits at every output sample (results.json transient.limits): each limit's largest
+    // utilisation, where and when, and a warning for any at or above 1; their history is plotted below.
     const tl = R.transient && R.transient.limits;
+    const names = {yield: 'yield', makeup_torque: 'make-up torque', helical_buckling: 'helical buckling', fatigue: 'fatigue'};
     if (tl && tl.summary) {
-      const names = {yield: 'yield', makeup_torque: 'make-up torque', helical_buckling: 'helical buckling', fatigue: 'fatigue'};
       const table = el('table', {class: 'data utilisations'});
-      table.appendChild(el('tr', {}, ['limit', `largest over ${tl.frames} frames`, 'where', 'when (s)'].map((x) => el('th', {text: x}))));
+      table.appendChild(el('tr', {}, ['limit', `largest over ${tl.samples || tl.frames} samples`, 'where', 'when (s)'].map((x) => el('th', {text: x}))));
       const over = [];
       for (const key of ['yield', 'makeup_torque', 'helical_buckling', 'fatigue']) {
         const u = tl.summary[key];
@@ -841,6 +841,13 @@
     plot(grid, {title: 'Weight on bit', x: 'time (s)', y: `WOB (${U.wob})`, series: [{label: 'WOB', x: t.time, y: t.wob, color: COLORS[2]}]});
     plot(grid, {title: 'Tension at the top of the modelled string', x: 'time (s)', y: `force (${U.force})`,
       series: [{label: 'top tension', x: t.time, y: t.hook_load, color: COLORS[4]}]});
+    const th = tl && tl.history;
+    if (th && th.time && th.closest) {
+      const series = ['yield', 'makeup_torque', 'helical_buckling', 'fatigue'].filter((k) => th[k]).map((k, i) => ({
+        label: names[k] + (k === th.closest ? ' (the closest)' : ''), x: th.time, y: th[k], color: COLORS[i], width: k === th.closest ? 2.5 : 1.5}));
+      plot(grid, {title: 'String limits: the largest utilisation along the string', x: 'time (s)', y: 'utilisation (load / limit)',
+        series: series, hLines: [{y: 1, label: 'limit', color: '#d62728'}]});
+    }
     t.probes.forEach((probe, i) => {
       const circle = [];
       if (probe.clearance !== undefined) {
