@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -162,10 +163,16 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
     }
   }
   const double default_yield = model::FindSteelGrade(model::kDefaultGrade)->yield;
-  for (const int index : assumed) {
-    limits.notes.push_back(fmt::format("'{}': no grade or yield given, its utilisation taken against {} ({:.0f} ksi), "
+  if (!assumed.empty()) {
+    // One note for every component rated by default (a BHA's collars and tools seldom carry a grade).
+    std::string names;
+    std::set<std::string> named;  // a name given to two components once
+    for (const int index : assumed) {
+      if (named.insert(components[index].name).second) names += (names.empty() ? "'" : ", '") + components[index].name + "'";
+    }
+    limits.notes.push_back(fmt::format("{}: no grade or yield given, {} utilisation taken against {} ({:.0f} ksi), "
                                        "the lowest grade",
-                                       components[index].name, model::kDefaultGrade,
+                                       names, assumed.size() == 1 ? "its" : "their", model::kDefaultGrade,
                                        default_yield / model::kPascalPerKsi));
   }
   if (!any_torque_limit) limits.notes.emplace_back("no make-up torque given: no torque limit");

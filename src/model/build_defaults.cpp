@@ -24,10 +24,10 @@ std::vector<Support> DefaultWellSupports(double string_length) {
 }
 
 double WallContactStiffness(const ContactSettings& contact, double circle_length, double weight_per_length,
-                            double clearance) {
+                            double clearance, double carried_length) {
   const double per_metre = contact.stiffness * circle_length;  // N/m per metre × m
   if (!(contact.penetration_fraction > 0.0)) return per_metre;
-  const double weight = std::abs(weight_per_length) * kContactWeightSpan;
+  const double weight = std::abs(weight_per_length) * carried_length;
   return std::max(per_metre, weight / (contact.penetration_fraction * std::max(clearance, kLeastContactClearance)));
 }
 

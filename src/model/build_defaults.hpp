@@ -35,17 +35,18 @@ inline constexpr double kFrictionRegularizationSpin = kDefaultStickSpeed;  // Ω
 
 // The normal stiffness of a wall contact circle standing for `circle_length` m of string, N/m: the
 // wall's stiffness per metre × that length, and at least w ℓ_w / (f c): the stiffness under which the
-// weight of its section over ℓ_w = 30 ft (w, N/m: a stabilizer or tool joint carries about a span of
-// string) sinks it by the fraction f (ContactSettings::penetration_fraction) of its radial clearance c
-// (at least kLeastContactClearance). The penalty's penetration is a numerical compliance, not the
+// weight of its section over ℓ_w sinks it by the fraction f (ContactSettings::penetration_fraction) of
+// its radial clearance c (at least kLeastContactClearance). ℓ_w = `carried_length`: for a point
+// contact (a stabilizer's blades, a tool joint) about a span of string, kContactWeightSpan; for a
+// body's circle its own length (it carries its share of a distributed load). The penalty's penetration is a numerical compliance, not the
 // formation's: at 1e8 N/m a metre alone the bundled example's near-bit stabilizer (c = 1/32 in) sank
 // 31 % of its clearance and its bit side force was 6 % below the rigid wall's; a 13 in collar's
 // stabilizer (c = 0.1 in) sank 150 % and its side force was 41 % low (docs/validation.md V4).
 double WallContactStiffness(const ContactSettings& contact, double circle_length, double weight_per_length,
-                            double clearance);
+                            double clearance, double carried_length);
 // m: the clearance the stiffness floor takes for a tighter contact (1/64 in; a full-gauge blade has 0).
 inline constexpr double kLeastContactClearance = 0.0254 / 64.0;
-// m: the span of string whose weight a contact carries, for its stiffness floor (30 ft: one joint).
+// m: the span of string whose weight a point contact carries, for its stiffness floor (30 ft: a joint).
 inline constexpr double kContactWeightSpan = 9.144;
 
 // Damping ratio of the coupling and support springs, with the element masses of the joined bodies.

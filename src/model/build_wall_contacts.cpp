@@ -39,8 +39,10 @@ std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& dra
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const auto [body, k, s] = nodes[i];
     const double clearance = 0.5 * (wellbore->hole.Diameter(input.bit_md - s) - circles[i].diameter);
-    const double stiffness =
-        WallContactStiffness(contact, circles[i].length, BuoyedWeightPerLength(*body, input), clearance);
+    // A circle wider than its body is a point contact (blades, a tool joint): it carries a span.
+    const bool point = circles[i].diameter > input.string.components[body->component].outer_diameter * (1.0 + 1e-9);
+    const double stiffness = WallContactStiffness(contact, circles[i].length, BuoyedWeightPerLength(*body, input),
+                                                  clearance, point ? kContactWeightSpan : circles[i].length);
     WallContactParameters parameters;
     parameters.contact_radius = 0.5 * circles[i].diameter;
     parameters.normal_stiffness = stiffness;
