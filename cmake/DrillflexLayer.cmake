@@ -35,8 +35,14 @@ endfunction()
 # drillflex_test_code(<target>)
 # A test or validation executable: with DRILLFLEX_SANITIZE and DRILLFLEX_SANITIZE_TESTS off, its own
 # sources compile without the sanitizers' instrumentation (the engine it links stays instrumented).
+# With DRILLFLEX_UNITY_TESTS its sources compile DRILLFLEX_UNITY_BATCH at a time as one translation
+# unit (CMake's unity build): a test file spends most of its compile on instantiating the same
+# GoogleTest and Eigen templates, which a batch instantiates once.
 function(drillflex_test_code target)
   if(DRILLFLEX_SANITIZE AND NOT DRILLFLEX_SANITIZE_TESTS)
     set_property(TARGET ${target} PROPERTY DRILLFLEX_TEST_CODE ON)
+  endif()
+  if(DRILLFLEX_UNITY_TESTS)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${DRILLFLEX_UNITY_BATCH})
   endif()
 endfunction()

@@ -14,7 +14,7 @@
 #include "whirl_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace backward_whirl_test {
 
 constexpr double kSpeedRpm = 100.0;
 constexpr double kCollarRadius = 4.0, kHoleRadius = 6.125;  // in
@@ -49,5 +49,5 @@ TEST(V8BackwardWhirl, RollingCollarWhirlsAtMinusOmegaRcOverClearanceWithin2Perce
   EXPECT_NEAR(fastest, kSpeedRpm, 0.05 * kSpeedRpm);
 }
 
-}  // namespace
+}  // namespace backward_whirl_test
 }  // namespace drillflex::validation

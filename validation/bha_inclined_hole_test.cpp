@@ -11,7 +11,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace bha_inclined_hole_test {
 
 constexpr double kDegreesPerRadian = 57.29577951308232;
 
@@ -91,5 +91,5 @@ INSTANTIATE_TEST_SUITE_P(Validation, V4BhaInclinedHole,
                            return name;
                          });
 
-}  // namespace
+}  // namespace bha_inclined_hole_test
 }  // namespace drillflex::validation

@@ -23,7 +23,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace bit_bounce_test {
 
 constexpr double kPi = 3.14159265358979323846;
 // The case's figures (SI).
@@ -127,5 +127,5 @@ TEST(BitBounce, OnsetAmplitudeMatchesTheContinuousBar) {
   EXPECT_NEAR(RelativeError(bisected, onset), 0.0, 0.01);
 }
 
-}  // namespace
+}  // namespace bit_bounce_test
 }  // namespace drillflex::validation

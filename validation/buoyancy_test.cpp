@@ -13,7 +13,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace buoyancy_test {
 
 constexpr double kLength = 3000.0;  // ft
 constexpr double kOd = 5.0, kId = 4.276;  // in
@@ -100,5 +100,5 @@ INSTANTIATE_TEST_SUITE_P(Validation, V5HangingString,
                            return name;
                          });
 
-}  // namespace
+}  // namespace buoyancy_test
 }  // namespace drillflex::validation

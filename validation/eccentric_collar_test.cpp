@@ -26,7 +26,7 @@
 #include "whirl_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace eccentric_collar_test {
 
 constexpr double kSpeedRpm = 100.0, kTorque = 5000.0;       // rpm, ft·lbf
 constexpr double kCollarRadius = 4.0, kHoleRadius = 6.125;  // in
@@ -83,5 +83,5 @@ TEST(V8EccentricCollar, BucklesAndTheContactForceTurnsAgainstTheRotationAtTheRol
   EXPECT_LT(std::abs(RelativeError(mean_torque, kTorque)), 0.05);
 }
 
-}  // namespace
+}  // namespace eccentric_collar_test
 }  // namespace drillflex::validation

@@ -6,7 +6,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace euler_buckling_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kLength = 5.08, kDiameter = 0.0762, kE = 207e9, kRho = 7850.0;
@@ -94,5 +94,5 @@ TEST(V2Greenhill, SelfWeightColumnWithinTwoPercent) {
             0.02);
 }
 
-}  // namespace
+}  // namespace euler_buckling_test
 }  // namespace drillflex::validation

@@ -17,7 +17,7 @@
 #include "robustness_cases_adapter.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace every_analysis_test {
 
 constexpr int kRequiredFinished = 199;  // 99.5 % of 200
 
@@ -55,5 +55,5 @@ TEST(EveryAnalysis, SecondGeneratorFinishesEveryAnalysis) {
   ExpectEveryAnalysisFinishes(cases, "second");
 }
 
-}  // namespace
+}  // namespace every_analysis_test
 }  // namespace drillflex::validation

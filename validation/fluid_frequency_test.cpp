@@ -24,7 +24,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace fluid_frequency_test {
 
 constexpr double kE = 207e9, kSteel = 7850.0;
 constexpr double kOd = 8.0 * kMetresPerInch, kId = 2.8125 * kMetresPerInch, kHole = 12.25 * kMetresPerInch;
@@ -139,5 +139,5 @@ TEST(V5FluidFrequency, ViscousAddedMassAndDampingFollowChenWambsganss) {
   EXPECT_LT(std::abs(RelativeError(zeta, zeta_reference)), 0.05);
 }
 
-}  // namespace
+}  // namespace fluid_frequency_test
 }  // namespace drillflex::validation

@@ -24,7 +24,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace fluid_transient_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kLength = 5.08, kOd = 0.0762, kId = 0.0381, kHole = 0.127, kE = 2.1e11, kSteel = 7800.0;
@@ -162,5 +162,5 @@ TEST(V8FluidTransient, ViscousMudDampsAtTheAnnulusRateAndRingsAtTheModesFrequenc
   EXPECT_LT(std::abs(RelativeError(mud.damping_ratio, zeta)), 5e-2);
 }
 
-}  // namespace
+}  // namespace fluid_transient_test
 }  // namespace drillflex::validation

@@ -26,7 +26,7 @@
 #include "whirl_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace fluid_whirl_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInch = 0.0254, kLbf = 4.4482216152605, kPpg = 119.826427;
@@ -89,5 +89,5 @@ TEST(V8FluidWhirl, BackwardWhirlInMudRollsAtTheKinematicRate) { CheckRollingWhir
 
 TEST(V8FluidWhirl, EccentricCollarInMudRollsAtTheKinematicRate) { CheckRollingWhirlInMud("eccentric-collar-mud"); }
 
-}  // namespace
+}  // namespace fluid_whirl_test
 }  // namespace drillflex::validation

@@ -10,7 +10,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace free_vibration_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kLength = 5.08, kDiameter = 0.0762, kE = 2.1e11, kRho = 7800.0;
@@ -67,5 +67,5 @@ TEST(V8FreeVibration, PeriodWithin02PercentAndEnergyWithin1e3Over100Periods) {
   EXPECT_LT(results["transient"]["energy_drift"].get<double>(), 1e-3);
 }
 
-}  // namespace
+}  // namespace free_vibration_test
 }  // namespace drillflex::validation

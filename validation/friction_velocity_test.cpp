@@ -19,7 +19,7 @@
 #include "whirl_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace friction_velocity_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kFactors[] = {0.3, 3.0};
@@ -120,5 +120,5 @@ TEST(V8FrictionRegularization, StickSlipPeriodAndPeakWithin2PercentAtAThirdAndTh
   }
 }
 
-}  // namespace
+}  // namespace friction_velocity_test
 }  // namespace drillflex::validation

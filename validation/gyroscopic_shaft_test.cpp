@@ -31,7 +31,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace gyroscopic_shaft_test {
 
 constexpr double kE = 2.1e11, kRho = 7850.0, kOd = 0.1, kId = 0.05, kLength = 1.0;
 const double kMass = kRho * kPi * (kOd * kOd - kId * kId) / 4.0;                              // kg/m
@@ -136,5 +136,5 @@ TEST(GyroscopicShaft, ModesAtTheOperatingSpeedAndTheSynchronousSpeeds) {
   }
 }
 
-}  // namespace
+}  // namespace gyroscopic_shaft_test
 }  // namespace drillflex::validation

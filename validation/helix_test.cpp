@@ -10,7 +10,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace helix_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kYoungsModulus = 2.1e11, kOuter = 0.040, kInner = 0.030, kHole = 0.070, kCompression = 89e3;
@@ -74,5 +74,5 @@ TEST_P(V3Helix, PitchAndContactForceWithinTenPercentOfLubinskiAndMitchell) {
 
 INSTANTIATE_TEST_SUITE_P(Validation, V3Helix, ::testing::Values("vertical", "inclined"));
 
-}  // namespace
+}  // namespace helix_test
 }  // namespace drillflex::validation

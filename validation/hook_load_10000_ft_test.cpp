@@ -5,7 +5,7 @@
 #include "v7_hook_load.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace hook_load_10000_ft_test {
 
 TEST(V7HookLoad, PullingOut10000FtWithin3Percent) {
   CheckSlidingHookLoad("v7-hook-load/pulling-out.yaml", 10000.0, 1.0, 4.5);
@@ -15,5 +15,5 @@ TEST(V7HookLoad, RunningIn10000FtWithin3Percent) {
   CheckSlidingHookLoad("v7-hook-load/running-in.yaml", 10000.0, -1.0, 4.5);
 }
 
-}  // namespace
+}  // namespace hook_load_10000_ft_test
 }  // namespace drillflex::validation

@@ -5,7 +5,7 @@
 #include "v7_hook_load.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace hook_load_test {
 
 // validation.md's figures, rounded down to the pound (46,841.6 is written 46,841).
 TEST(V7HookLoad, ReferencesAreValidationMdsOver10000Ft) {
@@ -23,5 +23,5 @@ TEST(V7HookLoad, RunningIn1000FtWithin3Percent) {
   CheckSlidingHookLoad("v7-hook-load/running-in-1000-ft.yaml", 1000.0, -1.0, 1.25);
 }
 
-}  // namespace
+}  // namespace hook_load_test
 }  // namespace drillflex::validation

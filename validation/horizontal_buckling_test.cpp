@@ -31,7 +31,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace horizontal_buckling_test {
 
 constexpr double kPi = 3.14159265358979323846;
 // The case's figures (SI).
@@ -106,5 +106,5 @@ TEST(V3HorizontalBuckling, SinusoidalOnsetBySlowCompressionWithin10PercentOfDaws
   EXPECT_LT(std::abs(RelativeError(half_wave, ref.half_wave())), 0.20);
 }
 
-}  // namespace
+}  // namespace horizontal_buckling_test
 }  // namespace drillflex::validation

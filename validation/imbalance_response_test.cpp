@@ -31,7 +31,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace imbalance_response_test {
 
 constexpr double kImbalance = 0.02;         // kg·m
 constexpr double kStructuralDamping = 0.01;  // model.structural_damping, the default
@@ -134,5 +134,5 @@ TEST(ImbalanceResponse, FirstFrequencyMatchesTheRayleighAndTimoshenkoBeams) {
   }
 }
 
-}  // namespace
+}  // namespace imbalance_response_test
 }  // namespace drillflex::validation

@@ -17,7 +17,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace invariance_test {
 
 struct Scale {
   double length = 1.0;  // output length to ft
@@ -115,5 +115,5 @@ TEST(V4Invariance, AzimuthAndUnitsDoNotChangeTheStaticsOfAStraightHole) {
   }
 }
 
-}  // namespace
+}  // namespace invariance_test
 }  // namespace drillflex::validation

@@ -14,7 +14,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace long_pipe_test {
 
 constexpr double kLength = 3000.0;          // ft
 constexpr double kInclination = 60.0;       // deg
@@ -58,5 +58,5 @@ TEST(V4LongPipe, WallAndBitCarryTheLateralWeightOnTheLowSideAndTheHookTheAxialWe
               100.0 * RelativeError(top_axial, axial_reference));
 }
 
-}  // namespace
+}  // namespace long_pipe_test
 }  // namespace drillflex::validation

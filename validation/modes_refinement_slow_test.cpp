@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 
 namespace drillflex::validation {
-namespace {
+namespace modes_refinement_slow_test {
 
 namespace fs = std::filesystem;
 
@@ -105,5 +105,5 @@ TEST(ModesRefinement, TenfoldCouplingFactorMovesTheTenLowestFrequenciesByLessTha
                         Default("coupling-1e4"));
 }
 
-}  // namespace
+}  // namespace modes_refinement_slow_test
 }  // namespace drillflex::validation

@@ -18,7 +18,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace roadmap_test {
 
 constexpr double kJointRadiusFt = 6.625 / 24.0;
 constexpr double kTorqueOnBit = 5000.0;  // ft·lbf, the case's
@@ -67,5 +67,5 @@ TEST(V7Roadmap, HookLoadsAndTorquesAtEveryDepthWithinThreePercentOfJohancsik) {
   }
 }
 
-}  // namespace
+}  // namespace roadmap_test
 }  // namespace drillflex::validation

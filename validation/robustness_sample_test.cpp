@@ -12,7 +12,7 @@
 #include "robustness_cases_adapter.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace robustness_sample_test {
 
 constexpr int kSampleStep = 10;
 
@@ -89,5 +89,5 @@ TEST(RobustnessSample, BucklingRunsOnSampledCasesWithWob) {
   for (const int index : {10, 60}) ExpectBucklingRuns(SecondGeneratorCase(index), SampleDirectory("buckling"));
 }
 
-}  // namespace
+}  // namespace robustness_sample_test
 }  // namespace drillflex::validation

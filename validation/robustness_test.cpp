@@ -14,7 +14,7 @@
 #include "robustness_cases_adapter.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace robustness_test {
 
 constexpr int kCaseCount = kCasesPerGenerator;
 // 99.5 % of 200: at most one case may stop (with its message).
@@ -126,5 +126,5 @@ TEST(Robustness, SecondGeneratorConvergesOnAtLeast995Percent) {
   ExpectRobust(summary, stride);
 }
 
-}  // namespace
+}  // namespace robustness_test
 }  // namespace drillflex::validation

@@ -17,7 +17,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace stability_map_test {
 
 nlohmann::json RunStabilityMap(const std::string& relative_case, const std::string& name, const std::string& values) {
   const std::string output = ResultsDirectory(relative_case) + "-" + name;
@@ -75,5 +75,5 @@ TEST(StabilityMap, ThePendulumsBitSticksAndSlips) {
               point["stick_slip_severity"].get<double>());
 }
 
-}  // namespace
+}  // namespace stability_map_test
 }  // namespace drillflex::validation

@@ -18,7 +18,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace stick_slip_test {
 
 constexpr double kPi = 3.14159265358979323846;
 // The case's figures (SI).
@@ -124,5 +124,5 @@ TEST(V8StickSlip, LimitCyclePeriodAndPeakBitSpeedWithin2Percent) {
   }
 }
 
-}  // namespace
+}  // namespace stick_slip_test
 }  // namespace drillflex::validation

@@ -14,7 +14,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace string_vibration_test {
 
 constexpr double kE = 2.1e11, kNu = 0.3, kRho = 7850.0, kLength = 1000.0;
 
@@ -61,5 +61,5 @@ TEST(V6StringVibration, RuleOfThumbCriticalRpmIsReportedBesideTheComputedOne) {
   EXPECT_LT(std::abs(RelativeError(rule, computed)), 0.15);
 }
 
-}  // namespace
+}  // namespace string_vibration_test
 }  // namespace drillflex::validation

@@ -28,7 +28,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace tendency_test {
 
 constexpr double kDegreesPerRadian = 57.29577951308232;
 
@@ -192,5 +192,5 @@ TEST(V9Tendency, MadsimMotorYieldRisesWithWobAndHardlyMovesWithSteerability) {
   EXPECT_LT(std::abs(s25 - s5), 0.5);
 }
 
-}  // namespace
+}  // namespace tendency_test
 }  // namespace drillflex::validation

@@ -15,7 +15,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace torque_buckling_test {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -197,5 +197,5 @@ TEST(V2VerticalHole, LubinskiStringPinnedAtBothEndsWithinOnePercent) {
                          computed, reference);
 }
 
-}  // namespace
+}  // namespace torque_buckling_test
 }  // namespace drillflex::validation

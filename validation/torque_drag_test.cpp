@@ -19,7 +19,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace torque_drag_test {
 
 TEST(V7TorqueDrag, CaseBuoyedWeightIsTheReferenceOne) {
   EXPECT_NEAR(V7CaseBuoyedWeight(), kBuoyedWeight, 1e-4 * kBuoyedWeight);
@@ -52,5 +52,5 @@ TEST(V7TorqueDrag, RotatingOffBottomTorqueOf1000FtWithinTwoPercent) {
   CheckRotatingOffBottom("v7-torque-drag/pipe-60-deg-rotating-1000-ft.yaml", 1000.0);
 }
 
-}  // namespace
+}  // namespace torque_drag_test
 }  // namespace drillflex::validation

@@ -8,7 +8,7 @@
 #include "validation_support.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace uniform_beam_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kLength = 5.08, kDiameter = 0.0762, kE = 2.1e11, kRho = 7800.0;
@@ -101,5 +101,5 @@ TEST(V1UniformBeam, OneBodyConvergesFromAboveAsModesAreAdded) {
   }
 }
 
-}  // namespace
+}  // namespace uniform_beam_test
 }  // namespace drillflex::validation

@@ -25,7 +25,7 @@
 #include "wu_rod.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace wu_rod_full_helix_test {
 
 using namespace wu;
 
@@ -139,5 +139,5 @@ TEST(V3WuRod, UnderALoadRampBothHalvesCoilAtOnceWithOppositeHands) {
   EXPECT_LT(blocker_half.hand * block_half.hand, 0.0);
 }
 
-}  // namespace
+}  // namespace wu_rod_full_helix_test
 }  // namespace drillflex::validation

@@ -20,7 +20,7 @@
 #include "wu_rod.hpp"
 
 namespace drillflex::validation {
-namespace {
+namespace wu_rod_test {
 
 using namespace wu;
 
@@ -85,5 +85,5 @@ TEST(V3WuRod, SinusoidalOnsetWithin10PercentOfDawsonPaslay) {
   EXPECT_NEAR(half_waves, kLength / half_pitch, 1.0);
 }
 
-}  // namespace
+}  // namespace wu_rod_test
 }  // namespace drillflex::validation

@@ -14,7 +14,7 @@
 #include "model/builder.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace bent_motor_test {
 
 constexpr double kIn = 0.0254, kFt = 0.3048;
 constexpr double kBend = 1.5 * kDegree;
@@ -104,5 +104,5 @@ TEST(BentMotor, TheBitFollowsTheToolface) {
   EXPECT_NEAR(right.build_force, left.build_force, 0.01 * right.side_force);
 }
 
-}  // namespace
+}  // namespace bent_motor_test
 }  // namespace drillflex::analyses

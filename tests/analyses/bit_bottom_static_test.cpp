@@ -17,7 +17,7 @@
 #include "well_cases.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace bit_bottom_static_test {
 
 model::BitRockParameters BottomOnly() {
   model::BitRockParameters p;
@@ -84,5 +84,5 @@ TEST(BitBottomStatic, TransientStartsOnBottomInBalance) {
   EXPECT_FALSE(PlaceBottomAtStart(input, start, q0).bit_rock.has_value());
 }
 
-}  // namespace
+}  // namespace bit_bottom_static_test
 }  // namespace drillflex::analyses

@@ -14,7 +14,7 @@
 #include "cms/reduction_cache.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace bit_rock_transient_test {
 
 using testing::PointLoad;
 using testing::SupportAt;
@@ -108,5 +108,5 @@ TEST(BitRockTransient, BelowTheTorqueItNeedsTheBitSticks) {
   EXPECT_NEAR(run.penetration, creep, 1e-2 * creep);
 }
 
-}  // namespace
+}  // namespace bit_rock_transient_test
 }  // namespace drillflex::analyses

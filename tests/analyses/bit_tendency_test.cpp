@@ -8,7 +8,7 @@
 #include "analyses/bit_tendency.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace bit_tendency_test {
 
 BitReport Bit(double build, double walk) {
   BitReport bit;
@@ -78,5 +78,5 @@ TEST(BitTendency, Names) {
   EXPECT_EQ(std::string(TendencyName(AzimuthTendency::None)), "none");
 }
 
-}  // namespace
+}  // namespace bit_tendency_test
 }  // namespace drillflex::analyses

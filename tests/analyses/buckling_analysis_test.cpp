@@ -16,7 +16,7 @@
 #include "field_parts.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace buckling_analysis_test {
 
 using model::kRx;
 using model::kRy;
@@ -163,11 +163,11 @@ TEST(BucklingAnalysis, GreenhillSelfWeightColumn) {
   EXPECT_NEAR(result.reference_compression, w * (kRodLength - h / 2), 1e-6 * w * kRodLength);
 }
 
-}  // namespace
+}  // namespace buckling_analysis_test
 }  // namespace drillflex::analyses
 
 namespace drillflex::analyses {
-namespace {
+namespace buckling_analysis_test {
 
 // 300 ft of 4-3/4 in collars (no tool joints) lying in a straight 8-1/2 in hole at `inclination`,
 // dry, under a WOB; Dawson & Paslay's F_sin = 2 √(EI w sin θ / r) by hand (w = ρ g A, r the radial
@@ -295,5 +295,5 @@ TEST(BucklingInWell, AStringBuckledAtItsLoadsHasItsOnsetFoundBelowThem) {
   EXPECT_NEAR(result.critical_wob, reference.critical_wob, 0.01 * reference.critical_wob);
 }
 
-}  // namespace
+}  // namespace buckling_analysis_test
 }  // namespace drillflex::analyses

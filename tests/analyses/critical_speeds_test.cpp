@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace drillflex::analyses {
-namespace {
+namespace critical_speeds_test {
 
 TEST(CriticalSpeeds, TwoResonancesOfASumOfOscillatorsArePeaksAndARippleIsNot) {
   // |H| of two lightly damped oscillators at 10 and 30, sampled at 0..40 step 0.5, plus a 1 %
@@ -44,5 +44,5 @@ TEST(CriticalSpeeds, RunsAreMaximalAndInclusive) {
   EXPECT_TRUE(FindRuns({false, false}).empty());
 }
 
-}  // namespace
+}  // namespace critical_speeds_test
 }  // namespace drillflex::analyses

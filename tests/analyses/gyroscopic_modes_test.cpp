@@ -13,7 +13,7 @@
 #include "solvers/eigen.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace gyroscopic_modes_test {
 
 model::ModelInput PinnedRod() {
   model::ModelInput input = testing::V1Rod();
@@ -108,5 +108,5 @@ TEST(GyroscopicModes, SynchronousCrossingsInterpolateTheBranches) {
   EXPECT_EQ(crossings[0].whirl, Whirl::Forward);
 }
 
-}  // namespace
+}  // namespace gyroscopic_modes_test
 }  // namespace drillflex::analyses

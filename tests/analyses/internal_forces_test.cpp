@@ -13,7 +13,7 @@
 #include "model/internal_forces.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace internal_forces_test {
 
 using testing::kRodLength;
 
@@ -176,5 +176,5 @@ TEST(InternalForces, GeometricTermCarriesTheCompressionIntoTheShear) {
   }
 }
 
-}  // namespace
+}  // namespace internal_forces_test
 }  // namespace drillflex::analyses

@@ -17,7 +17,7 @@
 #include "cms/reduction_cache.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace limits_envelope_test {
 
 using testing::ClampAt;
 using testing::PointLoad;
@@ -132,5 +132,5 @@ TEST(LimitsEnvelope, ASuddenTensionDoublesBetweenTheWavesArrivalAndReturn) {
   EXPECT_DOUBLE_EQ(largest, yield.utilisation);
 }
 
-}  // namespace
+}  // namespace limits_envelope_test
 }  // namespace drillflex::analyses

@@ -17,7 +17,7 @@
 #include "well_cases.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace load_parameters_test {
 
 // The string resting on the wall (its contacts touching) with every coordinate moved a little.
 VecX Perturbed(const model::ModelInput& input, const model::BuiltModel& built, double size, unsigned seed) {
@@ -166,5 +166,5 @@ TEST(LoadParameters, FactorsScaleWhatTheyName) {
   EXPECT_LT(weight.head<2>().norm(), 1e-9 * expected);
 }
 
-}  // namespace
+}  // namespace load_parameters_test
 }  // namespace drillflex::analyses

@@ -9,7 +9,7 @@
 #include "analyses_test_support.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace modes_analysis_test {
 
 using testing::kRodLength;
 
@@ -130,5 +130,5 @@ TEST(ModesAnalysis, FreeStringReportsRigidBodyModesAtZero) {
   EXPECT_NEAR(lateral.modes[0].frequency_hz / exact, 1.0, 5e-4);
 }
 
-}  // namespace
+}  // namespace modes_analysis_test
 }  // namespace drillflex::analyses

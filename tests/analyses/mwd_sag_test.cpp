@@ -17,7 +17,7 @@
 #include "field_parts.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace mwd_sag_test {
 
 using testing::kFt;
 using testing::kIn;
@@ -114,5 +114,5 @@ TEST(MwdSag, IsTheSlopeOfTheCollarBetweenItsStabilizers) {
   }
 }
 
-}  // namespace
+}  // namespace mwd_sag_test
 }  // namespace drillflex::analyses

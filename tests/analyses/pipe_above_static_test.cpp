@@ -14,7 +14,7 @@
 #include "well_cases.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace pipe_above_static_test {
 
 TEST(PipeAboveStatic, TheTensionItTakesIsTheHooksReactionAtRest) {
   model::ModelInput input = testing::KickOffToTheSouth(10);
@@ -39,5 +39,5 @@ TEST(PipeAboveStatic, TheTensionItTakesIsTheHooksReactionAtRest) {
   EXPECT_FALSE(RunStaticInWell(input, free, StaticSettings{}).pipe_above.has_value());
 }
 
-}  // namespace
+}  // namespace pipe_above_static_test
 }  // namespace drillflex::analyses

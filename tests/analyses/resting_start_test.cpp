@@ -23,7 +23,7 @@
 #include "model/wall_contact.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace resting_start_test {
 
 using testing::kFt;
 using testing::kIn;
@@ -148,5 +148,5 @@ TEST(RestingStart, StretchesTheStringByItsSoftStringTension) {
 }
 
 
-}  // namespace
+}  // namespace resting_start_test
 }  // namespace drillflex::analyses

@@ -16,7 +16,7 @@
 #include "field_parts.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace soft_string_test {
 
 using testing::kFt;
 using testing::kIn;
@@ -460,5 +460,5 @@ TEST(SoftString, BadInputThrows) {
   EXPECT_NO_THROW(ComputeSoftString(input, rotating));
 }
 
-}  // namespace
+}  // namespace soft_string_test
 }  // namespace drillflex::analyses

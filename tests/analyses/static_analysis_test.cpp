@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace static_analysis_test {
 
 using testing::kRodLength;
 
@@ -131,5 +131,5 @@ TEST(StaticAnalysis, CombinedStressAtTheOuterFibre) {
   EXPECT_NEAR(root.torque, torque, 1e-6 * torque);
 }
 
-}  // namespace
+}  // namespace static_analysis_test
 }  // namespace drillflex::analyses

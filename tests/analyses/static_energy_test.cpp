@@ -17,7 +17,7 @@
 #include "model/wall_contact.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace static_energy_test {
 
 using testing::kFt;
 using testing::kLbf;
@@ -144,5 +144,5 @@ TEST(StaticEnergy, TheTorqueOnBitWorksOverATwistOfTheBit) {
   }
 }
 
-}  // namespace
+}  // namespace static_energy_test
 }  // namespace drillflex::analyses

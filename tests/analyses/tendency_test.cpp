@@ -22,7 +22,7 @@
 #include "field_parts.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace tendency_test {
 
 using testing::kFt;
 using testing::kIn;
@@ -429,5 +429,5 @@ TEST(Tendency, RefusesAStringItCannotTake) {
   EXPECT_TRUE(PointTheBitProblem(input, PointTheBitAt(0.5, 0.0, 1.0)).has_value());
 }
 
-}  // namespace
+}  // namespace tendency_test
 }  // namespace drillflex::analyses

@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace transient_analysis_test {
 
 using testing::ClampAt;
 using testing::PointLoad;
@@ -179,5 +179,5 @@ TEST(TransientAnalysis, IntegratorOptionsFollowTheSettings) {
   EXPECT_DOUBLE_EQ(fixed.rho_infinity, 0.5);
 }
 
-}  // namespace
+}  // namespace transient_analysis_test
 }  // namespace drillflex::analyses

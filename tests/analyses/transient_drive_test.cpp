@@ -18,7 +18,7 @@
 #include "cms/reduction_cache.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace transient_drive_test {
 
 using testing::kRodDiameter;
 using testing::kRodLength;
@@ -163,5 +163,5 @@ TEST(TransientDrive, ABlockLineStartsAtTheTopsDisplacement) {
   EXPECT_NEAR(PlaceBlockAtStart(input, start, q0).block->start_top_displacement, 3e-4, 1e-12);
 }
 
-}  // namespace
+}  // namespace transient_drive_test
 }  // namespace drillflex::analyses

@@ -12,7 +12,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace vibration_analysis_test {
 
 using testing::SupportAt;
 
@@ -191,5 +191,5 @@ TEST(VibrationAnalysis, MotorSpeedComesFromTheFlowOrIsGiven) {
   EXPECT_THROW(MotorSpeed(e, input, 0), InputError);
 }
 
-}  // namespace
+}  // namespace vibration_analysis_test
 }  // namespace drillflex::analyses

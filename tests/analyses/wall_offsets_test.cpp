@@ -17,7 +17,7 @@
 #include "analyses_test_support.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace wall_offsets_test {
 
 constexpr double kHoleDiameter = 0.2;           // m
 constexpr double kPipeOd = 0.127, kPipeId = 0.1086;  // m
@@ -275,5 +275,5 @@ TEST(WallOffsets, WithoutAWellNothingIsSet) {
   }
 }
 
-}  // namespace
+}  // namespace wall_offsets_test
 }  // namespace drillflex::analyses

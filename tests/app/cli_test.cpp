@@ -18,7 +18,7 @@
 
 #include "cli_run.hpp"
 
-namespace {
+namespace cli_test {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -324,7 +324,8 @@ TEST(Cli, VibrationWithAnUnknownMotorSpeedExitsWithTwoAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-}  // namespace
+}  // namespace cli_test
+using namespace cli_test;  // the tests below are outside it
 
 // Every command that solves writes report.html and the VTK files beside results.json; --no-report and
 // the case's `output: {report: false, vtk: false}` turn them off; a bad `output` key is bad input.
@@ -472,7 +473,7 @@ TEST(Cli, RunKeepFinishedWritesTheAnalysesThatFinished) {
   EXPECT_TRUE(fs::exists(out / "report.html"));  // drawn in Chromium: tests/CMakeLists.txt report.KeepFinished
 }
 
-namespace {
+namespace cli_test {
 
 const std::string kCalibrationCase = std::string(DRILLFLEX_SOURCE_DIR "/examples/calibration/case.yaml");
 const std::string kCalibrationReadings = std::string(DRILLFLEX_SOURCE_DIR "/examples/calibration/readings.csv");
@@ -522,4 +523,4 @@ TEST(Cli, CalibrateFindsWhatWroteTheExamplesReadings) {
   EXPECT_TRUE(fs::exists(out / "calibration.csv"));
 }
 
-}  // namespace
+}  // namespace cli_test

@@ -16,7 +16,7 @@
 #include "../sweep_case.hpp"
 #include "cli_run.hpp"
 
-namespace {
+namespace sweep_cli_test {
 
 namespace fs = std::filesystem;
 
@@ -77,4 +77,4 @@ TEST(SweepCli, AFailedRunIsARowAndBadValuesAreBadInput) {
   EXPECT_FALSE(fs::exists(bad_out / "sweep.csv"));
 }
 
-}  // namespace
+}  // namespace sweep_cli_test

@@ -18,7 +18,7 @@
 
 #include "cli_run.hpp"
 
-namespace {
+namespace witsml_cli_test {
 
 namespace fs = std::filesystem;
 using drillflex::test_cli::ReadFile;
@@ -177,4 +177,4 @@ TEST(WitsmlCli, WellPlacesAWitsmlTrajectoryByMinimumCurvatureWithin1mmOver5km) {
   EXPECT_LT(largest, 1e-3);
 }
 
-}  // namespace
+}  // namespace witsml_cli_test

@@ -13,7 +13,7 @@
 #include "fe/body_fe_model.hpp"
 
 namespace drillflex::cms {
-namespace {
+namespace craig_bampton_test {
 
 using fe::testing::LowestEigenvalues;
 using fe::testing::Restrict;
@@ -329,5 +329,5 @@ TEST(CraigBampton, RejectsBadInputAndBrokenModels) {
   EXPECT_THROW(Reduce(loose, 4, 0.0), LogicError);
 }
 
-}  // namespace
+}  // namespace craig_bampton_test
 }  // namespace drillflex::cms

@@ -8,7 +8,7 @@
 #include "fe/body_fe_model.hpp"
 
 namespace drillflex::cms {
-namespace {
+namespace reduced_body_test {
 
 // A 9 m drill-pipe body (5 in × 4.276 in) with internal mud and annulus added mass.
 fe::BodySpec PipeBody(fe::MassKind mass) {
@@ -80,5 +80,5 @@ TEST(ReducedBody, NodeRowsAreTheRowsOfU) {
   }
 }
 
-}  // namespace
+}  // namespace reduced_body_test
 }  // namespace drillflex::cms

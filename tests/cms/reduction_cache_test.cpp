@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::cms {
-namespace {
+namespace reduction_cache_test {
 
 fe::BodySpec Pipe(double length) {
   fe::BodySpec spec;
@@ -83,5 +83,5 @@ TEST(ReductionCache, AFailedReductionRethrowsForEveryCaller) {
   EXPECT_EQ(cache.reduction_count(), 1u);
 }
 
-}  // namespace
+}  // namespace reduction_cache_test
 }  // namespace drillflex::cms

@@ -8,7 +8,7 @@
 #include <thread>
 
 namespace drillflex::profile {
-namespace {
+namespace profile_test {
 
 TEST(Profile, RecordsScopesOnlyWhileOnAndNestsInclusively) {
   Reset();
@@ -36,5 +36,5 @@ TEST(Profile, RecordsScopesOnlyWhileOnAndNestsInclusively) {
   EXPECT_TRUE(Report().empty());
 }
 
-}  // namespace
+}  // namespace profile_test
 }  // namespace drillflex::profile

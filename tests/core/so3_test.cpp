@@ -6,7 +6,7 @@
 #include <random>
 
 namespace drillflex::so3 {
-namespace {
+namespace so3_test {
 
 Vec3 RandomVector(std::mt19937& rng, double scale) {
   std::uniform_real_distribution<double> u(-scale, scale);
@@ -66,5 +66,5 @@ TEST(So3, ThousandRevolutionsAndBackReturnToStart) {
   EXPECT_LT((q.toRotationMatrix() - start.toRotationMatrix()).norm(), 1e-10);
 }
 
-}  // namespace
+}  // namespace so3_test
 }  // namespace drillflex::so3

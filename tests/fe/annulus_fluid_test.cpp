@@ -12,7 +12,7 @@
 #include "fe/section.hpp"
 
 namespace drillflex::fe {
-namespace {
+namespace annulus_fluid_test {
 
 constexpr double kInch = 0.0254;  // m
 constexpr double kFoot = 0.3048;  // m
@@ -196,5 +196,5 @@ TEST(AnnulusFluid, ValidationV5CollarFrequencies) {
   EXPECT_NEAR(inviscid.added_mass, (dh * dh + od * od) / (dh * dh - od * od), 1e-12);
 }
 
-}  // namespace
+}  // namespace annulus_fluid_test
 }  // namespace drillflex::fe

@@ -10,7 +10,7 @@
 #include "core/dense_eigen.hpp"
 
 namespace drillflex::fe {
-namespace {
+namespace beam_element_test {
 
 // A thick steel collar element (Timoshenko shear is visible): 8 in × 2.8125 in, 0.5 m long.
 BeamElementProperties Collar(double length = 0.5) {
@@ -264,11 +264,11 @@ TEST(BeamElement, GeometricStiffnessIsTheStringEnergyOfARotation) {
   }
 }
 
-}  // namespace
+}  // namespace beam_element_test
 }  // namespace drillflex::fe
 
 namespace drillflex::fe {
-namespace {
+namespace beam_element_test {
 
 // The torque's geometric stiffness of an Euler–Bernoulli element (cubic interpolation, exact for
 // cubic fields): for v = x², w = x³ on [0, L], v′w″ − w′v″ = 12x² − 6x² = 6x², so dᵀ K_T d = −2L³;
@@ -302,5 +302,5 @@ TEST(ElementTorqueGeometricStiffness, CubicFieldGivesTheExactIntegral) {
   EXPECT_NEAR(planar.dot(k * planar), 0.0, 1e-15);
 }
 
-}  // namespace
+}  // namespace beam_element_test
 }  // namespace drillflex::fe

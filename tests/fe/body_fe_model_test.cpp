@@ -11,7 +11,7 @@
 #include "fe_test_helpers.hpp"
 
 namespace drillflex::fe {
-namespace {
+namespace body_fe_model_test {
 
 using testing::LowestEigenvalues;
 using testing::Restrict;
@@ -237,5 +237,5 @@ TEST(BodyFeModel, RejectsBadInput) {
   EXPECT_THROW(BuildBodyFeModel(spec), InputError);
 }
 
-}  // namespace
+}  // namespace body_fe_model_test
 }  // namespace drillflex::fe

@@ -6,7 +6,7 @@
 #include "fe/section.hpp"
 
 namespace drillflex::fe {
-namespace {
+namespace material_test {
 
 TEST(Material, BuiltInsAndShearModulus) {
   const auto steel = FindBuiltInMaterial("Steel");
@@ -56,5 +56,5 @@ TEST(Section, ValidationRejectsNonsense) {
   EXPECT_NO_THROW(ValidateSection({0.1, 0.0}));
 }
 
-}  // namespace
+}  // namespace material_test
 }  // namespace drillflex::fe

@@ -9,7 +9,7 @@
 #include "core/types.hpp"
 
 namespace drillflex::fe {
-namespace {
+namespace modified_bessel_test {
 
 const Complex kEighthTurn = std::polar(1.0, kPi / 4.0);  // e^{iπ/4}: arg of sqrt(iω/ν) r
 
@@ -168,5 +168,5 @@ TEST(ModifiedBessel, RejectsArgumentsOutsideTheRightHalfPlane) {
   EXPECT_THROW(ComputeScaledModifiedBessel({std::nan(""), 1.0}), LogicError);
 }
 
-}  // namespace
+}  // namespace modified_bessel_test
 }  // namespace drillflex::fe

@@ -10,7 +10,7 @@
 #include <fstream>
 
 namespace drillflex::io {
-namespace {
+namespace case_reader_test {
 
 using ::testing::HasSubstr;
 
@@ -751,5 +751,5 @@ TEST(CaseReader, UnitsWithTheirOwnUnitOverrideTheSystem) {
   EXPECT_DOUBLE_EQ(si.input.string.components[0].length, field.input.string.components[0].length);
 }
 
-}  // namespace
+}  // namespace case_reader_test
 }  // namespace drillflex::io

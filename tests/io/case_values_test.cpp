@@ -7,7 +7,7 @@
 #include "io/case.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace case_values_test {
 
 using ::testing::HasSubstr;
 
@@ -137,5 +137,5 @@ INSTANTIATE_TEST_SUITE_P(
         RejectedValue{"negative_length", {"string[2].length", "-3 ft"}, 6, "greater than zero"}),
     [](const auto& info) { return std::string(info.param.label); });
 
-}  // namespace
+}  // namespace case_values_test
 }  // namespace drillflex::io

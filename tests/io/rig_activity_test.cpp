@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace drillflex::io {
-namespace {
+namespace rig_activity_test {
 
 constexpr double kKlbf = 4448.2216152605;  // N
 constexpr double kRpm = 2.0 * kPi / 60.0;  // rad/s
@@ -110,5 +110,5 @@ TEST(RigActivity, ThresholdsAreTheirs) {
   EXPECT_EQ(ClassifyRigActivity(Row(989.0, 0, 0), &before, wide), RigActivity::kOther);
 }
 
-}  // namespace
+}  // namespace rig_activity_test
 }  // namespace drillflex::io

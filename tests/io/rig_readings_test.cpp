@@ -15,7 +15,7 @@
 #include "../witsml_log_writer.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace rig_readings_test {
 
 using ::testing::HasSubstr;
 
@@ -434,5 +434,5 @@ TEST(RigReadingsWitsml, A20RowsValuesMayCarryQualityOrBeStrings) {
   EXPECT_EQ(readings.rows[0].line, log.FirstRowLine20());
 }
 
-}  // namespace
+}  // namespace rig_readings_test
 }  // namespace drillflex::io

@@ -7,7 +7,7 @@
 #include "io/analysis_results.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace rule_of_thumb_test {
 
 constexpr double kInch = 0.0254, kFoot = 0.3048, kRpm = kPi / 30.0;
 
@@ -46,5 +46,5 @@ TEST(RuleOfThumb, SpanIsBetweenSupportsElseOneJointElseTheString) {
   EXPECT_NEAR(ComputeRuleOfThumbCriticalSpeed(c).span, 900.0 * kFoot, 1e-9);
 }
 
-}  // namespace
+}  // namespace rule_of_thumb_test
 }  // namespace drillflex::io

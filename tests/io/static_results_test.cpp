@@ -11,7 +11,7 @@
 #include <string>
 
 namespace drillflex::io {
-namespace {
+namespace static_results_test {
 
 namespace fs = std::filesystem;
 
@@ -120,5 +120,5 @@ TEST(StaticResults, BitTendencyAndContactComponent) {
   EXPECT_EQ(written.json["static"]["contacts"][0]["component"], "short collar");
 }
 
-}  // namespace
+}  // namespace static_results_test
 }  // namespace drillflex::io

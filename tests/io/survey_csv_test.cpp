@@ -8,7 +8,7 @@
 #include "core/types.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace survey_csv_test {
 
 using ::testing::HasSubstr;
 
@@ -57,5 +57,5 @@ TEST(SurveyCsv, ErrorsNameTheLineAndTheKey) {
   EXPECT_THAT(ErrorOf("md\n"), HasSubstr("expected 3 columns"));
 }
 
-}  // namespace
+}  // namespace survey_csv_test
 }  // namespace drillflex::io

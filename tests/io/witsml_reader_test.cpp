@@ -12,7 +12,7 @@
 #include "core/types.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace witsml_reader_test {
 
 using ::testing::HasSubstr;
 
@@ -255,5 +255,5 @@ TEST(WitsmlReader, OtherBadDocumentsNameFileLineElementAndExpectation) {
   for (const Bad& bad : cases) ExpectBad(bad);
 }
 
-}  // namespace
+}  // namespace witsml_reader_test
 }  // namespace drillflex::io

@@ -16,7 +16,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace bit_contact_test {
 
 using testing::ElementProblem;
 using testing::JacobianErrors;
@@ -268,5 +268,5 @@ TEST(BitSideCuttingTest, FreesTheBitsLateralHold) {
   EXPECT_GT(cutting, 0.0);         // the coupling to the body above still pulls back
 }
 
-}  // namespace
+}  // namespace bit_contact_test
 }  // namespace drillflex::model

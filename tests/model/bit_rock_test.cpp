@@ -16,7 +16,7 @@
 #include "solvers/problem.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace bit_rock_test {
 
 using testing::PerturbedPositions;
 using testing::RodInput;
@@ -283,5 +283,5 @@ TEST(BitRockElementTest, ReplacesTheOperationsBitLoads) {
   EXPECT_NEAR(detournay_tob, 0.0, 1e-9);
 }
 
-}  // namespace
+}  // namespace bit_rock_test
 }  // namespace drillflex::model

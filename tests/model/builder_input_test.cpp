@@ -7,7 +7,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace builder_input_test {
 
 // A section the reduction cannot take (found by fuzz/case_file: the reduction's LogicError ended the
 // program: an od of 1e-9 m, a modulus of 1e-300 Pa with a density of 1e300 kg/m3) is an InputError
@@ -43,5 +43,5 @@ TEST(BuildSystemModel, ABitAloneInAWellHasNoWallContact) {
   EXPECT_TRUE(BuildSystemModel(input, cache).contacts.empty());
 }
 
-}  // namespace
+}  // namespace builder_input_test
 }  // namespace drillflex::model

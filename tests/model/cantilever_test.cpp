@@ -11,7 +11,7 @@
 #include "solvers/newton.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace cantilever_test {
 
 constexpr double kLength = 5.08, kDiameter = 0.0762, kE = 2.1e11, kRho = 7800.0;
 const double kI = kPi * std::pow(kDiameter, 4) / 64.0;
@@ -87,5 +87,5 @@ TEST(Cantilever, Frequencies) {
   }
 }
 
-}  // namespace
+}  // namespace cantilever_test
 }  // namespace drillflex::model

@@ -10,7 +10,7 @@
 #include "field_units.hpp"
 
 namespace drillflex::model::test {
-namespace {
+namespace casing_wear_test {
 
 // WF 5e-10 1/psi (in²/lbf), 1000 lbf/ft on 6-5/8 in tool joints at 120 rpm for 100 h. By hand: the
 // sliding distance π 6.625 in · 120 /min · 6000 min, V/L = 5e-10 · (1000/12 lbf/in) · that
@@ -31,5 +31,5 @@ TEST(CasingWear, GrooveOfAJointInTheCasingBySlices) {
   EXPECT_DOUBLE_EQ(GrooveDepth(bore, joint, 0.0), 0.0);
 }
 
-}  // namespace
+}  // namespace casing_wear_test
 }  // namespace drillflex::model::test

@@ -15,7 +15,7 @@
 #include "model/builder.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace contact_circles_test {
 
 constexpr double kPipeOd = 0.127, kJointOd = 0.1683;
 
@@ -132,5 +132,5 @@ TEST(ContactCircles, RefusesUnorderedPositions) {
   EXPECT_THROW(ContactCircles(string, {0.0, 2.0, 1.0}), LogicError);
 }
 
-}  // namespace
+}  // namespace contact_circles_test
 }  // namespace drillflex::model

@@ -9,7 +9,7 @@
 #include "field_units.hpp"
 
 namespace drillflex::model::test {
-namespace {
+namespace dogleg_fatigue_test {
 
 // 1 °/100 ft in 1/m.
 constexpr double kDegPer100Ft = kPi / 180.0 / (100.0 * 0.3048);
@@ -41,5 +41,5 @@ TEST(DoglegFatigue, NoTensionNoMagnification) {
   EXPECT_NEAR(DoglegBendingStress(1e-3, 2.1e11, 0.127, 0.0, 1e6, 4.5), 0.5 * 2.1e11 * 0.127 * 1e-3, 1e-6);
 }
 
-}  // namespace
+}  // namespace dogleg_fatigue_test
 }  // namespace drillflex::model::test

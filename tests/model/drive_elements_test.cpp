@@ -13,7 +13,7 @@
 #include "solvers/problem.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace drive_elements_test {
 
 using testing::ElementProblem;
 using testing::Errors;
@@ -196,5 +196,5 @@ TEST(BlockElement, ASofterLineStartsWithTheHoldsForce) {
   EXPECT_NEAR(hook_load(start + further) - hook_load(start), -line_stiffness * further, 1e-6 * line_stiffness * further);
 }
 
-}  // namespace
+}  // namespace drive_elements_test
 }  // namespace drillflex::model

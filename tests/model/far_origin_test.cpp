@@ -13,7 +13,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace far_origin_test {
 
 TEST(FarOrigin, CouplingStrainsDoNotDependOnWhereTheStringIs) {
   cms::ReductionCache cache;
@@ -57,5 +57,5 @@ TEST(FarOrigin, CouplingStrainsDoNotDependOnWhereTheStringIs) {
   EXPECT_LT(largest, 2e-14);
 }
 
-}  // namespace
+}  // namespace far_origin_test
 }  // namespace drillflex::model

@@ -18,7 +18,7 @@
 #include "solvers/problem.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace fluid_inertia_test {
 
 // A hollow rod (OD 3 in, ID 1 in) of 3 bodies in a straight vertical 6 in hole, a viscous fluid of
 // 1200 kg/m³ inside and out, no gravity; its transient model's fluid lumps taken at 10 rad/s.
@@ -242,5 +242,5 @@ TEST(FluidInertia, MassAtRestIsTheLinearAnalysesMass) {
   EXPECT_LT(solvers::RelativeMatrixError(transient, linear), 1e-13);
 }
 
-}  // namespace
+}  // namespace fluid_inertia_test
 }  // namespace drillflex::model

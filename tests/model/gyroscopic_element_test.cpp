@@ -14,7 +14,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace gyroscopic_element_test {
 
 using testing::RodInput;
 
@@ -86,5 +86,5 @@ TEST(GyroscopicElement, RigidRodTiltingCarriesThePolarMomentOfInertia) {
   EXPECT_EQ(c.force.head<3>().norm(), 0.0);
 }
 
-}  // namespace
+}  // namespace gyroscopic_element_test
 }  // namespace drillflex::model

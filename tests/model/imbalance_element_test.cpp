@@ -12,7 +12,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace imbalance_element_test {
 
 constexpr double kImbalance = 0.05;  // kg·m
 
@@ -80,5 +80,5 @@ TEST(ImbalanceElement, JacobiansMatchCentralDifferences) {
   EXPECT_LT(errors.damping, 1e-6);
 }
 
-}  // namespace
+}  // namespace imbalance_element_test
 }  // namespace drillflex::model

@@ -17,7 +17,7 @@
 #include "core/dense_eigen.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace inertia_test {
 
 using testing::RodInput;
 
@@ -354,5 +354,5 @@ TEST(InertiaModel, GyroscopicForcesDoNoWork) {
   }
 }
 
-}  // namespace
+}  // namespace inertia_test
 }  // namespace drillflex::model

@@ -8,7 +8,7 @@
 #include "solvers/problem.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace jacobian_test {
 
 using testing::PerturbedPositions;
 using testing::RodInput;
@@ -96,11 +96,11 @@ INSTANTIATE_TEST_SUITE_P(Model, JacobianTest,
                            return name;
                          });
 
-}  // namespace
+}  // namespace jacobian_test
 }  // namespace drillflex::model
 
 namespace drillflex::model {
-namespace {
+namespace jacobian_test {
 
 // The elastic forces of one body at large modal amplitudes (where the foreshortening term of the
 // axial strain matters) against central differences, and the force as the gradient of the energy.
@@ -169,11 +169,11 @@ TEST(ElasticForces, BentBodyWithFreeAxialEndCarriesNoAxialForce) {
   EXPECT_LT(std::abs(BodyAxialForce(body, pose)), 1e-9 * bent_only);
 }
 
-}  // namespace
+}  // namespace jacobian_test
 }  // namespace drillflex::model
 
 namespace drillflex::model {
-namespace {
+namespace jacobian_test {
 
 // The body's torque (body_dynamics.hpp BodyTorque) of a uniform twist θx′ = τ is GJ τ: the body
 // twisted by TwistKeepingShape's elastic twist rate (its modes fitted to θx,k = τ (x_k − x_mid)).
@@ -190,5 +190,5 @@ TEST(ElasticForces, UniformTwistCarriesTorqueGJTimesTwistRate) {
   EXPECT_NEAR(BodyAxialForce(body, pose), 0.0, 1e-6);  // N: a twist does not stretch it
 }
 
-}  // namespace
+}  // namespace jacobian_test
 }  // namespace drillflex::model

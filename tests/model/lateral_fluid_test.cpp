@@ -9,7 +9,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace lateral_fluid_test {
 
 // A hollow rod (OD 3 in, ID 1 in) of 4 bodies in a straight vertical 6 in hole (a well), fluid
 // 1200 kg/m³ inside and out, gravity off.
@@ -86,5 +86,5 @@ TEST(LateralFluid, ViscousAnnulusFollowsChenWambsganssAtTheFrequency) {
   EXPECT_NEAR(w.dot(bore.mass * w), 1200.0 * kPi * 0.0127 * 0.0127 * length, 1e-9);
 }
 
-}  // namespace
+}  // namespace lateral_fluid_test
 }  // namespace drillflex::model

@@ -13,7 +13,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace nodal_loads_test {
 
 TEST(NodalLoadElement, ResidualWithoutTheNodeLoopIsTheNodeSum) {
   cms::ReductionCache cache;
@@ -44,11 +44,11 @@ TEST(NodalLoadElement, ResidualWithoutTheNodeLoopIsTheNodeSum) {
       << "summed " << summed.force.transpose() << "\nlooped " << looped.force.transpose();
 }
 
-}  // namespace
+}  // namespace nodal_loads_test
 }  // namespace drillflex::model
 
 namespace drillflex::model {
-namespace {
+namespace nodal_loads_test {
 
 // The axial force's gradient inside a body (nodal_loads.hpp): with random forces at every node (so
 // the axial components vary along the body) on a turned, bent body, the element's force and its
@@ -136,5 +136,5 @@ TEST(NodalLoadElement, AxialGradientEnergyIsTheWorkThroughTheShortening) {
   }
 }
 
-}  // namespace
+}  // namespace nodal_loads_test
 }  // namespace drillflex::model

@@ -20,7 +20,7 @@
 #include "core/dense_eigen.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace rotation_test {
 
 using testing::RotateRigidly;
 using testing::RotateVelocities;
@@ -268,5 +268,5 @@ TEST(Rotation, CantileverStaticDeflectionInvariantUnderPlacement) {
   }
 }
 
-}  // namespace
+}  // namespace rotation_test
 }  // namespace drillflex::model

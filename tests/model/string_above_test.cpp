@@ -16,7 +16,7 @@
 #include "well/trajectory.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace string_above_test {
 
 using testing::ElementProblem;
 using testing::JacobianErrors;
@@ -180,5 +180,5 @@ TEST(StringAboveElement, JacobianMatchesCentralDifferences) {
   }
 }
 
-}  // namespace
+}  // namespace string_above_test
 }  // namespace drillflex::model

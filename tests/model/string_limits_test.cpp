@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace drillflex::model {
-namespace {
+namespace string_limits_test {
 
 constexpr double kInch = 0.0254;               // m
 constexpr double kPoundForce = 4.4482216152605;  // N
@@ -76,5 +76,5 @@ TEST(StringLimits, DawsonPaslayAndChenLoadsByHand) {
   EXPECT_EQ(SinusoidalBucklingLoad(stiffness, 250.0, 0.0, 0.9375 * kInch), 0.0);  // vertical: none
 }
 
-}  // namespace
+}  // namespace string_limits_test
 }  // namespace drillflex::model

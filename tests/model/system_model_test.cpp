@@ -11,7 +11,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace system_model_test {
 
 TEST(SystemModelThreads, ResidualAndIterationMatrixIdenticalOnOneAndTwoThreads) {
   ModelInput input = testing::RodInput(48, 4, 4);
@@ -56,5 +56,5 @@ TEST(SystemModel, DescribeCoordinateNamesTheBodyAndTheCoordinate) {
   EXPECT_EQ(built.system.DescribeCoordinate(built.system.num_velocities()), fmt::format("coordinate {}", built.system.num_velocities()));
 }
 
-}  // namespace
+}  // namespace system_model_test
 }  // namespace drillflex::model

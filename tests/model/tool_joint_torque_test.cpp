@@ -10,7 +10,7 @@
 #include "field_units.hpp"
 
 namespace drillflex::model::test {
-namespace {
+namespace tool_joint_torque_test {
 
 // NC50 (C 5.0417 in, L_pc 4.5 in, Q_c 5.3125 in, V-0.038R: H 0.216005 in, S_rs 0.038 in, 4 TPI, 2 in/ft) on
 // a 6-5/8 in × 3-1/4 in tool joint, 120 ksi, f 0.08. By hand (Python):
@@ -106,5 +106,5 @@ TEST(ToolJointTorque, CommonNamesAreTheNumberedConnections) {
   EXPECT_FALSE(FindRotaryConnection("5-1/2 IF"));
 }
 
-}  // namespace
+}  // namespace tool_joint_torque_test
 }  // namespace drillflex::model::test

@@ -11,7 +11,7 @@
 #include "model_test_support.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace twist_increment_test {
 
 // The turn's generator J of a round rod's modes squares to −P_⊥ when the modes span a subspace
 // closed under turns about x (both modes of each bending pair): then G(φ) is the exact turn.
@@ -142,5 +142,5 @@ TEST_F(BentRod, IterationMatrixAfterATurnIsTheTurnedOneBefore) {
   }
 }
 
-}  // namespace
+}  // namespace twist_increment_test
 }  // namespace drillflex::model

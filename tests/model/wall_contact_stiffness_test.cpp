@@ -6,7 +6,7 @@
 #include "model/build_defaults.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace wall_contact_stiffness_test {
 
 constexpr double kInch = 0.0254;
 
@@ -51,5 +51,5 @@ TEST(WallContactStiffness, BodyCircleCarriesItsOwnLength) {
   EXPECT_NEAR(WallContactStiffness(soft, 0.05, 0.67, 2.55e-3, kContactWeightSpan), 1.20127e5, 1.0);
 }
 
-}  // namespace
+}  // namespace wall_contact_stiffness_test
 }  // namespace drillflex::model

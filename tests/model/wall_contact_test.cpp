@@ -27,7 +27,7 @@
 #include "solvers/problem.hpp"
 
 namespace drillflex::model {
-namespace {
+namespace wall_contact_test {
 
 // An element of another model whose bodies are copies of this model's (the builder's couplings,
 // supports and loads, reused without rebuilding them).
@@ -697,11 +697,11 @@ TEST(WallContactStaticTest, PinnedStringInAHorizontalHoleMatchesBeamTheory) {
   EXPECT_NEAR(middle_force / (q * element), 1.0, 1e-3);
 }
 
-}  // namespace
+}  // namespace wall_contact_test
 }  // namespace drillflex::model
 
 namespace drillflex::model {
-namespace {
+namespace wall_contact_test {
 
 // The wall contacts' friction regularization velocity (builder.hpp kFrictionRegularizationSpin): by
 // default Ω_ε R_c for each contact circle, its own radius; the case's friction_velocity replaces it.
@@ -732,5 +732,5 @@ TEST(WallContactBuilder, FrictionVelocityIsTheSpinTimesTheContactRadiusUnlessGiv
   for (const auto& [radius, velocity] : velocities(input)) EXPECT_DOUBLE_EQ(velocity, 2.5e-3);
 }
 
-}  // namespace
+}  // namespace wall_contact_test
 }  // namespace drillflex::model

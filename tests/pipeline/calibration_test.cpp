@@ -13,7 +13,7 @@
 #include "pipeline/calibration.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace calibration_test {
 
 // A 3-D well (a build to 40° while turning 30°, then a hold), cased to 700 m MD, open below; 5 in pipe
 // on a 6-3/4 in collar section.
@@ -153,5 +153,5 @@ TEST(Calibration, StudentQuantileMatchesItsTable) {
   EXPECT_NEAR(StudentQuantile975(100000), 1.9600, 1e-4);
 }
 
-}  // namespace
+}  // namespace calibration_test
 }  // namespace drillflex::pipeline

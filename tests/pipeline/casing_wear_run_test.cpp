@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace drillflex::pipeline {
-namespace {
+namespace casing_wear_run_test {
 
 // 5 in pipe (0.127 × 0.1086 m) with 6-5/8 in joints (0.1683 × 0.0826 m, 0.5 m every 9 m) in 0.2159 m casing
 // (wall 10 mm) at 30°, 1200 kg/m³ mud, g 9.81, steel 7850 kg/m³: by hand (Python) w = 270.978595 N/m,
@@ -41,5 +41,5 @@ limits: {wear: {factor: 5e-10 1/psi, rotating_time: 100 h}}
   }
 }
 
-}  // namespace
+}  // namespace casing_wear_run_test
 }  // namespace drillflex::pipeline

@@ -11,7 +11,7 @@
 #include "../sweep_case.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace check_before_solving_test {
 
 // The sweep tests' case (collars and pipe in a straight 30° hole) at 60 rpm with `vibration` as its
 // vibration settings, run: the InputError's message, or "" when it ran; counts the analyses that finished.
@@ -46,5 +46,5 @@ TEST(CheckBeforeSolving, AVibrationWithoutExcitationsRunsOnTheDefaults) {
   EXPECT_EQ(finished, 2);  // the static it starts from, then the vibration
 }
 
-}  // namespace
+}  // namespace check_before_solving_test
 }  // namespace drillflex::pipeline

@@ -8,7 +8,7 @@
 #include "pipeline/drilling_regime.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace drilling_regime_test {
 
 constexpr double kBitSpeed = 12.0;    // rad/s
 constexpr double kClearance = 0.05;   // m
@@ -87,5 +87,5 @@ TEST(DrillingRegime, NoWhirlInsideHalfTheClearanceLessThanATurnSwingingThroughTh
   EXPECT_EQ(ClassifyDrillingRegime(MadeUpRun(0.0, kClearance, -20.0), {std::nan("")}).whirl, Whirl::None);
 }
 
-}  // namespace
+}  // namespace drilling_regime_test
 }  // namespace drillflex::pipeline

@@ -15,7 +15,7 @@
 #include "io/case.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace hook_load_test {
 
 constexpr double kSteelDensity = 7850.0;  // kg/m³ (fe/material.hpp built-in steel)
 constexpr double kMudDensity = 1200.0;    // kg/m³
@@ -104,5 +104,5 @@ TEST(HookLoad, WithAWobOrMoreThanTheStringWeighsIsBadInput) {
   }
 }
 
-}  // namespace
+}  // namespace hook_load_test
 }  // namespace drillflex::io

@@ -11,7 +11,7 @@
 #include "pipeline/case_run.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace keep_finished_test {
 
 // tests/cases/keep-finished.yaml: its buckling fails after its static and modes.
 io::Case KeepFinishedCase() { return io::ReadCase(DRILLFLEX_SOURCE_DIR "/tests/cases/keep-finished.yaml"); }
@@ -62,5 +62,5 @@ TEST(KeepFinished, AFailedStaticNamesTheModesItLeavesUnrun) {
   EXPECT_EQ(results.failures[1].message, "not run: it starts from the static equilibrium, which failed");
 }
 
-}  // namespace
+}  // namespace keep_finished_test
 }  // namespace drillflex::pipeline

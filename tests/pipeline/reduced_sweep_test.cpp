@@ -25,7 +25,7 @@
 #include "../../bench/vibration_sweep.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace reduced_sweep_test {
 
 
 constexpr double kRpm = kPi / 30.0;
@@ -96,5 +96,5 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   EXPECT_LT(LargestRelativeError(fallback.max_lateral_displacement, direct.max_lateral_displacement), 1e-9);
 }
 
-}  // namespace
+}  // namespace reduced_sweep_test
 }  // namespace drillflex::io

@@ -17,7 +17,7 @@
 #include "pipeline/roadmap.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace roadmap_test {
 
 constexpr double kSteelDensity = 7850.0;  // kg/m³ (fe/material.hpp built-in steel)
 constexpr double kMudDensity = 1200.0;    // kg/m³
@@ -333,5 +333,5 @@ TEST(Roadmap, CasedAndOpenHoleEachDragWithTheirOwnFriction) {
   }
 }
 
-}  // namespace
+}  // namespace roadmap_test
 }  // namespace drillflex::pipeline

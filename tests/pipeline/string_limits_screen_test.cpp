@@ -13,7 +13,7 @@
 #include "pipeline/roadmap.hpp"
 
 namespace drillflex::analyses {
-namespace {
+namespace string_limits_screen_test {
 
 // Three 9 m collars, then 9 m joints of 5 in pipe (0.127 × 0.1086 m) with 6-5/8 in tool joints
 // (0.1683 × 0.0826 m, 0.5 m a joint) in an 8-1/2 in (0.2159 m) hole at 30°, 1200 kg/m³ mud, g 9.81.
@@ -207,5 +207,5 @@ TEST(StringLimitsScreen, RoadmapPointZonesOfEveryRunByHand) {
   }
 }
 
-}  // namespace
+}  // namespace string_limits_screen_test
 }  // namespace drillflex::analyses

@@ -16,7 +16,7 @@
 #include "../sweep_case.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace sweep_test {
 
 namespace fs = std::filesystem;
 
@@ -206,11 +206,11 @@ TEST(Sweep, AResumedSweepEndsWithTheSameTable) {
   EXPECT_THROW(RunSweep(base, other, {resumed.string(), 1, false, true, {}}), InputError);
 }
 
-}  // namespace
+}  // namespace sweep_test
 }  // namespace drillflex::pipeline
 
 namespace drillflex::pipeline {
-namespace {
+namespace sweep_test {
 
 // RunTasksOnThreads hands every task out once, and an exception a task throws on a worker thread comes
 // back to the caller instead of ending the process.
@@ -225,5 +225,5 @@ TEST(RunTasksOnThreads, RunsEachTaskOnceAndRethrowsATasksException) {
                SolverError);
 }
 
-}  // namespace
+}  // namespace sweep_test
 }  // namespace drillflex::pipeline

@@ -13,7 +13,7 @@
 #include "pipeline/case_run.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace transient_limits_test {
 
 TEST(TransientLimits, EverySampleReadWithoutVtkAgainstTheHandComputation) {
   const io::Case c = io::ParseCase(R"(name: held collar
@@ -50,5 +50,5 @@ analyses:
   EXPECT_EQ(stations["helical_buckling_utilisation"][0], 0.0);
 }
 
-}  // namespace
+}  // namespace transient_limits_test
 }  // namespace drillflex::pipeline

@@ -20,7 +20,7 @@
 #include "pipeline/case_run.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace transient_threads_test {
 
 
 std::string ReadFile(const std::filesystem::path& path) {
@@ -91,5 +91,5 @@ TEST(TransientThreads, RotatingBundledExampleIsIdenticalOnOneAndTwoThreads) {
   EXPECT_TRUE(one.result.final_v == two.result.final_v);
 }
 
-}  // namespace
+}  // namespace transient_threads_test
 }  // namespace drillflex::io

@@ -17,7 +17,7 @@
 #include "pipeline/case_run.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace unresolved_forces_test {
 
 constexpr double kSteelDensity = 7850.0;  // kg/m³ (fe/material.hpp built-in steel)
 constexpr double kGravity = 9.81;         // m/s² (the case's default with a well)
@@ -87,5 +87,5 @@ TEST(UnresolvedForces, BetweenAThousandthAndAHundredthOfTheLoadsAWarningSaysHowW
   EXPECT_NO_THROW(analyses::CheckForcesResolved(built, result));
 }
 
-}  // namespace
+}  // namespace unresolved_forces_test
 }  // namespace drillflex::pipeline

@@ -22,7 +22,7 @@
 #include "model/builder.hpp"
 
 namespace drillflex::io {
-namespace {
+namespace vtk_files_test {
 
 namespace fs = std::filesystem;
 
@@ -404,5 +404,5 @@ TEST(VtkFiles, TransientFramesAreACollectionOfStringFilesAtTheirTimes) {
   EXPECT_FALSE(fs::exists(empty / "string_0000.vtp"));
 }
 
-}  // namespace
+}  // namespace vtk_files_test
 }  // namespace drillflex::io

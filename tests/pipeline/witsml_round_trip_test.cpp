@@ -19,7 +19,7 @@
 #include "pipeline/case_run.hpp"
 
 namespace drillflex {
-namespace {
+namespace witsml_round_trip_test {
 
 namespace fs = std::filesystem;
 using test_witsml::Version;
@@ -165,5 +165,5 @@ TEST(WitsmlRoundTrip, ComponentsComeBackAsTheCaseGaveThem) {
   }
 }
 
-}  // namespace
+}  // namespace witsml_round_trip_test
 }  // namespace drillflex

@@ -13,7 +13,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace band_lu_test {
 
 // A random n×n matrix with entries in [−1, 1] on the band −lower..upper and `diagonal` added on
 // the diagonal (0: no dominance, so partial pivoting has to interchange rows).
@@ -79,5 +79,5 @@ TEST(BandLuSolver, RejectsSingularAndNonFiniteMatrices) {
   EXPECT_THROW(solver.Factorize(b), SolverError);
 }
 
-}  // namespace
+}  // namespace band_lu_test
 }  // namespace drillflex::solvers

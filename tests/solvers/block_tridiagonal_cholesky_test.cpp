@@ -14,7 +14,7 @@
 #include "solvers/shifted_cholesky.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace block_tridiagonal_cholesky_test {
 
 // A symmetric block-tridiagonal matrix (blocks of `sizes`), its diagonal raised by `diagonal`.
 MatX RandomBlockTridiagonal(const std::vector<Eigen::Index>& starts, double diagonal, unsigned seed) {
@@ -87,5 +87,5 @@ TEST(BlockTridiagonalCholesky, RefusesAPatternBeyondTheNeighbouringBlocks) {
   EXPECT_FALSE(blocks.Analyze(SparseMat(RandomBlockTridiagonal(kStarts, 12.0, 4).sparseView()), {0, 4, 30}));
 }
 
-}  // namespace
+}  // namespace block_tridiagonal_cholesky_test
 }  // namespace drillflex::solvers

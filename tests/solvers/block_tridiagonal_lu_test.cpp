@@ -20,7 +20,7 @@
 #include "random_block_tridiagonal.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace block_tridiagonal_lu_test {
 
 using Complex = std::complex<double>;
 using ComplexSparse = Eigen::SparseMatrix<Complex>;
@@ -205,5 +205,5 @@ TEST(HarmonicBlockLu, AnUndampedChainAtItsNaturalFrequenciesIsStillAClearError) 
   }
 }
 
-}  // namespace
+}  // namespace block_tridiagonal_lu_test
 }  // namespace drillflex::solvers

@@ -11,7 +11,7 @@
 #include "toy_problems.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace buckling_test {
 
 using testing::BlockDiagonal;
 using testing::ChainStiffness;
@@ -198,5 +198,5 @@ TEST(SolveBuckling, RequiresAPositiveDefiniteStiffness) {
   EXPECT_THROW(SolveBucklingDense(indefinite, ScaledIdentity(700, -1.0), 1), SolverError);
 }
 
-}  // namespace
+}  // namespace buckling_test
 }  // namespace drillflex::solvers

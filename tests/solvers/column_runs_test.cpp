@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace column_runs_test {
 
 TEST(ColumnRuns, MultipliesAsEigensSparseProductToTheLastBit) {
   std::mt19937 rng(7);
@@ -31,5 +31,5 @@ TEST(ColumnRuns, MultipliesAsEigensSparseProductToTheLastBit) {
   EXPECT_THROW(runs.Multiply(SparseMat(dense.topRows(39).sparseView()), x), LogicError);
 }
 
-}  // namespace
+}  // namespace column_runs_test
 }  // namespace drillflex::solvers

@@ -21,7 +21,7 @@
 #include "toy_problems.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace eigen_test {
 
 using testing::BlockDiagonal;
 using testing::ChainStiffness;
@@ -241,5 +241,5 @@ TEST(SolveDampedModes, ProportionalDampingOfATwoDofChain) {
               1e-10);
 }
 
-}  // namespace
+}  // namespace eigen_test
 }  // namespace drillflex::solvers

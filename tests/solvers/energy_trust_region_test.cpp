@@ -14,7 +14,7 @@
 #include "solvers/newton.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace energy_trust_region_test {
 
 // A Euclidean problem from an energy, its gradient and Hessian (dense, small), unit masses.
 class EnergyProblem final : public StaticProblem {
@@ -254,5 +254,5 @@ TEST(MinimizeEnergy, AProblemWithoutAnEnergyIsRefused) {
   EXPECT_THROW(MinimizeEnergy(problem, VecX::Ones(1)), LogicError);
 }
 
-}  // namespace
+}  // namespace energy_trust_region_test
 }  // namespace drillflex::solvers

@@ -18,7 +18,7 @@
 #include "core/dense_eigen.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace generalized_alpha_test {
 
 using testing::DuffingOscillator;
 using testing::LinearOscillator;
@@ -403,11 +403,11 @@ TEST(GeneralizedAlpha, StepLimitStopsWithAMessage) {
   EXPECT_THROW(integrator.AdvanceTo(1.0), SolverError);
 }
 
-}  // namespace
+}  // namespace generalized_alpha_test
 }  // namespace drillflex::solvers
 
 namespace drillflex::solvers {
-namespace {
+namespace generalized_alpha_test {
 
 // The four factorizations of the iteration matrix (dense LU up to dense_limit, block tridiagonal on
 // the problem's coordinate blocks, LAPACK's banded LU, SparseLinearSolver for a matrix whose band is
@@ -448,5 +448,5 @@ TEST(GeneralizedAlpha, DenseBlockBandedAndSparseFactorizationsGiveTheSameMotion)
   EXPECT_LT((sparse - dense).norm(), 1e-10 * dense.norm());
 }
 
-}  // namespace
+}  // namespace generalized_alpha_test
 }  // namespace drillflex::solvers

@@ -20,7 +20,7 @@
 #include "core/dense_eigen.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace harmonic_test {
 
 using Complex = std::complex<double>;
 using testing::ChainStiffness;
@@ -276,5 +276,5 @@ TEST(Harmonic, FrequencyTermsEqualASystemThatHoldsThem) {
   EXPECT_THROW(split.Solve(1.0, Ones(4), 0.0, {{1.0, 0.0}}), LogicError);
 }
 
-}  // namespace
+}  // namespace harmonic_test
 }  // namespace drillflex::solvers

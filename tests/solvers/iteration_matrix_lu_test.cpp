@@ -13,7 +13,7 @@
 #include "random_block_tridiagonal.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace iteration_matrix_lu_test {
 
 using Method = IterationMatrixLu::Method;
 
@@ -107,5 +107,5 @@ TEST(IterationMatrixLu, RefusesNonFiniteAndSingularMatrices) {
   EXPECT_THROW(lu.Factorize(singular), SolverError);
 }
 
-}  // namespace
+}  // namespace iteration_matrix_lu_test
 }  // namespace drillflex::solvers

@@ -12,7 +12,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace linear_solver_test {
 
 // A random n×n matrix with the given half bandwidth (or random positions when scattered),
 // diagonally dominant; symmetric if asked.
@@ -133,5 +133,5 @@ TEST(SparseLinearSolver, ThrowsSolverErrorOnSingularOrNonFiniteMatrices) {
   EXPECT_THROW(solver.Solve(VecX::Ones(2)), LogicError);  // nothing factorized
 }
 
-}  // namespace
+}  // namespace linear_solver_test
 }  // namespace drillflex::solvers

@@ -14,7 +14,7 @@
 #include "toy_problems.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace newton_test {
 
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -520,5 +520,5 @@ TEST(SolveStatic, ToleranceNeverBelowTheResidualsRoundoffFloor) {
   EXPECT_THROW(SolveStatic(untold, start, options), SolverError);
 }
 
-}  // namespace
+}  // namespace newton_test
 }  // namespace drillflex::solvers

@@ -9,7 +9,7 @@
 #include "toy_problems.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace problem_test {
 
 using testing::SpringChain;
 using testing::SpringHeldRigidBody;
@@ -92,5 +92,5 @@ TEST(RelativeMatrixError, IsFrobeniusDifferenceOverLargerNorm) {
   EXPECT_THROW(RelativeMatrixError(MatX::Zero(2, 2), MatX::Zero(3, 3)), LogicError);
 }
 
-}  // namespace
+}  // namespace problem_test
 }  // namespace drillflex::solvers

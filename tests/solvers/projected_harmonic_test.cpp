@@ -15,7 +15,7 @@
 #include "toy_problems.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace projected_harmonic_test {
 
 using testing::ChainStiffness;
 using testing::ScaledIdentity;
@@ -141,5 +141,5 @@ TEST(ProjectedHarmonic, RejectsInconsistentInput) {
   EXPECT_THROW(reduced.Solve(1.0, ComplexMat::Ones(kMasses, 1), 0.0, {}), LogicError);
 }
 
-}  // namespace
+}  // namespace projected_harmonic_test
 }  // namespace drillflex::solvers

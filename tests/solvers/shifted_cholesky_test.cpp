@@ -12,7 +12,7 @@
 #include "solvers/shifted_cholesky.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace shifted_cholesky_test {
 
 // A random symmetric-pattern matrix: block tridiagonal (blocks of 6) with, when `wide`, couplings
 // between the first and the last block too (a band as wide as the matrix). Unsymmetric values.
@@ -139,5 +139,5 @@ TEST_P(ShiftedCholeskyTest, OuterProductsSwitchOnAndBack) {
 INSTANTIATE_TEST_SUITE_P(BandedWideAndByBlocks, ShiftedCholeskyTest,
                          ::testing::Values(Path::kBanded, Path::kWide, Path::kByBlocks));
 
-}  // namespace
+}  // namespace shifted_cholesky_test
 }  // namespace drillflex::solvers

@@ -9,7 +9,7 @@
 #include "solvers/small_lu.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace small_lu_test {
 
 using ComplexMat = Eigen::MatrixXcd;
 
@@ -64,5 +64,5 @@ TEST(SmallComplexLu, ZeroColumnLeavesAZeroPivot) {
   EXPECT_TRUE(lu.matrixLU().allFinite());
 }
 
-}  // namespace
+}  // namespace small_lu_test
 }  // namespace drillflex::solvers

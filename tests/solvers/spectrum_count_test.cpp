@@ -12,7 +12,7 @@
 #include "toy_problems.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace spectrum_count_test {
 
 using testing::ChainStiffness;
 
@@ -67,5 +67,5 @@ TEST(SpectrumCount, AShiftOnAnEigenvalueGivesNoCount) {
   EXPECT_EQ(CountEigenvaluesBelow(k, m, 5.0), 1);
 }
 
-}  // namespace
+}  // namespace spectrum_count_test
 }  // namespace drillflex::solvers

@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::solvers {
-namespace {
+namespace symmetric_block_matrix_test {
 
 const std::vector<Eigen::Index> kStarts = {0, 4, 9, 12, 18, 20};
 
@@ -88,5 +88,5 @@ TEST(SymmetricBlockMatrix, RefusesAShapeBeyondTheNeighbouringBlocks) {
   EXPECT_FALSE(blocks.Analyze(SparseMat(b.sparseView(0.0, 0.0)), kStarts, true));
 }
 
-}  // namespace
+}  // namespace symmetric_block_matrix_test
 }  // namespace drillflex::solvers

@@ -15,7 +15,7 @@
 #include "units/units.hpp"
 
 namespace drillflex::units {
-namespace {
+namespace units_test {
 
 using ::testing::HasSubstr;
 
@@ -526,5 +526,5 @@ TEST(Systems, ParseAndName) {
   EXPECT_THROW(ParseSystem(""), UnitError);
 }
 
-}  // namespace
+}  // namespace units_test
 }  // namespace drillflex::units

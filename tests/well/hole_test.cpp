@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::well {
-namespace {
+namespace hole_test {
 
 // Casing 0.25 m to 1000 m, a washout growing linearly 0.22 → 0.30 m over 1000–1100 m, a
 // narrowing taper 0.24 → 0.20 m over 1100–1500 m, then 0.2159 m (8.5 in) open hole.
@@ -86,5 +86,5 @@ TEST(HoleProfile, RejectsInvalidSections) {
   EXPECT_THROW(HoleProfile({{100.0, 0.2, 0.0}, {std::nullopt, 0.2, std::nullopt}}), LogicError);
 }
 
-}  // namespace
+}  // namespace hole_test
 }  // namespace drillflex::well

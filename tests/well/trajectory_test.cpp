@@ -15,7 +15,7 @@
 #include "core/error.hpp"
 
 namespace drillflex::well {
-namespace {
+namespace trajectory_test {
 
 constexpr double kFoot = 0.3048;
 
@@ -441,5 +441,5 @@ TEST(Trajectory, SingleStationIsAStraightRay) {
   EXPECT_EQ(path.ClosestMd(Vec3(5, 0, 30), 0.0), 50.0);
 }
 
-}  // namespace
+}  // namespace trajectory_test
 }  // namespace drillflex::well
