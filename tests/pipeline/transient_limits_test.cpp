@@ -16,19 +16,7 @@ namespace drillflex::pipeline {
 namespace {
 
 TEST(TransientLimits, EverySampleReadWithoutVtkAgainstTheHandComputation) {
-  const io::Case c = io::ParseCase(R"(name: held collar
-units: SI
-string:
-  - {type: collar, od: 0.0762, id: 0.03, length: 5.08, yield: 500e6, makeup_torque: 20000}
-supports:
-  - {at: 0, fix: all}
-loads:
-  - {at: 5.08, force: [200000, 0, 0], moment: [5000, 0, 0]}
-model: {body_length: 2.54, elements_per_body: 10, modes_per_body: 6}
-analyses:
-  transient: {duration: 0.01 s, output_interval: 0.002 s}
-)",
-                                   "held.yaml");
+  const io::Case c = io::ReadCase(DRILLFLEX_SOURCE_DIR "/tests/cases/held-collar.yaml");
   const CaseResults results = RunCase(c, AnalysisRequest::Only(Analysis::Transient));
   ASSERT_TRUE(results.transient);
   EXPECT_TRUE(results.transient->frame_q.empty());  // no VTK frames asked for
