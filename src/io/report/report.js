@@ -975,13 +975,15 @@
         wearCell.appendChild(value(p.wear_groove_depth, ru.wear_groove_depth, `${key}.wear_groove_depth`));
         wearCell.appendChild(document.createTextNode(` at MD ${num(p.wear_md, 6)} ${len}`));
         if (p.wear_utilisation !== null && p.wear_utilisation !== undefined) {
-          wearCell.appendChild(document.createTextNode(', of the wall '));
+          wearCell.appendChild(document.createTextNode(' (utilisation '));
           wearCell.appendChild(value(p.wear_utilisation, '', `${key}.wear_utilisation`));
+          wearCell.appendChild(document.createTextNode(' of the wall)'));
           if (p.wear_utilisation >= 1) beyond.push(`casing wear ${num(p.wear_utilisation, 3)} at MD ${num(p.wear_md, 6)} ${len} (bit ${num(p.bit_md, 6)} ${len}, μ ${num(p.friction, 3)})`);
         }
       } else {
         wearCell.textContent = '–';
       }
+      for (const cell of [zoneCell, fatigueCell, wearCell]) cell.setAttribute('style', 'text-align: left');
       rows.push(el('tr', {}, [el('td', {text: `${num(p.bit_md, 6)} ${len}`}), el('td', {text: num(p.friction, 3)}), zoneCell, fatigueCell, wearCell]));
     });
     if (!rows.length) return;
