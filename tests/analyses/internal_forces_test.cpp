@@ -133,10 +133,10 @@ TEST(InternalForces, BodyEndForcesAgreeWithTheCouplingForces) {
 // balances the torque T it carries with λ cos φ = T: the coupling, and the bodies' elastic twist on its
 // side, read T / cos φ, φ the relative twist of the two frames, which itself carries that torque:
 // φ = (T / cos φ) L_b/(G J) for bodies L_b long (solved here by fixed point). The rod (3 in solid,
-// G = E/2.6) under a tip torque of 5 kN·m in bodies of 2.54 m: φ = 0.047554 rad, the joint reads
-// 1/cos φ − 1 = 1.1321e-3 above T; in bodies of 1.27 m (φ/2) a quarter of that; under 10 kN·m four times
+// G = E/2.6) under a tip torque of 5 kN·m in bodies of 2.54 m: φ = 0.047559 rad, the joint reads
+// 1/cos φ − 1 = 1.1320e-3 above T; in bodies of 1.27 m (φ/2) a quarter of that; under 10 kN·m four times
 // as much; and the same with 200 kN of tension (no geometric stiffness of the tension enters a straight
-// shaft's torque). Asserted within 1 % of the predicted excess (measured 0.2 % at most).
+// shaft's torque). Asserted within 1 % of the predicted excess (measured 0.1 % at most).
 TEST(InternalForces, TheCouplingsSmallRotationStrainRaisesATwistedShaftsTorqueByOneOverCosPhi) {
   const double polar = kPi / 32.0 * std::pow(testing::kRodDiameter, 4);
   const double shear_modulus = 2.1e11 / 2.6;

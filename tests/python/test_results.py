@@ -217,8 +217,10 @@ def test_tendency_point_the_bit_steering() -> None:
 # tests/cases/held-collar.yaml (as tests/pipeline/transient_limits_test.cpp): a collar (3 in × 1.181 in)
 # clamped at its lower end, held under 200 kN of tension and 5 kN·m of torque at its top, rated 500 MPa
 # (design factor 1.25), make-up torque 20 kN·m. By hand: A = π/4 (0.0762² − 0.03²), J = π/32 (0.0762⁴ − 0.03⁴),
-# σ_vm = √((N/A)² + 3 (T (D/2)/J)²) = 114.5702 MPa: 0.2864255 of 400 MPa; the torque 5/20 = 0.25. Within
-# 2e-3: the model's section torque reads up to 1.2e-3 above the load's (docs/validation.md V11b).
+# σ_vm = √((N/A)² + 3 (T (D/2)/J)²) = 114.5702 MPa: 0.2864255 of 400 MPa; the torque 5/20 = 0.25. The model's
+# section torque reads up to 1/cos φ of the load's, φ = (T/cos φ) L_b/(G J) the relative twist of the two
+# bodies' frames (its couplings measure it by sin φ; docs/validation.md V11b): the utilisations lie between
+# the hand's at T and at T/cos φ.
 HELD_COLLAR = ROOT / "tests" / "cases" / "held-collar.yaml"
 
 
@@ -236,15 +238,24 @@ def test_transient_limits_typed_against_the_hand_computation() -> None:
     assert limits.s.shape == limits.md.shape == limits.component.shape
     assert set(limits.largest) == {"yield", "makeup_torque", "helical_buckling", "fatigue"}
     # Every station but the tip's (its forces are half an element in), at every sample.
-    assert np.allclose(limits.largest["yield"][:-1], stress, rtol=2e-3)
-    assert np.allclose(limits.largest["makeup_torque"][:-1], 0.25, rtol=2e-3)
-    assert np.allclose(limits.history["yield"], stress, rtol=2e-3)
+    phi = linear = 5e3 * 2.54 / (2.1e11 / 2.6 * polar)
+    for _ in range(50):
+        phi = linear / np.cos(phi)
+    high = np.sqrt(sigma**2 + 3 * (tau / np.cos(phi))**2) / (500e6 / 1.25)
+
+    def within(values: object, low: float, top: float) -> bool:
+        values = np.asarray(values)
+        return bool(np.all(values >= low * (1 - 1e-6)) and np.all(values <= top * (1 + 1e-6)))
+
+    assert within(limits.largest["yield"][:-1], stress, high)
+    assert within(limits.largest["makeup_torque"][:-1], 0.25, 0.25 / np.cos(phi))
+    assert within(limits.history["yield"], stress, high)
     assert np.all(np.isnan(limits.largest["helical_buckling"]))  # no well: no buckling screen
     assert np.all(np.isnan(limits.history["fatigue"]))  # not rotating
     assert limits.summary["helical_buckling"] is None and limits.summary["fatigue"] is None
     assert limits.closest == "yield"
-    assert limits.summary["yield"].utilisation == pytest.approx(stress, rel=2e-3)
-    assert limits.summary["makeup_torque"].utilisation == pytest.approx(0.25, rel=2e-3)
+    assert within(limits.summary["yield"].utilisation, stress, high)
+    assert within(limits.summary["makeup_torque"].utilisation, 0.25, 0.25 / np.cos(phi))
     assert 0.0 <= limits.summary["yield"].time <= 0.01
     assert not limits.largest["yield"].flags.writeable  # a view of the run's own storage
     # What results.json writes is the same envelope.
