@@ -184,6 +184,15 @@ class TransientResult(Result):
     ``whirl_angle``, ``contact_force``, ``bending_moment`` at the stations ``probe_s``;
     ``final_q``, ``final_v``, ``frame_times``, ``energy_drift``, ``rho_infinity`` and
     ``statistics`` (a Record: steps, rejections, Newton iterations, factorizations, step sizes).
+    ``limits``: the string's limits read at every output sample (results.json ``transient.limits``), a
+    Record: ``design_factor``; per station ``s``, ``md`` (m) and ``component`` (index in the string);
+    ``times`` (s, every sample read); ``largest``, ``when`` and ``history``: dicts by limit name
+    (``"yield"``, ``"makeup_torque"``, ``"helical_buckling"``, ``"fatigue"``) of arrays, each station's
+    largest utilisation over the samples and the time it was reached (s), and each sample's largest over
+    the stations (NaN where the limit does not apply); ``summary``: by limit name a Record (``limit``,
+    ``utilisation``, ``s``, ``md``, ``component``, ``time``) of the largest of all, or None where the limit
+    applies nowhere; ``closest``: the name of the closest limit (None: none applies). None when the run
+    read no limits.
     """
 
     analysis = "transient"
@@ -191,4 +200,9 @@ class TransientResult(Result):
     def __init__(self, run: _core.Run) -> None:
         fields = run.transient_fields()
         fields["statistics"] = Record(**fields["statistics"])
+        limits = fields["limits"]
+        if limits is not None:
+            limits["summary"] = {name: None if entry is None else Record(**entry)
+                                 for name, entry in limits["summary"].items()}
+            fields["limits"] = Record(**limits)
         super().__init__(run, fields)

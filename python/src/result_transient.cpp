@@ -3,6 +3,7 @@
 // integration's figures (SI).
 #include <pybind11/stl.h>
 
+#include "analyses/limits_envelope.hpp"
 #include "analyses/transient_analysis.hpp"
 #include "arrays.hpp"
 
@@ -24,11 +25,53 @@ py::array ProbeSeries(const std::vector<TransientSample>& samples, std::size_t p
   return series;
 }
 
+// Column `limit` of a table of LimitValues (one row a station or a sample): a strided view.
+py::array LimitColumn(const std::vector<analyses::LimitValues>& rows, std::size_t limit, const py::capsule& owner) {
+  return View<double>({static_cast<py::ssize_t>(rows.size())}, {sizeof(analyses::LimitValues)},
+                      rows.empty() ? nullptr : &rows.front()[limit], owner);
+}
+
+// The string's limits at every sample (analyses::LimitsEnvelope), SI: per limit name the stations'
+// largest utilisation and when, the history along the samples, and the summary entry (None: the limit
+// applies nowhere).
+py::object TransientLimits(const std::optional<analyses::LimitsEnvelope>& envelope, const py::capsule& owner) {
+  if (!envelope) return py::none();
+  py::dict largest, when, history, summary;
+  for (std::size_t k = 0; k < analyses::kEnvelopeLimits; ++k) {
+    const char* name = analyses::EnvelopeLimitName(k);
+    largest[name] = LimitColumn(envelope->largest, k, owner);
+    when[name] = LimitColumn(envelope->when, k, owner);
+    history[name] = LimitColumn(envelope->history, k, owner);
+    const analyses::LimitUtilisation& entry = envelope->summary[k];
+    if (entry.limit.empty()) {
+      summary[name] = py::none();
+      continue;
+    }
+    summary[name] = py::dict(py::arg("limit") = entry.limit, py::arg("utilisation") = entry.utilisation,
+                             py::arg("s") = entry.s, py::arg("md") = entry.md, py::arg("component") = entry.component,
+                             py::arg("time") = envelope->summary_time[k]);
+  }
+  const std::size_t closest = envelope->closest();
+  py::dict fields;
+  fields["design_factor"] = envelope->design_factor;
+  fields["s"] = FieldView(envelope->stations, &analyses::NodeLimits::s, owner);
+  fields["md"] = FieldView(envelope->stations, &analyses::NodeLimits::md, owner);
+  fields["component"] = FieldView(envelope->stations, &analyses::NodeLimits::component, owner);
+  fields["times"] = VectorView(envelope->times, owner);
+  fields["largest"] = largest;
+  fields["when"] = when;
+  fields["history"] = history;
+  fields["summary"] = summary;
+  fields["closest"] = closest < analyses::kEnvelopeLimits ? py::object(py::str(analyses::EnvelopeLimitName(closest)))
+                                                          : py::object(py::none());
+  return fields;
+}
+
 }  // namespace
 
 void BindTransientResult(py::class_<RunHandle>& run) {
   DefFields(run, "transient_fields", &pipeline::CaseResults::transient,
-            [](const RunHandle&, const analyses::TransientResult& result, const py::capsule& owner) {
+            [](const RunHandle& run, const analyses::TransientResult& result, const py::capsule& owner) {
     const std::vector<TransientSample>& samples = result.samples;
     py::dict series;
     series["time"] = FieldView(samples, &TransientSample::time, owner);
@@ -57,6 +100,7 @@ void BindTransientResult(py::class_<RunHandle>& run) {
     fields["frame_times"] = VectorView(result.frame_times, owner);
     fields["energy_drift"] = result.energy_drift;
     fields["rho_infinity"] = result.rho_infinity;
+    fields["limits"] = TransientLimits(run.results->transient_limits, owner);
     fields["statistics"] = py::dict(py::arg("steps") = statistics.steps, py::arg("error_rejections") = statistics.error_rejections,
                                     py::arg("newton_failures") = statistics.newton_failures,
                                     py::arg("newton_iterations") = statistics.newton_iterations,

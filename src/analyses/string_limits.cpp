@@ -179,4 +179,27 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
   return limits;
 }
 
+std::vector<DoglegFatigue> FatigueDoglegs(const StringLimits& limits) {
+  std::vector<DoglegFatigue> doglegs;
+  bool open = false;
+  for (const NodeLimits& node : limits.nodes) {
+    const bool in = std::isfinite(node.fatigue_utilisation) && node.hole_curvature > kDoglegCurvature;
+    if (!in) {
+      open = false;
+      continue;
+    }
+    if (!open) doglegs.push_back({node.md, node.md, node.fatigue_utilisation, node.md, node.hole_curvature, node.component});
+    open = true;
+    DoglegFatigue& dogleg = doglegs.back();
+    dogleg.md_from = std::min(dogleg.md_from, node.md);
+    dogleg.md_to = std::max(dogleg.md_to, node.md);
+    if (node.fatigue_utilisation > dogleg.utilisation) {
+      dogleg = {dogleg.md_from, dogleg.md_to, node.fatigue_utilisation, node.md, node.hole_curvature, node.component};
+    }
+  }
+  std::sort(doglegs.begin(), doglegs.end(),
+            [](const DoglegFatigue& a, const DoglegFatigue& b) { return a.md_from < b.md_from; });
+  return doglegs;
+}
+
 }  // namespace drillflex::analyses

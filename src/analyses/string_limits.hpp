@@ -105,4 +105,17 @@ void LoadStationLimits(const model::ModelInput& input, const StaticNodeResult& r
 StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vector<StaticNodeResult>& nodes,
                                  double design_factor);
 
+// A dogleg the string rotates through: a stretch of consecutive stations (from the bit upward) screened
+// for fatigue where the hole curves (its curvature above kDoglegCurvature), and its worst station.
+inline constexpr double kDoglegCurvature = 1e-7;  // 1/m: 0.0002 °/100 ft; a straight hole's is 0 to round-off
+struct DoglegFatigue {
+  double md_from = 0.0, md_to = 0.0;   // m, the stretch's shallower and deeper station
+  double utilisation = 0.0;            // the largest fatigue utilisation in it
+  double md = 0.0;                     // m, where
+  double curvature = 0.0;              // 1/m, the hole's there
+  int component = -1;                  // index in the string
+};
+// The doglegs of a rotating string's limits (ComputeStringLimits' nodes), by MD from the shallowest.
+std::vector<DoglegFatigue> FatigueDoglegs(const StringLimits& limits);
+
 }  // namespace drillflex::analyses

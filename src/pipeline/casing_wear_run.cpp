@@ -29,14 +29,13 @@ std::vector<std::pair<double, double>> RunDepths(const io::Case& c, const io::We
 
 }  // namespace
 
-CasingWear ComputeCasingWear(const io::Case& c) {
-  const io::WearConfig& wear = *c.limits.wear;
+std::vector<CasingWearStation> CasingWearStations(const io::Case& c) {
   const well::HoleProfile hole(c.well->hole);
   double deepest = 0.0;  // the deepest cased MD
   for (std::size_t i = 0; i < c.well->hole.size(); ++i) {
     if (c.well->hole[i].cased) deepest = c.well->hole[i].to_md.value_or(c.well->bit_md);
   }
-  CasingWear result;
+  std::vector<CasingWearStation> stations;
   const int count = static_cast<int>(std::floor(std::min(deepest, c.well->bit_md) / kWearStep + 1e-9)) + 1;
   for (int i = 0; i < count; ++i) {
     CasingWearStation station;
@@ -44,37 +43,41 @@ CasingWear ComputeCasingWear(const io::Case& c) {
     const well::HoleSection& section = hole.SectionAt(station.md);
     station.bore_diameter = hole.Diameter(station.md);
     station.wall = section.cased ? section.wall.value_or(0.0) : 0.0;
-    result.stations.push_back(station);
+    stations.push_back(station);
   }
-  for (const auto& [bit_md, time] : RunDepths(c, wear)) {
-    const io::Case at = CaseAtDepth(c, bit_md);
-    analyses::SoftStringOperation operation;
-    operation.motion = analyses::SoftStringMotion::Rotating;
-    operation.axial_friction = operation.tangential_friction = c.input.settings.contact.friction;
-    operation.weight_on_bit = at.input.operation.weight_on_bit;
-    operation.torque_on_bit = at.input.operation.torque_on_bit;
-    operation.max_element_length = kWearStep;
-    const analyses::SoftStringResult soft = analyses::ComputeSoftString(at.input, operation);
-    // Each element (between a station and the one below it) spreads its wall force over its length.
-    for (std::size_t k = 1; k < soft.stations.size(); ++k) {
-      const analyses::SoftStringStation& upper = soft.stations[k];
-      const double lower_md = soft.stations[k - 1].md;
-      const double length = lower_md - upper.md;
-      if (!(length > 0.0)) continue;
-      const double per_length = upper.normal_force / length;
-      const double joint = model::ContactDiameter(model::ComponentAt(at.input.string, upper.s));
-      const double worn = model::WornVolumePerLength(wear.wear_factor, per_length, joint, wear.rotary_speed, time);
-      for (CasingWearStation& station : result.stations) {
-        if (station.md < upper.md || station.md >= lower_md || !hole.SectionAt(station.md).cased) continue;
-        station.side_force_per_length = std::max(station.side_force_per_length, per_length);
-        station.worn_area += worn;
-        if (worn > 0.0) station.joint_diameter = joint;
-      }
+  return stations;
+}
+
+void AddRotatingWear(const io::Case& c, const model::ModelInput& at, analyses::SoftStringOperation friction,
+                     double time, std::vector<CasingWearStation>& stations) {
+  const io::WearConfig& wear = *c.limits.wear;
+  const well::HoleProfile hole(c.well->hole);
+  analyses::SoftStringOperation& operation = friction;
+  operation.motion = analyses::SoftStringMotion::Rotating;
+  operation.weight_on_bit = at.operation.weight_on_bit;
+  operation.torque_on_bit = at.operation.torque_on_bit;
+  operation.max_element_length = kWearStep;
+  const analyses::SoftStringResult soft = analyses::ComputeSoftString(at, operation);
+  // Each element (between a station and the one below it) spreads its wall force over its length.
+  for (std::size_t k = 1; k < soft.stations.size(); ++k) {
+    const analyses::SoftStringStation& upper = soft.stations[k];
+    const double lower_md = soft.stations[k - 1].md;
+    const double length = lower_md - upper.md;
+    if (!(length > 0.0)) continue;
+    const double per_length = upper.normal_force / length;
+    const double joint = model::ContactDiameter(model::ComponentAt(at.string, upper.s));
+    const double worn = model::WornVolumePerLength(wear.wear_factor, per_length, joint, wear.rotary_speed, time);
+    for (CasingWearStation& station : stations) {
+      if (station.md < upper.md || station.md >= lower_md || !hole.SectionAt(station.md).cased) continue;
+      station.side_force_per_length = std::max(station.side_force_per_length, per_length);
+      station.worn_area += worn;
+      if (worn > 0.0) station.joint_diameter = joint;
     }
-    result.rotating_time += time;
-    ++result.depths;
   }
-  for (CasingWearStation& station : result.stations) {
+}
+
+void FinishCasingWear(std::vector<CasingWearStation>& stations) {
+  for (CasingWearStation& station : stations) {
     if (station.joint_diameter > 0.0) {
       station.groove_depth =
           model::GrooveDepth(0.5 * station.bore_diameter, 0.5 * station.joint_diameter, station.worn_area);
@@ -84,6 +87,19 @@ CasingWear ComputeCasingWear(const io::Case& c) {
       station.wear_utilisation = station.groove_depth / station.wall;
     }
   }
+}
+
+CasingWear ComputeCasingWear(const io::Case& c) {
+  CasingWear result;
+  result.stations = CasingWearStations(c);
+  analyses::SoftStringOperation friction;  // the case's: model.contact.friction, each cased section its own
+  friction.axial_friction = friction.tangential_friction = c.input.settings.contact.friction;
+  for (const auto& [bit_md, time] : RunDepths(c, *c.limits.wear)) {
+    AddRotatingWear(c, CaseAtDepth(c, bit_md).input, friction, time, result.stations);
+    result.rotating_time += time;
+    ++result.depths;
+  }
+  FinishCasingWear(result.stations);
   return result;
 }
 

@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "analyses/soft_string.hpp"
 #include "io/case.hpp"
 #include "io/result_files.hpp"
 
@@ -37,6 +38,17 @@ inline constexpr double kWearStep = 3.048;  // m (10 ft) between the casing's st
 
 // The run of `c.limits.wear` (required). Throws as pipeline::CaseAtDepth.
 CasingWear ComputeCasingWear(const io::Case& c);
+
+// The parts of a run (ComputeCasingWear; the roadmap's, pipeline/roadmap.hpp RoadmapCasingWear):
+// the casing's stations of `c`'s well, nothing worn yet;
+std::vector<CasingWearStation> CasingWearStations(const io::Case& c);
+// the wear of the string of `at` (the case at a depth, pipeline::CaseAtDepth) rotating on bottom at its
+// WOB and torque on bit for `time` (s) at the wear's rpm, its friction `friction`'s (its motion, WOB and
+// TOB set here), added to `stations` of `c`;
+void AddRotatingWear(const io::Case& c, const model::ModelInput& at, analyses::SoftStringOperation friction,
+                     double time, std::vector<CasingWearStation>& stations);
+// and each station's groove, remaining wall and utilisation from its worn area.
+void FinishCasingWear(std::vector<CasingWearStation>& stations);
 
 // results.json `static.casing_wear` and casing_wear.csv (the case's output units) when the case asks for
 // wear (c.limits.wear), nothing otherwise.

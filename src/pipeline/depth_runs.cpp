@@ -127,11 +127,13 @@ SurfaceReading DepthRuns::Run(TdRun run, const HoleFrictionFactors& friction, co
       const model::LoadParameters parameters = Sliding(OffBottom(friction), speed, 0.0);
       std::optional<VecX>& state = run == TdRun::kPickUp ? pick_up_ : slack_off_;
       state = Solve(parameters, state ? &*state : &*rest_, name);
+      solved_[static_cast<std::size_t>(run)] = Solved{parameters, friction};
       return ReadSurface(*state, parameters, run, friction);
     }
     case TdRun::kRotatingOffBottom: {
       const model::LoadParameters parameters = Sliding(OffBottom(friction), 0.0, loads.rotary_speed);
       rotating_ = rotating_ ? Solve(parameters, &*rotating_, name) : FromRest(parameters);
+      solved_[static_cast<std::size_t>(run)] = Solved{parameters, friction};
       return ReadSurface(*rotating_, parameters, run, friction);
     }
     case TdRun::kOnBottom: {
@@ -146,12 +148,14 @@ SurfaceReading DepthRuns::Run(TdRun run, const HoleFrictionFactors& friction, co
                               on_bottom_loads_->torque_on_bit == loads.torque_on_bit;
       if (!on_bottom_at_rest_.empty() && same_loads) {
         notes_.push_back(on_bottom_at_rest_);
+        solved_[static_cast<std::size_t>(run)] = Solved{parameters, friction};
         return ReadSurface(*on_bottom_, parameters, run, friction);
       }
       const std::size_t noted = notes_.size();
       on_bottom_ = on_bottom_ ? Solve(parameters, &*on_bottom_, name) : OnBottomCold(parameters);
       on_bottom_loads_ = loads;
       on_bottom_at_rest_ = notes_.size() > noted ? notes_.back() : std::string();
+      solved_[static_cast<std::size_t>(run)] = Solved{parameters, friction};
       return ReadSurface(*on_bottom_, parameters, run, friction);
     }
   }
@@ -201,12 +205,12 @@ VecX DepthRuns::OnBottomCold(const model::LoadParameters& parameters) {
   }
 }
 
-// The reading at the surface of an equilibrium q: the hook's reaction at the model's top (the string
-// frame: x up the hole) is the tension there, its moment about x the torque; the soft string above
+// The model's top and the pipe above of an equilibrium q: the hook's reaction at the model's top (the
+// string frame: x up the hole) is the tension there, its moment about x the torque; the soft string above
 // (Johancsik with the rotating string's climb, as the stiff model has it) carries them to the surface
 // under the run's motion and friction.
-SurfaceReading DepthRuns::ReadSurface(const VecX& q, const model::LoadParameters& parameters, TdRun run,
-                                      const HoleFrictionFactors& friction) const {
+DepthRuns::Above DepthRuns::CarryToSurface(const VecX& q, const model::LoadParameters& parameters, TdRun run,
+                                           const HoleFrictionFactors& friction) const {
   const model::SystemModel& system = model_.built.system;
   const auto poses = system.Poses(q);
   const VecX rest = VecX::Zero(system.num_velocities());
@@ -215,20 +219,52 @@ SurfaceReading DepthRuns::ReadSurface(const VecX& q, const model::LoadParameters
     if (support.holds_bit()) continue;
     const Vec6 reaction = support.Reaction(system.StateOf(support, poses, rest, 0.0, parameters));
     // The support's moment about x resists the drive's clockwise turn.
-    const SurfaceReading at_top{reaction.x(), -reaction[3]};
-    if (!above_) return at_top;
+    Above above{{reaction.x(), -reaction[3]}, std::nullopt};
+    if (!above_) return above;
     analyses::SoftStringOperation operation;
     operation.motion = MotionOf(run);
     operation.axial_friction = operation.tangential_friction = friction.open_hole;
     if (friction.cased_hole) operation.cased_friction = model::WallFriction{*friction.cased_hole, *friction.cased_hole};
-    operation.weight_on_bit = -at_top.hook_load;  // the model's top pulls the pipe above down
-    operation.torque_on_bit = at_top.surface_torque;
+    operation.weight_on_bit = -above.at_top.hook_load;  // the model's top pulls the pipe above down
+    operation.torque_on_bit = above.at_top.surface_torque;
     operation.max_element_length = kSoftElementLength;
     operation.wall_climb = true;
-    const analyses::SoftStringResult soft = analyses::ComputeSoftString(*above_, operation);
-    return {soft.hook_load, soft.surface_torque};
+    above.soft = analyses::ComputeSoftString(*above_, operation);
+    return above;
   }
   throw LogicError("DepthRuns: the model has no hook support at its top");
+}
+
+// The reading at the surface of an equilibrium q: the model's top carried there (CarryToSurface).
+SurfaceReading DepthRuns::ReadSurface(const VecX& q, const model::LoadParameters& parameters, TdRun run,
+                                      const HoleFrictionFactors& friction) const {
+  const Above above = CarryToSurface(q, parameters, run, friction);
+  return above.soft ? SurfaceReading{above.soft->hook_load, above.soft->surface_torque} : above.at_top;
+}
+
+std::vector<analyses::StaticNodeResult> DepthRuns::Stations(TdRun run) const {
+  const std::optional<Solved>& solved = solved_[static_cast<std::size_t>(run)];
+  const std::optional<VecX>& q = run == TdRun::kPickUp             ? pick_up_
+                                 : run == TdRun::kSlackOff          ? slack_off_
+                                 : run == TdRun::kRotatingOffBottom ? rotating_
+                                                                    : on_bottom_;
+  if (!solved || !q) throw LogicError(fmt::format("DepthRuns::Stations before a run {}", TdRunName(run)));
+  std::vector<analyses::StaticNodeResult> stations =
+      analyses::StaticNodeResults(model_.built, *q, solved->parameters);
+  const Above above = CarryToSurface(*q, solved->parameters, run, solved->friction);
+  if (!above.soft) return stations;
+  const double top = model::StringLength(model_.input.string);  // s of the model's top, m
+  for (const analyses::SoftStringStation& station : above.soft->stations) {
+    if (station.s <= 0.0) continue;  // the model's top: its own station
+    analyses::StaticNodeResult node;
+    node.s = top + station.s;
+    node.has_wall = true;
+    node.md = station.md;
+    node.axial_force = station.axial_force;
+    node.torque = station.torque;
+    stations.push_back(node);
+  }
+  return stations;
 }
 
 }  // namespace drillflex::pipeline

@@ -17,12 +17,15 @@
 // surface reading adds the pipe above the stiff model, to the surface, by the soft string.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
+#include "analyses/soft_string.hpp"
+#include "analyses/static_analysis.hpp"
 #include "io/case.hpp"
 #include "pipeline/case_run.hpp"
 
@@ -74,6 +77,12 @@ class DepthRuns {
   // sliding string answered at rest: its friction found no static balance) goes to notes().
   SurfaceReading Run(TdRun run, const HoleFrictionFactors& friction, const TdRunLoads& loads);
 
+  // The stations of the last `run` solved, from the bit up, as a static's (s from the bit, MD, axial force,
+  // torque, bending moment): the stiff model's (analyses::StaticNodeResults), then the pipe above it to
+  // the surface by the soft string that carries the model's top there (s from the bit, no bending moment).
+  // LogicError before that run.
+  std::vector<analyses::StaticNodeResult> Stations(TdRun run) const;
+
   // The warnings of the runs since the last ClearNotes().
   const std::vector<std::string>& notes() const { return notes_; }
   void ClearNotes() { notes_.clear(); }
@@ -85,12 +94,25 @@ class DepthRuns {
   VecX OnBottomCold(const model::LoadParameters& parameters);
   SurfaceReading ReadSurface(const VecX& q, const model::LoadParameters& parameters, TdRun run,
                              const HoleFrictionFactors& friction) const;
+  // The model's top (the hook's reaction: tension and torque) and the soft string above it, if any.
+  struct Above {
+    SurfaceReading at_top;
+    std::optional<analyses::SoftStringResult> soft;
+  };
+  Above CarryToSurface(const VecX& q, const model::LoadParameters& parameters, TdRun run,
+                       const HoleFrictionFactors& friction) const;
   void Label(const HoleFrictionFactors& friction, const char* run);
 
   CaseModel model_;
   std::optional<model::ModelInput> above_;  // the pipe above the model, by the soft string
   analyses::StaticSettings static_settings_;
   std::optional<VecX> rest_, pick_up_, slack_off_, rotating_, on_bottom_;
+  // What each run (TdRun's order) was last solved under, for its Stations.
+  struct Solved {
+    model::LoadParameters parameters;
+    HoleFrictionFactors friction;
+  };
+  std::array<std::optional<Solved>, 4> solved_;
   std::string on_bottom_failure_;  // why the first on-bottom run failed at this depth
   std::vector<std::string> notes_;
   std::string on_bottom_at_rest_;  // the warning of an on-bottom run answered at rest

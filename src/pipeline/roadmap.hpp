@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,23 @@
 #include "io/result_files.hpp"
 
 namespace drillflex::pipeline {
+
+// A run's screens on its own stations (analyses/string_limits.hpp): the buckled zones (MD from–to),
+// and for a rotating run the bending stress's fatigue utilisation in each dogleg the string turns
+// through and its worst station (limit "" and NaN: not rotating, or no station rated).
+struct RunScreen {
+  std::vector<analyses::BuckledZone> zones;
+  std::vector<analyses::DoglegFatigue> doglegs;
+  analyses::LimitUtilisation fatigue;
+};
+// The four runs' (pick-up and slack-off off bottom, rotating off bottom, on bottom).
+struct PointScreens {
+  RunScreen pick_up, slack_off, rotating, on_bottom;
+};
+// The screens of one run's stations (from the bit up: s, MD, axial force, torque, bending moment) of
+// `input`'s string (the case at the point's depth to the surface: CaseAtDepth), rotating or not.
+RunScreen ScreenRun(const model::ModelInput& input, const std::vector<analyses::StaticNodeResult>& stations,
+                    bool rotating);
 
 // One depth and friction factor. Hook loads in N (tension at the surface), torques in N·m (positive
 // clockwise looking down-hole: the rig's). A run that failed leaves its own quantities NaN and says
@@ -31,6 +49,10 @@ struct RoadmapPoint {
   double off_bottom_torque = 0.0;
   double on_bottom_torque = 0.0;  // at the case's WOB and TOB
   std::string message;
+  // The stiff model's screens of its own runs (RunRoadmap: the stiff part's statics, the pipe above them
+  // by the soft string that carries their top to the surface); a failed run's are empty. None: the soft
+  // roadmap's point (RoadmapPointLimits screens the soft string's runs).
+  std::optional<PointScreens> screens;
   // A run of the point failed: one of its values is NaN (a warning alone leaves them whole).
   bool failed() const;
 };
@@ -48,13 +70,39 @@ struct RoadmapLimits {
   // (analyses/string_limits.hpp's screen); the slack-off hook load itself when it is helically buckled
   // off bottom; NaN when all its weight on the bit does not reach it.
   double helical_slack_off = std::numeric_limits<double>::quiet_NaN();
-  // The soft string's buckled zones (analyses/string_limits.hpp's screen on its axial force) in the point's
-  // four runs at its friction factor: pulling out (pick-up) and running in (slack-off) off bottom, rotating
-  // off bottom, and drilling on bottom at the case's WOB and torque on bit.
-  std::vector<analyses::BuckledZone> pick_up_zones, slack_off_zones, rotating_zones, on_bottom_zones;
+  // The screens of the point's four runs at its friction factor: pulling out (pick-up) and running in
+  // (slack-off) off bottom, rotating off bottom, and drilling on bottom at the case's WOB and torque on
+  // bit: the stiff model's own (point.screens), else the soft string's (Johancsik, analyses/soft_string.hpp).
+  PointScreens screens;
+  // The worst fatigue utilisation of the rotating runs (off bottom, on bottom) and its MD, m (NaN: none).
+  double fatigue_rotating = std::numeric_limits<double>::quiet_NaN();
+  double fatigue_rotating_md = std::numeric_limits<double>::quiet_NaN();
+  double fatigue_on_bottom = std::numeric_limits<double>::quiet_NaN();
+  double fatigue_on_bottom_md = std::numeric_limits<double>::quiet_NaN();
 };
 RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSettings& settings,
                                  const RoadmapPoint& point);
+
+// The casing worn drilling the roadmap's section down to a point's depth (issue 37; White & Dawson,
+// pipeline/casing_wear_run.hpp, with the case's limits.wear: its factor and rpm): from one depth of the
+// roadmap to the next the string rotates on bottom at the next depth for Δ depth / ROP (limits.wear.rop),
+// the side force per length the soft string's there (Johancsik, at the point's friction factor in open
+// hole and the settings' cased_friction, else each cased section's own), whichever model the roadmap
+// runs; the first depth has drilled nothing. The deepest groove so far (NaN without limits.wear.rop or
+// a cased section, or where nothing is worn).
+struct RoadmapWear {
+  double rotating_time = std::numeric_limits<double>::quiet_NaN();  // s, drilled since the first depth
+  double md = std::numeric_limits<double>::quiet_NaN();             // m, the deepest groove's
+  double side_force_per_length = std::numeric_limits<double>::quiet_NaN();  // N/m, the largest there
+  double worn_area = std::numeric_limits<double>::quiet_NaN();      // m²
+  double groove_depth = std::numeric_limits<double>::quiet_NaN();   // m
+  double remaining_wall = std::numeric_limits<double>::quiet_NaN(); // m (NaN: no wall given)
+  double utilisation = std::numeric_limits<double>::quiet_NaN();    // groove / wall (NaN: no wall given)
+};
+// One a point of `points` (RoadmapDepths × friction factors, in RunRoadmap's order), accumulated
+// friction factor by friction factor down the depths.
+std::vector<RoadmapWear> RoadmapCasingWear(const io::Case& c, const analyses::RoadmapSettings& settings,
+                                           const std::vector<RoadmapPoint>& points);
 
 // The case at `bit_md`: its well's bit MD moved there and the string's top component continued to the
 // surface: a single joint (count 1) lengthened to reach it, else as many joints as fit below it (what

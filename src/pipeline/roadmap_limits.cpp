@@ -1,5 +1,6 @@
 // The string's limits at a roadmap point (pipeline/roadmap.hpp RoadmapPointLimits): the hook load at
-// the top pipe's yield, the weakest make-up torque, and the slack-off hook load at helical buckling.
+// the top pipe's yield, the weakest make-up torque, the slack-off hook load at helical buckling, and
+// the runs' screens (buckled zones, fatigue in the doglegs: ScreenRun).
 #include <algorithm>
 #include <cmath>
 
@@ -32,9 +33,8 @@ HelicalScreen ScreenHelical(const model::ModelInput& input, const analyses::Soft
   return screen;
 }
 
-// The buckled zones of the soft string under `operation`: its stations read as a static's (s, MD, axial
-// force) by the limits' screen.
-std::vector<analyses::BuckledZone> SoftZones(const model::ModelInput& input, const analyses::SoftStringOperation& operation) {
+// The screens of the soft string under `operation`: its stations read as a static's (s, MD, axial force).
+RunScreen SoftScreen(const model::ModelInput& input, const analyses::SoftStringOperation& operation) {
   std::vector<analyses::StaticNodeResult> nodes;
   for (const analyses::SoftStringStation& station : analyses::ComputeSoftString(input, operation).stations) {
     analyses::StaticNodeResult node;
@@ -42,14 +42,28 @@ std::vector<analyses::BuckledZone> SoftZones(const model::ModelInput& input, con
     node.has_wall = true;
     node.md = station.md;
     node.axial_force = station.axial_force;
+    node.torque = station.torque;
     nodes.push_back(node);
   }
-  model::ModelInput still = input;  // the zones alone: no fatigue screen
-  still.operation.rotary_speed = 0.0;
-  return analyses::ComputeStringLimits(still, nodes, 1.0).zones;
+  return ScreenRun(input, nodes, operation.motion == analyses::SoftStringMotion::Rotating);
 }
 
 }  // namespace
+
+RunScreen ScreenRun(const model::ModelInput& input, const std::vector<analyses::StaticNodeResult>& stations,
+                    bool rotating) {
+  model::ModelInput screened = input;
+  // The fatigue screen asks only whether the string turns (analyses::ComputeStringLimits).
+  screened.operation.rotary_speed = rotating ? 1.0 : 0.0;
+  const analyses::StringLimits limits = analyses::ComputeStringLimits(screened, stations, 1.0);
+  RunScreen screen;
+  screen.zones = limits.zones;
+  if (rotating) {
+    screen.doglegs = analyses::FatigueDoglegs(limits);
+    screen.fatigue = limits.fatigue;
+  }
+  return screen;
+}
 
 RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSettings& settings,
                                  const RoadmapPoint& point) {
@@ -74,17 +88,28 @@ RoadmapLimits RoadmapPointLimits(const io::Case& c, const analyses::RoadmapSetti
   operation.axial_friction = operation.tangential_friction = point.friction;
   if (settings.cased_friction) operation.cased_friction = model::WallFriction{*settings.cased_friction, *settings.cased_friction};
   operation.max_element_length = model::kDefaultJointSpacing;  // as the soft roadmap's runs
-  limits.slack_off_zones = SoftZones(input, operation);
-  analyses::SoftStringOperation pick_up = operation;
-  pick_up.motion = analyses::SoftStringMotion::PickUp;
-  limits.pick_up_zones = SoftZones(input, pick_up);
-  analyses::SoftStringOperation rotating = operation;  // off bottom: no WOB, no torque on bit
-  rotating.motion = analyses::SoftStringMotion::Rotating;
-  limits.rotating_zones = SoftZones(input, rotating);
-  analyses::SoftStringOperation drilling = rotating;
-  drilling.weight_on_bit = input.operation.weight_on_bit;
-  drilling.torque_on_bit = input.operation.torque_on_bit;
-  limits.on_bottom_zones = SoftZones(input, drilling);
+  if (point.screens) {
+    limits.screens = *point.screens;
+  } else {
+    limits.screens.slack_off = SoftScreen(input, operation);
+    analyses::SoftStringOperation pick_up = operation;
+    pick_up.motion = analyses::SoftStringMotion::PickUp;
+    limits.screens.pick_up = SoftScreen(input, pick_up);
+    analyses::SoftStringOperation rotating = operation;  // off bottom: no WOB, no torque on bit
+    rotating.motion = analyses::SoftStringMotion::Rotating;
+    limits.screens.rotating = SoftScreen(input, rotating);
+    analyses::SoftStringOperation drilling = rotating;
+    drilling.weight_on_bit = input.operation.weight_on_bit;
+    drilling.torque_on_bit = input.operation.torque_on_bit;
+    limits.screens.on_bottom = SoftScreen(input, drilling);
+  }
+  const auto worst = [](const RunScreen& screen, double& utilisation, double& md) {
+    if (screen.fatigue.limit.empty()) return;
+    utilisation = screen.fatigue.utilisation;
+    md = screen.fatigue.md;
+  };
+  worst(limits.screens.rotating, limits.fatigue_rotating, limits.fatigue_rotating_md);
+  worst(limits.screens.on_bottom, limits.fatigue_on_bottom, limits.fatigue_on_bottom_md);
   const HelicalScreen off_bottom = ScreenHelical(input, operation, 0.0);
   if (off_bottom.ratio >= 1.0) {
     limits.helical_slack_off = off_bottom.hook_load;

@@ -16,11 +16,23 @@
 namespace drillflex::pipeline {
 namespace {
 
-// The point of one friction factor at a depth: its four runs. A run that fails leaves its own
-// quantities NaN and adds its reason to the point's message; the others stand.
-RoadmapPoint Point(DepthRuns& runs, const analyses::RoadmapSettings& settings, double friction) {
+RoadmapPoint FailedPoint(double md, double friction, const std::string& message) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  RoadmapPoint point{runs.bit_md(), friction, nan, nan, nan, nan, nan, ""};
+  RoadmapPoint point;
+  point.bit_md = md;
+  point.friction = friction;
+  point.pick_up = point.slack_off = point.rotating = point.off_bottom_torque = point.on_bottom_torque = nan;
+  point.message = message;
+  return point;
+}
+
+// The point of one friction factor at a depth: its four runs, each screened on its own stations along
+// `whole` (the case's string at the depth to the surface). A run that fails leaves its own quantities NaN
+// and adds its reason to the point's message; the others stand.
+RoadmapPoint Point(DepthRuns& runs, const model::ModelInput& whole, const analyses::RoadmapSettings& settings,
+                   double friction) {
+  RoadmapPoint point = FailedPoint(runs.bit_md(), friction, "");
+  point.screens.emplace();
   runs.ClearNotes();
   const HoleFrictionFactors factors{friction, settings.cased_friction};
   TdRunLoads loads;
@@ -29,6 +41,12 @@ RoadmapPoint Point(DepthRuns& runs, const analyses::RoadmapSettings& settings, d
   auto run = [&](TdRun kind, auto&& take) {
     try {
       take(runs.Run(kind, factors, loads));
+      RunScreen& screen = kind == TdRun::kPickUp             ? point.screens->pick_up
+                          : kind == TdRun::kSlackOff          ? point.screens->slack_off
+                          : kind == TdRun::kRotatingOffBottom ? point.screens->rotating
+                                                              : point.screens->on_bottom;
+      const bool rotating = kind == TdRun::kRotatingOffBottom || kind == TdRun::kOnBottom;
+      screen = ScreenRun(whole, runs.Stations(kind), rotating);
     } catch (const SolverError& error) {
       point.message += (point.message.empty() ? "" : "; ") + std::string(error.what());
     }
@@ -44,11 +62,6 @@ RoadmapPoint Point(DepthRuns& runs, const analyses::RoadmapSettings& settings, d
   return point;
 }
 
-RoadmapPoint FailedPoint(double md, double friction, const std::string& message) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  return {md, friction, nan, nan, nan, nan, nan, message};
-}
-
 }  // namespace
 
 std::vector<RoadmapPoint> RunRoadmapDepth(const io::Case& c, const analyses::RoadmapSettings& settings, double bit_md,
@@ -60,7 +73,9 @@ std::vector<RoadmapPoint> RunRoadmapDepth(const io::Case& c, const analyses::Roa
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return settings.friction[a] < settings.friction[b]; });
   std::optional<DepthRuns> runs;
+  std::optional<model::ModelInput> whole;  // the string at the depth to the surface, for the screens
   try {
+    whole = CaseAtDepth(c, bit_md).input;
     io::Case at = StiffCaseAtDepth(c, bit_md, settings);
     at.input.supports.clear();  // the rig's: the hook at the top, the bit at the hole's centre on bottom
     runs.emplace(at, log);
@@ -74,7 +89,7 @@ std::vector<RoadmapPoint> RunRoadmapDepth(const io::Case& c, const analyses::Roa
   }
   for (const std::size_t k : order) {
     try {
-      points[k] = Point(*runs, settings, settings.friction[k]);
+      points[k] = Point(*runs, *whole, settings, settings.friction[k]);
     } catch (const SolverError& error) {
       points[k] = FailedPoint(bit_md, settings.friction[k], error.what());
     }

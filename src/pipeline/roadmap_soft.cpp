@@ -11,7 +11,9 @@ namespace {
 
 RoadmapPoint SoftPoint(const model::ModelInput& input, const analyses::RoadmapSettings& settings, double bit_md,
                        double friction) {
-  RoadmapPoint point{bit_md, friction, 0.0, 0.0, 0.0, 0.0, 0.0, ""};
+  RoadmapPoint point;
+  point.bit_md = bit_md;
+  point.friction = friction;
   const HoleFrictionFactors factors{friction, settings.cased_friction};
   TdRunLoads loads;  // the case's WOB and torque on bit on bottom
   point.pick_up = SoftSurfaceReading(input, TdRun::kPickUp, factors, loads).hook_load;

@@ -390,8 +390,9 @@ TEST(Cli, RoadmapWritesOneRowADepthAndFrictionFactor) {
   std::getline(csv, header);
   std::getline(csv, units);
   EXPECT_EQ(header, "bit_md,friction,pick_up,slack_off,rotating,off_bottom_torque,on_bottom_torque,message,hook_load_limit,"
-            "torque_limit,helical_slack_off");
-  EXPECT_EQ(units, "ft,-,lbf,lbf,lbf,ft*lbf,ft*lbf,-,lbf,ft*lbf,lbf");
+            "torque_limit,helical_slack_off,fatigue_rotating,fatigue_rotating_md,fatigue_on_bottom,fatigue_on_bottom_md,"
+            "wear_rotating_time,wear_md,wear_side_force_per_length,wear_groove_depth,wear_remaining_wall,wear_utilisation");
+  EXPECT_EQ(units, "ft,-,lbf,lbf,lbf,ft*lbf,ft*lbf,-,lbf,ft*lbf,lbf,-,ft,-,ft,s,ft,lbf/ft,in,in,-");
   std::vector<std::vector<double>> rows;
   while (std::getline(csv, line)) {
     std::vector<double> row;

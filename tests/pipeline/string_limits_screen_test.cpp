@@ -157,17 +157,17 @@ TEST(StringLimitsScreen, RoadmapPointBuckledZonesByHand) {
   point.bit_md = 2000.0;
   point.friction = 0.25;
   const pipeline::RoadmapLimits limits = pipeline::RoadmapPointLimits(c, analyses::RoadmapSettings{}, point);
-  EXPECT_TRUE(limits.slack_off_zones.empty());
-  ASSERT_EQ(limits.on_bottom_zones.size(), 2u);
-  EXPECT_EQ(limits.on_bottom_zones[0].state, BucklingState::Sinusoidal);
-  EXPECT_NEAR(limits.on_bottom_zones[0].md_from, 2000.0 - 560.08, 9.2);
-  EXPECT_DOUBLE_EQ(limits.on_bottom_zones[0].md_to, 2000.0);
-  EXPECT_EQ(limits.on_bottom_zones[1].state, BucklingState::Helical);
-  EXPECT_NEAR(limits.on_bottom_zones[1].md_from, 2000.0 - 262.55, 9.2);
-  EXPECT_DOUBLE_EQ(limits.on_bottom_zones[1].md_to, 2000.0);
+  EXPECT_TRUE(limits.screens.slack_off.zones.empty());
+  ASSERT_EQ(limits.screens.on_bottom.zones.size(), 2u);
+  EXPECT_EQ(limits.screens.on_bottom.zones[0].state, BucklingState::Sinusoidal);
+  EXPECT_NEAR(limits.screens.on_bottom.zones[0].md_from, 2000.0 - 560.08, 9.2);
+  EXPECT_DOUBLE_EQ(limits.screens.on_bottom.zones[0].md_to, 2000.0);
+  EXPECT_EQ(limits.screens.on_bottom.zones[1].state, BucklingState::Helical);
+  EXPECT_NEAR(limits.screens.on_bottom.zones[1].md_from, 2000.0 - 262.55, 9.2);
+  EXPECT_DOUBLE_EQ(limits.screens.on_bottom.zones[1].md_to, 2000.0);
   // Pulling out and rotating off bottom the string hangs in tension from the bit up: no zone.
-  EXPECT_TRUE(limits.pick_up_zones.empty());
-  EXPECT_TRUE(limits.rotating_zones.empty());
+  EXPECT_TRUE(limits.screens.pick_up.zones.empty());
+  EXPECT_TRUE(limits.screens.rotating.zones.empty());
 }
 
 // The zones of all four runs of a roadmap point (pipeline::RoadmapPointLimits), by hand: the same pipe
@@ -191,10 +191,10 @@ TEST(StringLimitsScreen, RoadmapPointZonesOfEveryRunByHand) {
     const std::vector<BuckledZone>* zones;
     double sinusoidal, helical;  // m above the bit where the compression reaches F_s, F_h
   };
-  for (const Expected& run : {Expected{"pick-up", &limits.pick_up_zones, 839.46, 1187.17},
-                              Expected{"slack-off", &limits.slack_off_zones, 627.69, 887.69},
-                              Expected{"rotating", &limits.rotating_zones, 718.29, 1015.82},
-                              Expected{"on bottom", &limits.on_bottom_zones, 505.23, 802.76}}) {
+  for (const Expected& run : {Expected{"pick-up", &limits.screens.pick_up.zones, 839.46, 1187.17},
+                              Expected{"slack-off", &limits.screens.slack_off.zones, 627.69, 887.69},
+                              Expected{"rotating", &limits.screens.rotating.zones, 718.29, 1015.82},
+                              Expected{"on bottom", &limits.screens.on_bottom.zones, 505.23, 802.76}}) {
     ASSERT_EQ(run.zones->size(), 2u) << run.run;
     const BuckledZone& sinusoidal = (*run.zones)[0];
     const BuckledZone& helical = (*run.zones)[1];

@@ -212,3 +212,53 @@ def test_tendency_point_the_bit_steering() -> None:
     assert steering.full_build == pytest.approx(three_point, rel=2e-3)
     assert td.build_rate == pytest.approx(steering.full_build, rel=1e-12)  # the case steers all the time
     assert abs(steering.natural_build) < 1e-3 * three_point
+
+
+# tests/cases/held-collar.yaml (as tests/pipeline/transient_limits_test.cpp): a collar (3 in × 1.181 in)
+# clamped at its lower end, held under 200 kN of tension and 5 kN·m of torque at its top, rated 500 MPa
+# (design factor 1.25), make-up torque 20 kN·m. By hand: A = π/4 (0.0762² − 0.03²), J = π/32 (0.0762⁴ − 0.03⁴),
+# σ_vm = √((N/A)² + 3 (T (D/2)/J)²) = 114.5702 MPa: 0.2864255 of 400 MPa; the torque 5/20 = 0.25. The model's
+# section torque reads up to 1/cos φ of the load's, φ = (T/cos φ) L_b/(G J) the relative twist of the two
+# bodies' frames (its couplings measure it by sin φ; docs/validation.md V11b): the utilisations lie between
+# the hand's at T and at T/cos φ.
+HELD_COLLAR = ROOT / "tests" / "cases" / "held-collar.yaml"
+
+
+def test_transient_limits_typed_against_the_hand_computation() -> None:
+    area = np.pi / 4 * (0.0762**2 - 0.03**2)
+    polar = np.pi / 32 * (0.0762**4 - 0.03**4)
+    sigma, tau = 200e3 / area, 5e3 * 0.0381 / polar
+    stress = np.sqrt(sigma**2 + 3 * tau**2) / (500e6 / 1.25)
+    assert stress == pytest.approx(0.2864255, rel=1e-6)
+    tr = drillflex.transient(drillflex.Case.from_file(str(HELD_COLLAR)))
+    limits = tr.limits
+    assert limits is not None
+    assert limits.design_factor == 1.25
+    assert len(limits.times) == 6 and limits.times[-1] == pytest.approx(0.01)
+    assert limits.s.shape == limits.md.shape == limits.component.shape
+    assert set(limits.largest) == {"yield", "makeup_torque", "helical_buckling", "fatigue"}
+    # Every station but the tip's (its forces are half an element in), at every sample.
+    phi = linear = 5e3 * 2.54 / (2.1e11 / 2.6 * polar)
+    for _ in range(50):
+        phi = linear / np.cos(phi)
+    high = np.sqrt(sigma**2 + 3 * (tau / np.cos(phi))**2) / (500e6 / 1.25)
+
+    def within(values: object, low: float, top: float) -> bool:
+        values = np.asarray(values)
+        return bool(np.all(values >= low * (1 - 1e-6)) and np.all(values <= top * (1 + 1e-6)))
+
+    assert within(limits.largest["yield"][:-1], stress, high)
+    assert within(limits.largest["makeup_torque"][:-1], 0.25, 0.25 / np.cos(phi))
+    assert within(limits.history["yield"], stress, high)
+    assert np.all(np.isnan(limits.largest["helical_buckling"]))  # no well: no buckling screen
+    assert np.all(np.isnan(limits.history["fatigue"]))  # not rotating
+    assert limits.summary["helical_buckling"] is None and limits.summary["fatigue"] is None
+    assert limits.closest == "yield"
+    assert within(limits.summary["yield"].utilisation, stress, high)
+    assert within(limits.summary["makeup_torque"].utilisation, 0.25, 0.25 / np.cos(phi))
+    assert 0.0 <= limits.summary["yield"].time <= 0.01
+    assert not limits.largest["yield"].flags.writeable  # a view of the run's own storage
+    # What results.json writes is the same envelope.
+    written = drillflex.run("transient", drillflex.Case.from_file(str(HELD_COLLAR)))
+    assert written["transient"]["limits"]["summary"]["yield"]["utilisation"] == pytest.approx(
+        limits.summary["yield"].utilisation, rel=1e-12)

@@ -935,6 +935,71 @@
     plot(grid, {title: 'Surface torque: off bottom (solid), on bottom (dashed)', x: `torque (${ru.off_bottom_torque})`,
       y: `bit MD (${ru.bit_md})`, depthDown: true, yMin: 0, xNice: true, xFromZero: true,
       xMin: Math.min(...torques) > -1e-9 * largest ? 0 : undefined, series: torque});
+    roadmapLimitsTable(s, r);
+  }
+
+  // The roadmap points' screens (roadmap.json points' buckled_zones, fatigue, wear_*): a row a point that
+  // buckles, turns through a dogleg or wears the casing, each zone's ends and each worst utilisation a
+  // value the report test compares with roadmap.json; a warning line for any utilisation at or above 1.
+  const ROADMAP_RUNS = {pick_up: 'pick-up', slack_off: 'slack-off', rotating: 'rotating', on_bottom: 'on bottom'};
+  function roadmapLimitsTable(s, r) {
+    const ru = r.units, len = ru.bit_md;
+    const rows = [], beyond = [];
+    r.points.forEach((p, i) => {
+      const zones = p.buckled_zones || [], fatigue = p.fatigue || {};
+      const worst = Object.keys(ROADMAP_RUNS).filter((run) => fatigue[run] && fatigue[run].worst && fatigue[run].worst.utilisation > 0);
+      const wears = p.wear_groove_depth !== null && p.wear_groove_depth !== undefined;
+      if (!zones.length && !worst.length && !wears) return;
+      const key = `roadmap.points.${i}`;
+      const zoneCell = el('td');
+      zones.forEach((z, k) => {
+        if (k) zoneCell.appendChild(document.createTextNode('; '));
+        zoneCell.appendChild(document.createTextNode(`${ROADMAP_RUNS[z.run] || z.run}: ${z.kind} MD `));
+        zoneCell.appendChild(value(z.md_from, '', `${key}.buckled_zones.${k}.md_from`, 6));
+        zoneCell.appendChild(document.createTextNode('–'));
+        zoneCell.appendChild(value(z.md_to, len, `${key}.buckled_zones.${k}.md_to`, 6));
+      });
+      if (!zones.length) zoneCell.textContent = 'none';
+      const fatigueCell = el('td');
+      worst.forEach((run, k) => {
+        const w = fatigue[run].worst, doglegs = fatigue[run].doglegs.length;
+        if (k) fatigueCell.appendChild(document.createTextNode('; '));
+        fatigueCell.appendChild(document.createTextNode(`${ROADMAP_RUNS[run]}: `));
+        fatigueCell.appendChild(value(w.utilisation, '', `${key}.fatigue.${run}.worst.utilisation`));
+        fatigueCell.appendChild(document.createTextNode(` at MD ${num(w.md, 6)} ${len} (${doglegs} dogleg${doglegs === 1 ? '' : 's'})`));
+        if (w.utilisation >= 1) beyond.push(`fatigue ${ROADMAP_RUNS[run]} ${num(w.utilisation, 3)} at MD ${num(w.md, 6)} ${len} (bit ${num(p.bit_md, 6)} ${len}, μ ${num(p.friction, 3)})`);
+      });
+      if (!worst.length) fatigueCell.textContent = '–';
+      const wearCell = el('td');
+      if (wears) {
+        wearCell.appendChild(value(p.wear_groove_depth, ru.wear_groove_depth, `${key}.wear_groove_depth`));
+        wearCell.appendChild(document.createTextNode(` at MD ${num(p.wear_md, 6)} ${len}`));
+        if (p.wear_utilisation !== null && p.wear_utilisation !== undefined) {
+          wearCell.appendChild(document.createTextNode(' (utilisation '));
+          wearCell.appendChild(value(p.wear_utilisation, '', `${key}.wear_utilisation`));
+          wearCell.appendChild(document.createTextNode(' of the wall)'));
+          if (p.wear_utilisation >= 1) beyond.push(`casing wear ${num(p.wear_utilisation, 3)} at MD ${num(p.wear_md, 6)} ${len} (bit ${num(p.bit_md, 6)} ${len}, μ ${num(p.friction, 3)})`);
+        }
+      } else {
+        wearCell.textContent = '–';
+      }
+      for (const cell of [zoneCell, fatigueCell, wearCell]) cell.setAttribute('style', 'text-align: left');
+      rows.push(el('tr', {}, [el('td', {text: `${num(p.bit_md, 6)} ${len}`}), el('td', {text: num(p.friction, 3)}), zoneCell, fatigueCell, wearCell]));
+    });
+    if (!rows.length) return;
+    const by = r.points.some((p) => p.screened_by === 'stiff') ? 'the stiff string\'s own runs (the pipe above its part by the soft string)' : 'the soft string (Johancsik)';
+    s.appendChild(el('h3', {text: 'Limits along the roadmap'}));
+    s.appendChild(el('p', {text: `Buckled zones (compression beyond Dawson–Paslay's sinusoidal and Chen's helical loads) and the bending stress's fatigue utilisation (API RP 7G) of the rotating runs, from ${by}; ` +
+      'the casing\'s deepest wear groove drilling down to each depth (White & Dawson, the soft string rotating on bottom).'}));
+    if (beyond.length) {
+      const list = el('ul', {class: 'warnings'});
+      for (const b of beyond) list.appendChild(el('li', {text: b}));
+      s.appendChild(el('div', {class: 'warning-box'}, [el('strong', {text: 'At or beyond a limit'}), list]));
+    }
+    const table = el('table', {class: 'data utilisations'});
+    table.appendChild(el('tr', {}, ['bit MD', 'friction', 'buckled zones', 'fatigue (worst)', 'casing wear groove'].map((t) => el('th', {text: t}))));
+    for (const row of rows) table.appendChild(row);
+    s.appendChild(table);
   }
 
   // The readings as marker series by activity, and each model's on-bottom hook load through the drilling
