@@ -18,7 +18,7 @@
 #include "pipeline/roadmap_runs.hpp"
 
 namespace drillflex::pipeline {
-namespace {
+namespace roadmap_screens_test {
 
 constexpr double kGravity = 9.81;                     // m/s², the cases'
 constexpr double kBuoyedDensity = 7850.0 - 1200.0;    // kg/m³: steel less the 1200 kg/m³ mud
@@ -286,5 +286,5 @@ TEST(RoadmapScreens, CasingWearAccumulatesDownTheRoadmapByHand) {
   EXPECT_FALSE(std::isfinite(RoadmapCasingWear(hours, settings, points).back().groove_depth));
 }
 
-}  // namespace
+}  // namespace roadmap_screens_test
 }  // namespace drillflex::pipeline
