@@ -49,7 +49,7 @@ LimitsRecorder::LimitsRecorder(const model::ModelInput& input, const model::Buil
     stations_.push_back(static_cast<int>(i));
     // The MD as a static without wall offsets takes it (ComputeStringLimits): the bit's less s.
     const double s = stations[i].s;
-    envelope_.stations.push_back(StationRatings(input, s, input.trajectory ? input.bit_md - s : s, design_factor));
+    envelope_.stations.push_back(StationRatings(input, s, input.well ? input.bit_md - s : s, design_factor));
   }
   envelope_.largest.assign(stations.size(), NoValues());
   envelope_.when.assign(stations.size(), LimitValues{});

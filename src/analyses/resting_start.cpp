@@ -35,8 +35,8 @@ struct NodeStation {
 };
 
 std::vector<NodeStation> Stations(const model::ModelInput& input, const model::SystemModel& system) {
-  const well::Trajectory& trajectory = *input.trajectory;
-  const well::HoleProfile hole(input.hole);
+  const well::Trajectory& trajectory = input.well->trajectory;
+  const well::HoleProfile& hole = input.well->hole;
   std::vector<NodeStation> stations;
   for (int b = 0; b < static_cast<int>(system.bodies().size()); ++b) {
     const model::Body& body = system.bodies()[b];
@@ -69,7 +69,7 @@ double HelicalBucklingLoad(double bending_rigidity, double lateral_weight, doubl
 // the string buckles onto instead of on the low side (or, in a vertical hole, on the axis).
 void AddLoadDirections(const model::ModelInput& input, const model::SystemModel& system,
                        std::vector<NodeStation>& stations) {
-  const well::Trajectory& trajectory = *input.trajectory;
+  const well::Trajectory& trajectory = input.well->trajectory;
   const Vec3 down = Vec3::UnitZ();  // gravity along global +z (TVD)
   double tension = -input.operation.weight_on_bit;
   double previous_s = 0.0;
@@ -154,7 +154,7 @@ std::vector<Vec3> Offsets(const std::vector<NodeStation>& stations) {
 class RestingLine {
  public:
   RestingLine(const model::ModelInput& input, const std::vector<NodeStation>& stations, const std::vector<Vec3>& offsets)
-      : trajectory_(*input.trajectory), bit_md_(input.bit_md) {
+      : trajectory_(input.well->trajectory), bit_md_(input.bit_md) {
     for (std::size_t i = 0; i < stations.size(); ++i) {
       const double u = bit_md_ - stations[i].md;
       if (!u_.empty() && u <= u_.back()) continue;  // a joint's second node, or a station out of order
@@ -366,7 +366,7 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
 
 VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built) {
   const profile::Scope scope("static: resting start");
-  if (!input.trajectory || input.hole.empty()) throw LogicError("RestingStart: the string is not in a hole");
+  if (!input.well || input.well->hole.empty()) throw LogicError("RestingStart: the string is not in a hole");
   const model::SystemModel& system = built.system;
   std::vector<NodeStation> stations = Stations(input, system);
   AddLoadDirections(input, system, stations);

@@ -239,9 +239,9 @@ StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltM
                              const VecX* start) {
   StaticResult result =
       ToStaticResult(built, SolveStaticEquilibrium(input, built, settings, parameters, start), parameters);
-  if (input.trajectory) {
+  if (input.well) {
     if (const auto sensor = MwdSensorAt(input.string, settings.mwd_at)) {
-      result.mwd = ComputeMwdSag(result.nodes, *input.trajectory, *sensor);
+      result.mwd = ComputeMwdSag(result.nodes, input.well->trajectory, *sensor);
     }
   }
   return result;

@@ -35,7 +35,8 @@ model::ModelInput EffectiveInput(const model::ModelInput& input, const model::Lo
   effective.operation.torque_on_bit = load * parameters.torque_on_bit.value_or(input.operation.torque_on_bit);
   if (parameters.OverridesFriction()) {
     // Every hole section its coefficients under the block, the case's own where it gives none.
-    std::vector<well::HoleSection>& hole = effective.hole;
+    // (A well of its own: the input's is shared, read only.)
+    std::vector<well::HoleSection> hole = input.well ? input.well->hole.sections() : std::vector<well::HoleSection>{};
     model::LoadParameters unscaled = parameters;
     unscaled.friction_factor = 1.0;
     for (std::size_t i = 0; i < hole.size(); ++i) {
@@ -44,6 +45,7 @@ model::ModelInput EffectiveInput(const model::ModelInput& input, const model::Lo
       hole[i].friction = friction.tangential;
       hole[i].axial_friction = friction.axial;
     }
+    if (!hole.empty()) effective.well = model::MakeWellbore(input.well->trajectory, hole);
     if (hole.empty() && parameters.open_hole_friction) {
       effective.settings.contact.friction = parameters.open_hole_friction->tangential;
       effective.settings.contact.axial_friction = parameters.open_hole_friction->axial;

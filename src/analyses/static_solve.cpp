@@ -106,7 +106,7 @@ StaticOutcome SolveByEnergyMinimum(const model::ModelInput& input, const model::
 }
 
 bool InWell(const model::ModelInput& input) {
-  return input.trajectory && !input.hole.empty() && input.supports.empty();
+  return input.well && !input.well->hole.empty() && input.supports.empty();
 }
 
 }  // namespace

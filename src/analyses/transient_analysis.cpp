@@ -16,6 +16,7 @@
 #include "model/dynamic_problem.hpp"
 #include "model/lateral_fluid.hpp"
 #include "model/node_kinematics.hpp"
+#include "model/wall_contact.hpp"
 
 namespace drillflex::analyses {
 namespace {

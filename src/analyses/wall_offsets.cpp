@@ -87,10 +87,8 @@ void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<S
   const std::vector<ContactAtStation> contacts = ContactsByStation(built);
   const auto poses = system.Poses(q);
   const VecX rest = VecX::Zero(system.num_velocities());
-  // The hole shared by the model's contacts, for the nodes without a contact of their own; the
-  // aliasing shared_ptr does not own it (the model outlives this function).
-  const model::WallContactElement& any = *contacts.front().element;
-  const std::shared_ptr<const model::Wellbore> wellbore(std::shared_ptr<const model::Wellbore>(), &any.wellbore());
+  // The hole shared by the model's contacts, for the nodes without a contact of their own.
+  const std::shared_ptr<const model::Wellbore>& wellbore = contacts.front().element->wellbore();
 
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     StaticNodeResult& node = nodes[i];

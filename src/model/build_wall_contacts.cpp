@@ -17,8 +17,8 @@ std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& dra
   const ModelInput& input = draft.input;
   const std::vector<Body>& placed = draft.bodies;
   std::vector<ElementHandle<WallContactElement>> contacts;
-  if (!input.trajectory || input.hole.empty()) return contacts;
-  auto wellbore = std::make_shared<const Wellbore>(Wellbore{*input.trajectory, well::HoleProfile(input.hole)});
+  if (!input.well || input.well->hole.empty()) return contacts;
+  const std::shared_ptr<const Wellbore>& wellbore = input.well;  // shared by the contacts, not copied
   struct ContactNode { const Body* body; int node; double s; };
   std::vector<ContactNode> nodes;
   for (std::size_t b = 0; b < placed.size(); ++b) {

@@ -34,8 +34,7 @@ LateralFluid MakeLateralFluid(const ModelInput& input, const std::vector<Body>& 
   fluid.kinematic_viscosity = fluid.density > 0.0 ? input.fluid->viscosity / fluid.density : 0.0;
   fluid.added_mass_override = input.fluid->added_mass_coefficient_override;
   const double inside = input.fluid->internal_density.value_or(input.fluid->density);
-  std::optional<well::HoleProfile> hole;
-  if (input.trajectory && !input.hole.empty()) hole.emplace(input.hole);
+  const well::HoleProfile* hole = input.well && !input.well->hole.empty() ? &input.well->hole : nullptr;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Body& body = bodies[b];
     const AveragedAreas areas = AverageAreas(input.string.components.at(body.component));

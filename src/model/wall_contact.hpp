@@ -48,17 +48,9 @@
 
 #include "model/force_element.hpp"
 #include "model/node_force.hpp"
-#include "well/hole.hpp"
-#include "well/trajectory.hpp"
+#include "model/wellbore.hpp"
 
 namespace drillflex::model {
-
-// The hole the string lies in: the well path and the hole diameter along it. Shared (read only)
-// by all contact elements of a model.
-struct Wellbore {
-  well::Trajectory trajectory;
-  well::HoleProfile hole;
-};
 
 struct WallContactParameters {
   double contact_radius = 0.0;        // R_c, m (half the contact diameter: body, tool joint, blade)
@@ -105,7 +97,7 @@ class WallContactElement : public ForceElement {
   const WallContactParameters& parameters() const { return parameters_; }  // as built
   // The parameters under a parameter block: its friction coefficients, factor and sliding.
   WallContactParameters EffectiveParameters(const LoadParameters& load) const;
-  const Wellbore& wellbore() const { return *wellbore_; }
+  const std::shared_ptr<const Wellbore>& wellbore() const { return wellbore_; }  // shared with the model's input
 
   // Normal force, friction, contact MD and high-side angle at a state (thread-safe).
   WallContactResult Result(const ElementState& state) const;

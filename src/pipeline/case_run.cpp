@@ -297,7 +297,7 @@ CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const Run
   if (observer.note) {
     observer.note(fmt::format("model: {} bodies, {} coordinates", built.system.bodies().size(),
                               built.system.num_velocities()));
-    if (c.input.operation.hook_load && input.trajectory && input.supports.empty()) {
+    if (c.input.operation.hook_load && input.well && input.supports.empty()) {
       observer.note(fmt::format("operation: WOB {} from the hook load {} (the string's buoyed weight along the hole "
                                 "less it; the pipe above the model, to the surface, weighs {})",
                                 Show(c, input.operation.weight_on_bit, Quantity::WeightOnBit),

@@ -52,9 +52,9 @@ model::ModelInput HorizontalHoleInput(double bit_od = kBitOd, double bit_id = kB
   input.settings.modes_per_body = 6;
   input.settings.contact.stiffness = kContactStiffness;
   input.gravity = 9.81;
-  input.trajectory.emplace(
-      std::vector<well::SurveyStation>{{0.0, kInclination, kAzimuth}, {500.0, kInclination, kAzimuth}});
-  input.hole = {well::HoleSection{{}, kHoleDiameter, {}}};
+  input.well = model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, kInclination, kAzimuth},
+                                                                                     {500.0, kInclination, kAzimuth}}),
+                                   std::vector<well::HoleSection>{well::HoleSection{{}, kHoleDiameter, {}}});
   input.bit_md = kBitMd;
   model::Support bottom = testing::SupportAt(0.0, {model::kX, model::kY, model::kZ, model::kRx});
   model::Support top = testing::SupportAt(kBitLength + kPipeLength, {model::kY, model::kZ});

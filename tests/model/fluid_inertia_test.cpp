@@ -25,8 +25,9 @@ namespace {
 ModelInput HollowRodInHole() {
   ModelInput input = testing::RodInput(3, 5, 4);
   input.string.components[0].inner_diameter = 0.0254;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}});
-  input.hole = {well::HoleSection{std::nullopt, 0.1524, std::nullopt}};
+  input.well =
+      model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}}),
+                          std::vector<well::HoleSection>{well::HoleSection{std::nullopt, 0.1524, std::nullopt}});
   input.bit_md = 50.0;
   input.fluid = FluidConfig{1200.0, 0.02, std::nullopt, -1.0};
   return input;

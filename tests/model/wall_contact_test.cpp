@@ -128,7 +128,7 @@ ModelInput PipeInput(double length, int bodies, int elements, int modes, const W
   input.settings.elements_per_body = elements;
   input.settings.modes_per_body = modes;
   input.gravity = gravity;
-  input.trajectory = wellbore.trajectory;
+  input.well = MakeWellbore(wellbore.trajectory);  // the path alone: no hole, no contact
   input.bit_md = bit_md;
   return input;
 }
@@ -707,8 +707,9 @@ namespace {
 // default Ω_ε R_c for each contact circle, its own radius; the case's friction_velocity replaces it.
 TEST(WallContactBuilder, FrictionVelocityIsTheSpinTimesTheContactRadiusUnlessGiven) {
   ModelInput input = testing::RodInput(3, 5, 4);
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.5, 0.0}, {100.0, 0.5, 0.0}});
-  input.hole = {well::HoleSection{std::nullopt, 0.1524, std::nullopt}};
+  input.well =
+      model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, 0.5, 0.0}, {100.0, 0.5, 0.0}}),
+                          std::vector<well::HoleSection>{well::HoleSection{std::nullopt, 0.1524, std::nullopt}});
   input.bit_md = 50.0;
   input.gravity = 9.81;
   input.settings.contact.friction = 0.25;
