@@ -106,7 +106,7 @@ class EquilibriumSolver {
       solvers::NewtonOptions options = DefaultNewtonOptions();
       options.throw_on_failure = false;
       const VecX from = start != nullptr ? *start : model.ReferencePositions();
-      const solvers::StaticResult solved = solvers::SolveStatic(problem, from, options);
+      const solvers::NewtonResult solved = solvers::SolveStatic(problem, from, options);
       result = {solved.q, solved.converged};
     } else {
       const StaticMinimum minimum =

@@ -195,14 +195,7 @@ StaticResult ToStaticResult(const model::BuiltModel& built, const StaticOutcome&
                             const model::LoadParameters& parameters) {
   if (!outcome.converged) throw SolverError("static: " + outcome.failure);
   StaticResult result;
-  result.converged = true;
-  result.q = outcome.q;
-  result.iterations = outcome.iterations;
-  result.load_steps = outcome.load_steps;
-  result.residual_norm = outcome.residual_norm;
-  result.method = outcome.method;
-  result.warnings = outcome.warnings;
-  result.stable = outcome.stable;
+  static_cast<StaticOutcome&>(result) = outcome;
   return WithResults(built, std::move(result), parameters);
 }
 

@@ -140,7 +140,7 @@ FrictionContinuation ContinueInFriction(const model::BuiltModel& built, const St
   continuation.throw_on_failure = false;
   continuation.log = settings.log;
   if (settings.log) settings.log("static: sliding, the friction from 0 to its value");
-  const solvers::StaticResult moving = solvers::SolveStatic(problem, at_rest, continuation);
+  const solvers::NewtonResult moving = solvers::SolveStatic(problem, at_rest, continuation);
   if (settings.log) {
     settings.log(fmt::format("static: friction continuation {} after {} Newton iterations in {} steps",
                              moving.converged ? "converged" : "stopped", moving.iterations, moving.load_steps));

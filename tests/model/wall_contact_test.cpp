@@ -606,7 +606,7 @@ StaticString SolveLyingString(double inclination_deg) {
   solvers::NewtonOptions options;
   options.increment_tolerance = 1e-10;
   options.line_search.enabled = false;
-  const solvers::StaticResult result = solvers::SolveStatic(problem, s.m.system->ReferencePositions(), options);
+  const solvers::NewtonResult result = solvers::SolveStatic(problem, s.m.system->ReferencePositions(), options);
   EXPECT_TRUE(result.converged);
   std::printf("[ measure  ] lying string at %.0f deg: %d iterations, %d load steps (%d rejected), |R| = %.2e N\n",
               inclination_deg, result.iterations, result.load_steps, result.rejected_steps, result.residual_norm);
