@@ -28,7 +28,7 @@ void CheckWellAndString(const model::ModelInput& input) {
                                  input.bit_md, start));
   }
   const auto& components = input.string.components;
-  for (std::size_t i = 0; i < components.size(); ++i) {
+  for (Index i = 0; i < std::ssize(components); ++i) {
     const model::Component& component = components[i];
     if (input.materials.count(component.material) == 0) {
       throw InputError({"", component.source_line, 0}, fmt::format("string[{}].material", i),
@@ -82,8 +82,8 @@ std::vector<double> CutMds(const model::ModelInput& input, double max_element_le
   std::vector<double> split{cuts.front()};
   for (std::size_t i = 1; i < cuts.size(); ++i) {
     const double length = cuts[i - 1] - cuts[i];
-    const int pieces = std::max(1, static_cast<int>(std::ceil(length / max_element_length - 1e-9)));
-    for (int k = 1; k < pieces; ++k) split.push_back(cuts[i - 1] - length * k / pieces);
+    const Index pieces = std::max<Index>(1, std::lround(std::ceil(length / max_element_length - 1e-9)));
+    for (Index k = 1; k < pieces; ++k) split.push_back(cuts[i - 1] - length * k / pieces);
     split.push_back(cuts[i]);
   }
   return split;

@@ -79,7 +79,7 @@ struct ContactReport {
   double normal_force = 0.0;      // N
   double friction_force = 0.0;    // N (magnitude)
   double high_side_angle = 0.0;   // rad: 0 high side, π/2 right, π low side
-  int component = 0;              // index in the string
+  Index component = 0;              // index in the string
   Vec3 contact_point = Vec3::Zero();  // where the string touches the wall (global), m
   Vec3 normal = Vec3::Zero();         // unit, from the hole axis toward the contact (global)
 };
@@ -139,7 +139,7 @@ std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, 
 // The same at the listed stations only (indices into StringStations(built.system)), in that order: a
 // transient run's samples (the bit, the top, the probes) without the forces of the whole string.
 std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
-                                                const model::LoadParameters& load, std::span<const int> station_indices);
+                                                const model::LoadParameters& load, std::span<const Index> station_indices);
 std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q,
                                              const model::LoadParameters& parameters = 1.0);
 

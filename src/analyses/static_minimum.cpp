@@ -39,7 +39,7 @@ model::ModelInput EffectiveInput(const model::ModelInput& input, const model::Lo
     std::vector<well::HoleSection> hole = input.well ? input.well->hole.sections() : std::vector<well::HoleSection>{};
     model::LoadParameters unscaled = parameters;
     unscaled.friction_factor = 1.0;
-    for (std::size_t i = 0; i < hole.size(); ++i) {
+    for (Index i = 0; i < std::ssize(hole); ++i) {
       const model::WallFriction friction =
           model::EffectiveFriction(model::SectionFriction(hole[i], input.settings.contact), unscaled);
       hole[i].friction = friction.tangential;

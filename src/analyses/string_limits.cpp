@@ -95,7 +95,7 @@ NodeLimits StationRatings(const model::ModelInput& input, double s, double md, d
   node.s = s;
   node.md = md;
   const model::Component& component = model::ComponentAt(input.string, s);
-  node.component = static_cast<int>(&component - input.string.components.data());
+  node.component = &component - input.string.components.data();
   if (component.type != model::ComponentType::Bit) {
     if (component.yield_strength) {
       node.yield = *component.yield_strength;
@@ -116,7 +116,7 @@ NodeLimits StationRatings(const model::ModelInput& input, double s, double md, d
 }
 
 void LoadStationLimits(const model::ModelInput& input, const StaticNodeResult& result, NodeLimits& node) {
-  const model::Component& component = input.string.components[static_cast<std::size_t>(node.component)];
+  const model::Component& component = input.string.components[node.component];
   node.von_mises_stress =
       model::VonMisesStress(model::RatedSection(component), result.axial_force, result.torque, result.bending_moment);
   if (component.type != model::ComponentType::Bit) {
@@ -144,7 +144,7 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
     const double md = result.has_wall ? result.md : (input.well ? input.bit_md - result.s : result.s);
     NodeLimits node = StationRatings(input, result.s, md, design_factor);
     LoadStationLimits(input, result, node);
-    const model::Component& component = components[static_cast<std::size_t>(node.component)];
+    const model::Component& component = components[node.component];
     if (std::isfinite(node.yield) && !component.yield_strength) assumed.insert(node.component);
     any_torque_limit = any_torque_limit || std::isfinite(node.makeup_torque);
     Consider(limits.yield, "yield", node.stress_utilisation, node);

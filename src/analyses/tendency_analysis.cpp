@@ -75,7 +75,7 @@ std::vector<Variant> Variants(const model::ModelInput& input, const TendencySett
     return variants;
   }
   if (!(input.operation.rotary_speed > 0.0)) return {{input, 1.0}};
-  for (std::size_t i = 0; i < input.string.components.size(); ++i) {
+  for (Index i = 0; i < std::ssize(input.string.components); ++i) {
     const model::Component& component = input.string.components[i];
     if (!component.bend_angle || !(*component.bend_angle > 0.0)) continue;
     std::vector<Variant> variants;
@@ -101,7 +101,7 @@ class Search {
                        ? FormationDeviation(*settings.formation, input.well->trajectory.Frame(input.bit_md))
                        : HoleCurvature{}) {}
 
-  int variant_count() const { return static_cast<int>(variants_.size()); }
+  int variant_count() const { return std::ssize(variants_); }
   int statics() const { return statics_count_; }
   int toolfaces() const { return settings_.rss ? 1 : variant_count(); }
 
@@ -112,7 +112,7 @@ class Search {
     TendencyPoint point;
     point.curvature = AsCurvature(kappa);
     StaticResult first;
-    for (std::size_t v = 0; v < variants_.size(); ++v) {
+    for (Index v = 0; v < std::ssize(variants_); ++v) {
       const double share = variants_[v].weight;
       StaticResult equilibrium = Solve(v, kappa, hole);
       const BitReport& bit = *equilibrium.bit;
@@ -317,10 +317,10 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
                                                                            : kTendencyDifferenceStep;
     jacobian.col(j) = (deviation_at(kappa + step) - d) / step[j];
   }
-  std::size_t answer = 0;  // index of the current point in search.evaluated()
+  Index answer = 0;  // index of the current point in search.evaluated()
   int outward = 0;         // consecutive steps that wanted to leave the range
   bool converged = false;
-  while (static_cast<int>(search.evaluated().size()) < kTendencyEvaluations) {
+  while (std::ssize(search.evaluated()) < kTendencyEvaluations) {
     if (std::abs(jacobian.determinant()) < 1e-300 || !jacobian.allFinite()) {
       throw SolverError("tendency: the bit's deviation does not change with the hole's curvature (a singular Jacobian)");
     }
@@ -340,7 +340,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
     jacobian += ((d_next - d) - jacobian * step) * step.transpose() / step.squaredNorm();
     kappa = bounded;
     d = d_next;
-    answer = search.evaluated().size() - 1;
+    answer = std::ssize(search.evaluated()) - 1;
   }
   if (!converged) {
     // No root found: the deviation at both ends of the range says which way the bit goes there.
@@ -366,7 +366,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   result.toolfaces = search.toolfaces();
   for (const Evaluated& e : search.evaluated()) result.trace.push_back(e.point);
   result.statics = search.statics();
-  result.steady_index = static_cast<int>(answer);
+  result.steady_index = answer;
   result.equilibrium = std::move(steady.equilibrium);
   result.three_point = settings.rss && settings.rss->type == RssType::Point
                             ? PointTheBitThreePoint(input.string, *settings.rss)

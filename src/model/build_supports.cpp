@@ -38,7 +38,7 @@ std::vector<ElementHandle<SupportElement>> PlaceSupports(ModelDraft& draft) {
       frame = Quat::FromTwoVectors(frame.col(0), up_hole).toRotationMatrix() * frame;
     }
     Vec6 stiffness = support.stiffness_scale * kSupportStiffnessFactor * SectionCouplingStiffness(body, factor);
-    for (int d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
+    for (Index d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
     const bool holds_bit = std::pair{b, node} == FindNodeAt(placed, 0.0);
     handles.push_back(draft.elements.Add<SupportElement>(&body, node, position, frame, stiffness,
                                                          SpringDamping(stiffness, ElementInertia(body)), holds_bit));

@@ -52,7 +52,7 @@ TopDrives PlaceDrives(ModelDraft& draft) {
   TopDrives drives;
   if (!input.top_drive && !input.block) return drives;
   const Body& body = draft.bodies[draft.top.first];
-  const int node = draft.top.second;
+  const Index node = draft.top.second;
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   const Vec3 position = NodeReferencePosition(body, node);
   // As stiff as the support it replaces, so the start equilibrium holds at t = 0 (drives.hpp).

@@ -270,10 +270,10 @@ void CheckBeforeSolving(const io::Case& c, const AnalysisRequest& request) {
   }
   if (request.vibration) {
     const analyses::VibrationSettings settings = CaseVibrationSettings(c);
-    for (std::size_t i = 0; i < settings.excitations.size(); ++i) {
+    for (Index i = 0; i < std::ssize(settings.excitations); ++i) {
       if (settings.excitations[i].type != analyses::ExcitationType::Motor) continue;
       try {
-        analyses::MotorSpeed(settings.excitations[i], c.input, static_cast<int>(i));
+        analyses::MotorSpeed(settings.excitations[i], c.input, i);
       } catch (const InputError& e) {
         if (!e.location().file.empty()) throw;
         throw InputError({c.file, e.location().line, e.location().column}, e.key_path(), e.message());

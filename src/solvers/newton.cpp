@@ -33,7 +33,7 @@ std::string LargestEntry(const StaticProblem& problem, const VecX& residual) {
   if (residual.size() == 0 || !residual.allFinite()) return "no finite residual";
   Eigen::Index row = 0;
   const double largest = residual.cwiseAbs().maxCoeff(&row);
-  return fmt::format("largest {:.3e} at {}", largest, problem.DescribeCoordinate(static_cast<int>(row)));
+  return fmt::format("largest {:.3e} at {}", largest, problem.DescribeCoordinate(row));
 }
 
 // Newton iterations at the load factor currently set on the problem.

@@ -235,7 +235,7 @@ TEST(WallOffsets, ResultsAtListedStationsAreTheWholeStringsThere) {
   }
   ASSERT_GE(joint, 0);
   const int top = static_cast<int>(stations.size()) - 1;
-  const std::vector<int> listed = {top, 0, joint, top / 2, 0};
+  const std::vector<Index> listed = {top, 0, joint, top / 2, 0};
   std::vector<StaticNodeResult> all = StaticNodeResults(s.built, s.result.q, 1.0);
   AddWallOffsets(s.built, s.result.q, all);
   std::vector<StaticNodeResult> some = StaticNodeResults(s.built, s.result.q, 1.0, listed);
@@ -256,7 +256,7 @@ TEST(WallOffsets, ResultsAtListedStationsAreTheWholeStringsThere) {
     EXPECT_EQ(got.clearance, expected.clearance) << listed[i];
   }
   EXPECT_GT(all[joint].force.norm(), 0.0);
-  EXPECT_THROW(AddWallOffsets(s.built, s.result.q, some, std::vector<int>{0}), std::exception);
+  EXPECT_THROW(AddWallOffsets(s.built, s.result.q, some, std::vector<Index>{0}), std::exception);
 }
 
 TEST(WallOffsets, WithoutAWellNothingIsSet) {

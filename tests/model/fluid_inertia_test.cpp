@@ -63,8 +63,8 @@ RandomState MakeRandomState(const SystemModel& model, std::mt19937& rng) {
 class MotionPartProblem : public solvers::Problem {
  public:
   explicit MotionPartProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
     return model_.Residual(t, q, v, a, 1.0) - model_.Residual(t, q, Zero(), Zero(), 1.0);
@@ -85,8 +85,8 @@ class MotionPartProblem : public solvers::Problem {
 class FluidProblem : public solvers::Problem {
  public:
   explicit FluidProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double, const VecX& q, const VecX& v, const VecX& a) const override {
     VecX residual = VecX::Zero(num_velocities());

@@ -53,8 +53,8 @@ class ForwardedElement : public ForceElement {
 class ElementsProblem : public solvers::Problem {
  public:
   explicit ElementsProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX&) const override {
     VecX residual = VecX::Zero(num_velocities());
@@ -307,7 +307,7 @@ TEST(NodeForceTest, MotionDependentForcesMatchCentralDifferences) {
     std::vector<std::unique_ptr<ForceElement>> elements;
     std::mt19937 rng(3);
     for (const Body& body : bodies) {
-      for (int k : {0, 2, body.node_count() - 1}) {
+      for (const Index k : {Index{0}, Index{2}, body.node_count() - 1}) {
         elements.push_back(std::make_unique<SyntheticNodeForce>(&body, k, at_point, rng));
       }
     }

@@ -297,8 +297,8 @@ class ReusableChain final : public StaticProblem {
  public:
   ReusableChain(int n, double k, double k3, double load, bool reusable = true)
       : chain_(n, k, k3, load), reusable_(reusable) {}
-  int num_positions() const override { return chain_.num_positions(); }
-  int num_velocities() const override { return chain_.num_velocities(); }
+  Index num_positions() const override { return chain_.num_positions(); }
+  Index num_velocities() const override { return chain_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return chain_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
     return chain_.Residual(t, q, v, a);
@@ -372,8 +372,8 @@ TEST(SolveStatic, RejectsAStartOfTheWrongSize) {
 // tension). From rest, Newton's first step wants x₁ = 1/ε = 1e6.
 class SoftAndStiff final : public StaticProblem {
  public:
-  int num_positions() const override { return 2; }
-  int num_velocities() const override { return 2; }
+  Index num_positions() const override { return 2; }
+  Index num_velocities() const override { return 2; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
     VecX r(2);
@@ -469,8 +469,8 @@ TEST(SolveStatic, MassShiftEndGameFinishesWithPlainNewtonOnceNearTheRoot) {
 class FarStiffSprings final : public StaticProblem {
  public:
   explicit FarStiffSprings(bool tells_resolution) : tells_resolution_(tells_resolution) {}
-  int num_positions() const override { return 2; }
-  int num_velocities() const override { return 2; }
+  Index num_positions() const override { return 2; }
+  Index num_velocities() const override { return 2; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
     const double first = kStiffness * (q[0] - kWall), second = kStiffness * (q[1] - q[0] - kLength);
