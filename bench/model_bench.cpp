@@ -103,7 +103,7 @@ model::BuiltModel Build(const model::ModelInput& input) {
   return model::BuildSystemModel(input, cache);
 }
 
-solvers::StaticResult SolveStatic(const model::SystemModel& system) {
+solvers::NewtonResult SolveStatic(const model::SystemModel& system) {
   model::StaticModelProblem problem(system);
   return solvers::SolveStatic(problem, system.ReferencePositions(), ModelNewtonOptions());
 }
@@ -133,13 +133,13 @@ void BuildBenchmark(benchmark::State& state, const model::ModelInput& input) {
 // so the lateral load cannot go on together with the tension that stiffens it. Where `prestress`
 // is given (the same string with its axial loads only) it is solved first, and the full model
 // then by Newton at full load from that stretched state.
-solvers::StaticResult SolveStaged(const model::SystemModel& system, const model::SystemModel* prestress) {
+solvers::NewtonResult SolveStaged(const model::SystemModel& system, const model::SystemModel* prestress) {
   if (prestress == nullptr) return SolveStatic(system);
-  const solvers::StaticResult stretched = SolveStatic(*prestress);
+  const solvers::NewtonResult stretched = SolveStatic(*prestress);
   model::StaticModelProblem problem(system);
   solvers::NewtonOptions options = ModelNewtonOptions();
   options.load_stepping.enabled = false;
-  solvers::StaticResult result = solvers::SolveStatic(problem, stretched.q, options);
+  solvers::NewtonResult result = solvers::SolveStatic(problem, stretched.q, options);
   result.iterations += stretched.iterations;
   return result;
 }
@@ -166,7 +166,7 @@ void StaticBenchmark(benchmark::State& state, const model::ModelInput& input,
   const model::BuiltModel built = Build(input);
   std::optional<model::BuiltModel> prestress;
   if (prestress_input) prestress.emplace(Build(*prestress_input));
-  solvers::StaticResult result;
+  solvers::NewtonResult result;
   for (auto _ : state) {
     result = SolveStaged(built.system, prestress ? &prestress->system : nullptr);
     benchmark::DoNotOptimize(result.q.data());

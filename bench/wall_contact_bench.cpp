@@ -39,7 +39,7 @@ const Setup& TheSetup(bool prescribed) {
   pipe.length = 30.0;
   input.string.components.push_back(pipe);
   input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, 7850.0};
-  input.trajectory = wellbore->trajectory;
+  input.well = MakeWellbore(wellbore->trajectory);  // the path alone: no hole, no contact
   input.bit_md = 150.0;
   cms::ReductionCache cache;
   s.built = std::make_unique<BuiltModel>(BuildSystemModel(input, cache));

@@ -28,7 +28,7 @@ py::dict Calibrate(const CaseHandle& c, const std::string& readings_path, const 
   {
     py::gil_scoped_release release;
     io::RigReadingsOptions options;
-    if (c.c->input.trajectory) options.deepest_md = c.c->input.trajectory->end_md();
+    if (c.c->input.well) options.deepest_md = c.c->input.well->trajectory.end_md();
     const io::RigReadings readings = io::ReadRigReadings(readings_path, options);
     const pipeline::CalibrationResult result = pipeline::Calibrate(*c.c, readings, settings);
     files = pipeline::ComposeCalibrationFiles(*c.c, readings, result, "", false, 0.0);

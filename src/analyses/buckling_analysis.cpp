@@ -46,7 +46,7 @@ class EquilibriumSolver {
   EquilibriumSolver(const model::ModelInput& input, const model::BuiltModel& built, const StaticSettings& settings,
                     bool scale_wob)
       : input_(input), built_(built), settings_(settings), scale_wob_(scale_wob),
-        in_well_(input.trajectory.has_value() && !input.hole.empty() && input.supports.empty()) {
+        in_well_(input.well && !input.well->hole.empty() && input.supports.empty()) {
     input_.static_sliding.reset();
   }
 
@@ -106,7 +106,7 @@ class EquilibriumSolver {
       solvers::NewtonOptions options = DefaultNewtonOptions();
       options.throw_on_failure = false;
       const VecX from = start != nullptr ? *start : model.ReferencePositions();
-      const solvers::StaticResult solved = solvers::SolveStatic(problem, from, options);
+      const solvers::NewtonResult solved = solvers::SolveStatic(problem, from, options);
       result = {solved.q, solved.converged};
     } else {
       const StaticMinimum minimum =
@@ -526,7 +526,7 @@ SinusoidalBucklingScreen ScreenSinusoidalBuckling(const model::ModelInput& input
     while (b + 1 < model.bodies().size() && model.bodies()[b + 1].s_start <= node.s) ++b;
     const model::Body& body = model.bodies()[b];
     const double weight = std::abs(model::BuoyedWeightPerLength(body, input));
-    const double inclination = input.trajectory->Inclination(node.md);
+    const double inclination = input.well->trajectory.Inclination(node.md);
     const double clearance = std::max(node.hole_offset + node.clearance, 1e-6);  // r, m
     const double sinusoidal = 2.0 * std::sqrt(body.bending_rigidity * weight * std::sin(inclination) / clearance);
     // Every load × λ: F ∝ λ, F_sin ∝ √λ. The WOB × μ: F grows by (μ − 1) WOB, F_sin stays.

@@ -22,7 +22,7 @@ SparseMat StaticTangent(const model::SystemModel& model, const VecX& q, const mo
 // ω₁² of the string at q: the lowest eigenvalue of the (symmetrized) tangent above the rigid-body
 // range; the lowest non-zero one if all are rigid-body-like.
 double LowestElasticEigenvalue(const model::SystemModel& model, const VecX& q) {
-  const int count = std::min<int>(8, model.num_velocities());
+  const int count = std::min<Index>(8, model.num_velocities());
   const solvers::ModalResult modes = LowestModes(Linearize(model, q, 1.0), count);
   const double largest = std::abs(modes.eigenvalues.tail<1>()[0]);
   for (Eigen::Index i = 0; i < modes.eigenvalues.size(); ++i) {
@@ -35,7 +35,7 @@ double LowestElasticEigenvalue(const model::SystemModel& model, const VecX& q) {
 
 RelaxationResult SolveByDynamicRelaxation(const model::SystemModel& model, const RelaxationOptions& options,
                                           const model::LoadParameters& parameters) {
-  const int n = model.num_velocities();
+  const Index n = model.num_velocities();
   const VecX zero = VecX::Zero(n);
   RelaxationResult result;
   result.q = model.ReferencePositions();

@@ -25,10 +25,10 @@ constexpr double kLeastFrequency = 2.0 * kPi * kNearZeroFrequencyHz;
 // The basis: the lowest 2·count + 10 undamped modes, plus as many as are near zero or of negative
 // stiffness among them (they hold no whirl of interest but take places in the basis).
 solvers::ModalResult UndampedBasis(const SparseMat& stiffness, const SparseMat& mass, int count) {
-  const int n = static_cast<int>(stiffness.rows());
-  const int wanted = std::min(n, 2 * count + 10);
+  const Index n = stiffness.rows();
+  const Index wanted = std::min<Index>(n, 2 * count + 10);
   solvers::ModalResult modal = solvers::SolveModes(stiffness, mass, wanted);
-  const auto excluded = static_cast<int>((modal.eigenvalues.array() < kLeastFrequency * kLeastFrequency).count());
+  const Index excluded = (modal.eigenvalues.array() < kLeastFrequency * kLeastFrequency).count();
   if (excluded > 0 && wanted < n) modal = solvers::SolveModes(stiffness, mass, std::min(n, wanted + excluded));
   return modal;
 }
@@ -57,7 +57,7 @@ struct GyroscopicModeSolver::Data {
     m = mass;
     d = damping + spin * gyroscopic;
     const std::vector<solvers::FrequencyTermCoefficients> c = SweepTermCoefficients(sweep, frequency);
-    for (std::size_t g = 0; g < annulus.size(); ++g) {
+    for (Index g = 0; g < std::ssize(annulus); ++g) {
       m += c[g].mass * annulus[g];
       d += c[g].damping * annulus[g];
     }
@@ -72,7 +72,7 @@ struct GyroscopicModeSolver::Data {
     MatX m, d;
     for (int iteration = 0; iteration < 30; ++iteration) {
       MatricesAt(s.imag(), spin, m, d);
-      const solvers::ComplexModes modes = solvers::SolveDampedModes(stiffness, d, m, static_cast<int>(stiffness.rows()));
+      const solvers::ComplexModes modes = solvers::SolveDampedModes(stiffness, d, m, stiffness.rows());
       Eigen::Index best = 0;
       double likeness = -1.0;
       for (Eigen::Index j = 0; j < modes.eigenvalues.size(); ++j) {
@@ -152,7 +152,7 @@ GyroscopicModeSolver::GyroscopicModeSolver(const model::SystemModel& model, cons
   d.mass = 0.5 * (d.mass + d.mass.transpose()).eval();
   d.damping = Project(d.sweep.system.damping, d.basis);
   d.gyroscopic = Project(model::ComputeGyroscopicMatrix(model, q), d.basis);
-  for (std::size_t g = 0; g < d.sweep.annulus_radii.size(); ++g) d.annulus.push_back(Project(d.sweep.terms[g], d.basis));
+  for (Index g = 0; g < std::ssize(d.sweep.annulus_radii); ++g) d.annulus.push_back(Project(d.sweep.terms[g], d.basis));
   d.poses = model.Poses(q);
   d.stations = StringStations(model);
 }
@@ -161,14 +161,14 @@ GyroscopicModeSolver::~GyroscopicModeSolver() = default;
 GyroscopicModeSolver::GyroscopicModeSolver(GyroscopicModeSolver&&) noexcept = default;
 GyroscopicModeSolver& GyroscopicModeSolver::operator=(GyroscopicModeSolver&&) noexcept = default;
 
-int GyroscopicModeSolver::basis_size() const { return static_cast<int>(data_->basis.cols()); }
+Index GyroscopicModeSolver::basis_size() const { return data_->basis.cols(); }
 
 ModesResult GyroscopicModeSolver::Solve(double spin, ModeKind kind, bool shapes) const {
   const Data& d = *data_;
   const bool viscous = d.sweep.fluid != nullptr && d.fluid.frequency_dependent();
   MatX m, damping;
   d.MatricesAt(0.0, spin, m, damping);
-  const int r = static_cast<int>(d.stiffness.rows());
+  const Index r = d.stiffness.rows();
   const solvers::ComplexModes base = solvers::SolveDampedModes(d.stiffness, damping, m, r);
   std::vector<Eigen::Index> order;
   for (Eigen::Index j = 0; j < base.eigenvalues.size(); ++j) {
@@ -186,7 +186,7 @@ ModesResult GyroscopicModeSolver::Solve(double spin, ModeKind kind, bool shapes)
     ModeResult mode = d.Describe(s, x, shapes);
     if (kind == ModeKind::Lateral && mode.kind != ModeKind::Lateral) continue;
     result.modes.push_back(std::move(mode));
-    if (static_cast<int>(result.modes.size()) == d.count) break;
+    if (std::ssize(result.modes) == d.count) break;
   }
   std::stable_sort(result.modes.begin(), result.modes.end(),
                    [](const ModeResult& a, const ModeResult& b) { return a.frequency_hz < b.frequency_hz; });
@@ -216,8 +216,8 @@ CampbellResult ComputeCampbell(const model::SystemModel& model, const VecX& q, c
   const GyroscopicModeSolver solver(model, q, settings.count, fluid);
   CampbellResult result;
   result.basis_size = solver.basis_size();
-  const int points = static_cast<int>(std::floor((range.to - range.from) / range.step + 1e-9)) + 1;
-  for (int i = 0; i < points; ++i) {
+  const Index points = std::lround(std::floor((range.to - range.from) / range.step + 1e-9)) + 1;
+  for (Index i = 0; i < points; ++i) {
     CampbellPoint point;
     point.rotary_speed = range.from + i * range.step;
     point.modes = solver.Solve(point.rotary_speed, settings.kind, false).modes;
@@ -230,10 +230,10 @@ CampbellResult ComputeCampbell(const model::SystemModel& model, const VecX& q, c
 
 std::vector<CampbellCrossing> FindSynchronousCrossings(const std::vector<CampbellPoint>& points) {
   std::vector<CampbellCrossing> crossings;
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+  for (Index i = 0; i + 1 < std::ssize(points); ++i) {
     const CampbellPoint &a = points[i], &b = points[i + 1];
-    const std::size_t branches = std::min(a.modes.size(), b.modes.size());
-    for (std::size_t j = 0; j < branches; ++j) {
+    const Index branches = std::min(std::ssize(a.modes), std::ssize(b.modes));
+    for (Index j = 0; j < branches; ++j) {
       // g = ω_j − Ω (rad/s) changes sign across the crossing; the j-th lowest frequency is continuous.
       const double ga = 2.0 * kPi * a.modes[j].frequency_hz - a.rotary_speed;
       const double gb = 2.0 * kPi * b.modes[j].frequency_hz - b.rotary_speed;
@@ -242,7 +242,7 @@ std::vector<CampbellCrossing> FindSynchronousCrossings(const std::vector<Campbel
       CampbellCrossing crossing;
       crossing.rotary_speed = a.rotary_speed + t * (b.rotary_speed - a.rotary_speed);
       crossing.frequency_hz = a.modes[j].frequency_hz + t * (b.modes[j].frequency_hz - a.modes[j].frequency_hz);
-      crossing.branch = static_cast<int>(j);
+      crossing.branch = j;
       crossing.whirl = (t < 0.5 ? a : b).modes[j].whirl;
       crossings.push_back(crossing);
     }

@@ -39,7 +39,7 @@ namespace drillflex::analyses {
 struct CampbellCrossing {
   double rotary_speed = 0.0;  // rad/s
   double frequency_hz = 0.0;
-  int branch = 0;             // the mode's rank by frequency (0: the lowest)
+  Index branch = 0;             // the mode's rank by frequency (0: the lowest)
   Whirl whirl = Whirl::None;  // of the branch at the nearer sweep point
 };
 
@@ -51,7 +51,7 @@ struct CampbellPoint {
 struct CampbellResult {
   std::vector<CampbellPoint> points;
   std::vector<CampbellCrossing> synchronous;  // crossings with 1×, ascending in speed
-  int basis_size = 0;
+  Index basis_size = 0;
 };
 
 // The projected problem, built once for many spin rates.
@@ -67,7 +67,7 @@ class GyroscopicModeSolver {
   // looking down-hole); with shapes (ModeResult::displacement, rotation, vector: the real part
   // of the complex mode with its largest coordinate real) when `shapes`.
   ModesResult Solve(double spin, ModeKind kind, bool shapes) const;
-  int basis_size() const;
+  Index basis_size() const;
 
  private:
   struct Data;

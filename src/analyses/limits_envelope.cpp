@@ -45,11 +45,11 @@ LimitsRecorder::LimitsRecorder(const model::ModelInput& input, const model::Buil
     : input_(input), model_(model) {
   envelope_.design_factor = design_factor;
   const std::vector<Station> stations = StringStations(model.system);
-  for (std::size_t i = 0; i < stations.size(); ++i) {
-    stations_.push_back(static_cast<int>(i));
+  for (Index i = 0; i < std::ssize(stations); ++i) {
+    stations_.push_back(i);
     // The MD as a static without wall offsets takes it (ComputeStringLimits): the bit's less s.
     const double s = stations[i].s;
-    envelope_.stations.push_back(StationRatings(input, s, input.trajectory ? input.bit_md - s : s, design_factor));
+    envelope_.stations.push_back(StationRatings(input, s, input.well ? input.bit_md - s : s, design_factor));
   }
   envelope_.largest.assign(stations.size(), NoValues());
   envelope_.when.assign(stations.size(), LimitValues{});
@@ -60,7 +60,7 @@ void LimitsRecorder::Read(double time, const VecX& q) {
   const std::vector<StaticNodeResult> nodes = StaticNodeResults(model_, q, 1.0, stations_);
   LimitValues at_sample = NoValues();
   std::array<std::size_t, kEnvelopeLimits> where{};
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
+  for (Index i = 0; i < std::ssize(nodes); ++i) {
     NodeLimits node = envelope_.stations[i];
     LoadStationLimits(input_, nodes[i], node);
     for (std::size_t k = 0; k < kEnvelopeLimits; ++k) {

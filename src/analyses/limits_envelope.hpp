@@ -53,7 +53,7 @@ class LimitsRecorder {
  private:
   const model::ModelInput& input_;
   const model::BuiltModel& model_;
-  std::vector<int> stations_;  // every station's index (analyses::StringStations)
+  std::vector<Index> stations_;  // every station's index (analyses::StringStations)
   LimitsEnvelope envelope_;
 };
 

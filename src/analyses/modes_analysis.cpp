@@ -20,11 +20,11 @@ namespace drillflex::analyses {
 EnergySplit SplitKineticEnergy(const model::SystemModel& model, const std::vector<model::BodyPose>& poses,
                                const VecX& v) {
   EnergySplit split;
-  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+  for (Index b = 0; b < std::ssize(model.bodies()); ++b) {
     const model::Body& body = model.bodies()[b];
     const cms::ReducedBody& reduced = *body.reduced;
     const VecX body_velocity = v.segment(body.v_offset, body.velocity_count());
-    for (int k = 0; k < body.node_count(); ++k) {
+    for (Index k = 0; k < body.node_count(); ++k) {
       const model::NodeRates rates = model::ComputeBodyFrameNodeRates(body, poses[b], k, body_velocity);
       const Vec3& t = rates.translation;
       const Vec3& w = rates.rotation;
@@ -54,7 +54,7 @@ void FillShape(const model::SystemModel& model, const std::vector<model::BodyPos
   }
   const std::vector<Vec3>& measure = mode.kind == ModeKind::Torsional ? mode.rotation : mode.displacement;
   std::size_t largest = 0;
-  for (std::size_t i = 0; i < measure.size(); ++i) {
+  for (Index i = 0; i < std::ssize(measure); ++i) {
     if (measure[i].norm() > measure[largest].norm()) largest = i;
   }
   if (measure.empty() || measure[largest].norm() == 0.0) return;
@@ -101,7 +101,7 @@ void SetFrequencyAndDamping(const model::SystemModel& model, const VecX& q, cons
   if (fluid && !fluid->empty()) squares = model::LateralNodeSquares(model, *fluid, q, phi);
   auto fluid_terms = [&](double omega) {
     model::NodeFluidTerms sum;
-    for (std::size_t k = 0; k < squares.size(); ++k) {
+    for (Index k = 0; k < std::ssize(squares); ++k) {
       const model::NodeFluidTerms terms = model::ComputeNodeFluidTerms(*fluid, k, omega);
       sum.mass += terms.mass * squares[k];
       sum.damping += terms.damping * squares[k];
@@ -110,7 +110,7 @@ void SetFrequencyAndDamping(const model::SystemModel& model, const VecX& q, cons
   };
   double omega = std::sqrt(mode.eigenvalue);
   if (fluid && fluid->frequency_dependent()) {
-    for (int iteration = 0; iteration < 100; ++iteration) {
+    for (Index iteration = 0; iteration < 100; ++iteration) {
       const double next = std::sqrt(std::max(0.0, stiffness / (steel + fluid_terms(omega).mass)));
       const bool done = std::abs(next - omega) <= 1e-12 * omega;
       omega = next;
@@ -136,9 +136,9 @@ MatX RigidFields(const model::SystemModel& model, const VecX& q) {
   for (const model::BodyPose& pose : poses) centroid += pose.r;
   if (!poses.empty()) centroid /= static_cast<double>(poses.size());
   MatX fields = MatX::Zero(model.num_velocities(), 6);
-  for (std::size_t b = 0; b < poses.size(); ++b) {
-    const int offset = model.bodies()[b].v_offset;
-    for (int axis = 0; axis < 3; ++axis) {
+  for (Index b = 0; b < std::ssize(poses); ++b) {
+    const Index offset = model.bodies()[b].v_offset;
+    for (Index axis = 0; axis < 3; ++axis) {
       const Vec3 unit = Vec3::Unit(axis);
       fields.block<3, 1>(offset, axis) = unit;
       fields.block<3, 1>(offset, 3 + axis) = unit.cross(poses[b].r - centroid);
@@ -152,8 +152,9 @@ MatX RigidFields(const model::SystemModel& model, const VecX& q) {
 // mode's M-norm in the span of the rigid fields F, φᵀMF (FᵀMF)⁻¹ FᵀMφ ≥ 0.9 (φ M-normalised). Not
 // simply the `rigid` lowest |ω²|: when the free rigid motion is not among the modes computed, that
 // flagged an elastic mode (the bundled example's 1.86 Hz mode was reported as a 0 Hz rigid one).
-std::vector<bool> RigidFlags(const solvers::ModalResult& modal, const MatX& fields, const SparseMat& mass, int rigid) {
-  std::vector<bool> flags(static_cast<std::size_t>(modal.eigenvalues.size()), false);
+std::vector<bool> RigidFlags(const solvers::ModalResult& modal, const MatX& fields, const SparseMat& mass,
+                             Index rigid) {
+  std::vector<bool> flags(modal.eigenvalues.size(), false);
   if (rigid == 0) return flags;
   const MatX mass_fields = mass * fields;
   const Eigen::LDLT<MatX> field_mass(fields.transpose() * mass_fields);
@@ -164,8 +165,8 @@ std::vector<bool> RigidFlags(const solvers::ModalResult& modal, const MatX& fiel
     if (fraction >= 0.9) fractions.emplace_back(fraction, j);
   }
   std::sort(fractions.rbegin(), fractions.rend());
-  for (std::size_t i = 0; i < fractions.size() && static_cast<int>(i) < rigid; ++i) {
-    flags[static_cast<std::size_t>(fractions[i].second)] = true;
+  for (Index i = 0; i < std::ssize(fractions) && i < rigid; ++i) {
+    flags[fractions[i].second] = true;
   }
   return flags;
 }
@@ -174,12 +175,12 @@ std::vector<bool> RigidFlags(const solvers::ModalResult& modal, const MatX& fiel
 // (from solve_count, doubling, at most bound) until enough of the family are found.
 ModesResult SearchModes(const model::SystemModel& model, const VecX& q, const std::vector<model::BodyPose>& poses,
                         const std::vector<Station>& stations, const LinearizedSystem& solved,
-                        const ModesSettings& settings, int solve_count, int bound) {
+                        const ModesSettings& settings, Index solve_count, Index bound) {
   const bool all = settings.kind == ModeKind::All;
-  const int n = model.num_velocities();
+  const Index n = model.num_velocities();
   ModesResult result;
-  const int rigid = CountRigidBodyModes(model, q, solved);
-  if (all) solve_count = std::min(n, settings.count + rigid);
+  const Index rigid = CountRigidBodyModes(model, q, solved);
+  if (all) solve_count = std::min<Index>(n, settings.count + rigid);
   while (true) {
     const solvers::ModalResult modal = LowestModes(solved, solve_count);
     const std::vector<bool> rigid_flags = RigidFlags(modal, RigidFields(model, q), solved.mass, rigid);
@@ -192,9 +193,9 @@ ModesResult SearchModes(const model::SystemModel& model, const VecX& q, const st
       if (!all && (mode.rigid_body || mode.kind != settings.kind)) continue;
       if (mode.rigid_body) ++result.rigid_body_modes;
       result.modes.push_back(std::move(mode));
-      if (static_cast<int>(result.modes.size()) == settings.count) break;
+      if (std::ssize(result.modes) == settings.count) break;
     }
-    if (static_cast<int>(result.modes.size()) >= settings.count || solve_count >= bound) break;
+    if (std::ssize(result.modes) >= settings.count || solve_count >= bound) break;
     solve_count = std::min(bound, 2 * solve_count);
   }
   return result;
@@ -210,15 +211,15 @@ std::optional<ModesResult> FamilyModesWithLateralHeld(const model::SystemModel& 
                                                       const std::vector<model::BodyPose>& poses,
                                                       const std::vector<Station>& stations,
                                                       const LinearizedSystem& solved, const ModesSettings& settings,
-                                                      int bound) {
+                                                      Index bound) {
   double hold = 0.0;
   for (Eigen::Index i = 0; i < solved.stiffness.rows(); ++i) hold = std::max(hold, std::abs(solved.stiffness.coeff(i, i)));
   std::vector<Eigen::Triplet<double>> triplets;
-  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+  for (Index b = 0; b < std::ssize(model.bodies()); ++b) {
     const model::Body& body = model.bodies()[b];
-    for (int k = 0; k < body.node_count(); ++k) {
+    for (Index k = 0; k < body.node_count(); ++k) {
       model::LateralFluidNode node;
-      node.body = static_cast<int>(b);
+      node.body = b;
       node.node = k;
       const MatX jacobian = model::LateralNodeJacobian(model, poses, node);
       const MatX product = hold * (jacobian.transpose() * jacobian);
@@ -233,9 +234,9 @@ std::optional<ModesResult> FamilyModesWithLateralHeld(const model::SystemModel& 
   springs.setFromTriplets(triplets.begin(), triplets.end());
   LinearizedSystem held = solved;
   held.stiffness += springs;
-  const int start = std::min(bound, std::max(2 * settings.count, 6));
+  const Index start = std::min<Index>(bound, std::max(2 * settings.count, 6));
   ModesResult result = SearchModes(model, q, poses, stations, held, settings, start, std::min(bound, 4 * start));
-  if (static_cast<int>(result.modes.size()) < settings.count) return std::nullopt;
+  if (std::ssize(result.modes) < settings.count) return std::nullopt;
   for (ModeResult& mode : result.modes) {
     const VecX& phi = mode.vector;
     const VecX k_phi = solved.stiffness * phi, m_phi = solved.mass * phi;
@@ -249,7 +250,7 @@ std::optional<ModesResult> FamilyModesWithLateralHeld(const model::SystemModel& 
 
 }  // namespace
 
-int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system) {
+Index CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system) {
   const MatX fields = RigidFields(model, q);
   const MatX stiffness = fields.transpose() * (system.stiffness * fields);
   const MatX mass = fields.transpose() * (system.mass * fields);
@@ -260,7 +261,7 @@ int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const Li
     const double m = system.mass.coeff(i, i);
     if (m > 0.0) scale = std::max(scale, std::abs(system.stiffness.coeff(i, i)) / m);
   }
-  int rigid = 0;
+  Index rigid = 0;
   for (Eigen::Index i = 0; i < solver.values.size(); ++i) {
     if (std::abs(solver.values[i]) < 1e-9 * scale) ++rigid;
   }
@@ -298,12 +299,13 @@ ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const M
   // The eigenproblem's mass: the steel and the fluid at its inviscid (or given) added mass.
   LinearizedSystem solved = system;
   if (fluid && !fluid->empty()) solved.mass += model::ComputeLateralFluidMatrices(model, *fluid, q, 0.0).mass;
-  const int n = model.num_velocities();
+  const Index n = model.num_velocities();
   const auto poses = model.Poses(q);
   const std::vector<Station> stations = StringStations(model);
   const bool all = settings.kind == ModeKind::All;
-  const int bound = std::min(n, std::max(kMaxModesSearched, settings.count));
-  int solve_count = all ? std::min(n, settings.count) : std::min(bound, std::max(3 * settings.count, 12));
+  const Index bound = std::min(n, std::max<Index>(kMaxModesSearched, settings.count));
+  Index solve_count =
+      all ? std::min<Index>(n, settings.count) : std::min<Index>(bound, std::max(3 * settings.count, 12));
   ModesResult result;
   for (const Station& station : stations) result.s.push_back(station.s);
   if (settings.kind == ModeKind::Axial || settings.kind == ModeKind::Torsional) {

@@ -62,14 +62,14 @@ struct ModesResult {
   // Sorted by ω² (a negative ω² of an unstable state comes first, with frequency 0). Kind All
   // includes the rigid-body modes (frequency 0, rigid_body set); a family excludes them.
   std::vector<ModeResult> modes;
-  int rigid_body_modes = 0;       // how many of `modes` are rigid-body modes
-  int near_zero_modes = 0;        // how many are near zero (ModeResult::near_zero, rigid ones included)
-  int negative_stiffness_modes = 0;  // how many have ω² < 0
+  Index rigid_body_modes = 0;       // how many of `modes` are rigid-body modes
+  Index near_zero_modes = 0;        // how many are near zero (ModeResult::near_zero, rigid ones included)
+  Index negative_stiffness_modes = 0;  // how many have ω² < 0
   // With the gyroscopic terms (analyses/gyroscopic_modes.hpp): at this spin (rad/s), on a basis of
   // this many undamped modes; the modes then carry their whirl.
   bool gyroscopic = false;
   double rotary_speed = 0.0;
-  int basis_size = 0;
+  Index basis_size = 0;
 };
 
 // A mode below this is near zero: no rotary speed of a drilling sweep meets it at any harmonic (0.6
@@ -104,7 +104,7 @@ ModesResult RunModes(const model::BuiltModel& built, const VecX& q, const ModesS
 ModesResult ComputeModes(const model::SystemModel& model, const VecX& q, const ModesSettings& settings,
                          double load_factor = 1.0, const model::LateralFluid* fluid = nullptr);
 
-inline constexpr int kMaxModesSearched = 400;
+inline constexpr Index kMaxModesSearched = 400;
 
 // Kinetic energy ½ vᵀ M v of a velocity field v split into its axial, torsional and lateral parts
 // (lumped nodal masses and rotary inertias; the fluid is not counted).
@@ -129,6 +129,6 @@ solvers::ModalResult LowestModes(const LinearizedSystem& system, int count);
 // round-off level ε max_i(K_ii/M_ii): both are orders of magnitude from the threshold, whereas
 // the computed ω² of a free mode (round-off ~1e-3 Hz with the stiff couplings) could not be told
 // from a slow elastic one (a long string under tension: ~0.03 Hz).
-int CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system);
+Index CountRigidBodyModes(const model::SystemModel& model, const VecX& q, const LinearizedSystem& system);
 
 }  // namespace drillflex::analyses

@@ -31,7 +31,7 @@ std::optional<MwdSag> ComputeMwdSag(std::span<const StaticNodeResult> nodes, con
   // distinct ones are taken).
   if (nodes.size() < 3) return std::nullopt;
   std::size_t k = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
+  for (Index i = 0; i < std::ssize(nodes); ++i) {
     if (std::abs(nodes[i].s - sensor_s) < std::abs(nodes[k].s - sensor_s)) k = i;
   }
   std::size_t below = k, above = k;

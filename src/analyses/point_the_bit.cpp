@@ -15,7 +15,7 @@ constexpr double kPlaceTolerance = 1e-6;  // m: two places this close are one
 // The component the fulcrum is in (the lower of two that meet there), or the string's size.
 std::size_t HoldingComponent(const model::StringConfig& string, double at) {
   double top = 0.0;
-  for (std::size_t i = 0; i < string.components.size(); ++i) {
+  for (Index i = 0; i < std::ssize(string.components); ++i) {
     const model::Component& component = string.components[i];
     top += component.length * component.count;
     if (at <= top + kPlaceTolerance) return i;
@@ -38,8 +38,8 @@ std::optional<std::pair<std::string, std::string>> PointTheBitProblem(const mode
                                            "between the bit's top ({:.4g} m) and the string's ({:.4g} m)",
                                            rss.at, bit_top, length));
   }
-  const std::size_t holder = HoldingComponent(string, rss.at);
-  for (std::size_t i = 0; i < string.components.size(); ++i) {
+  const Index holder = HoldingComponent(string, rss.at);
+  for (Index i = 0; i < std::ssize(string.components); ++i) {
     const model::Component& component = string.components[i];
     if (!component.bend_angle) continue;
     const bool same_place = component.bend_to_bit && std::abs(*component.bend_to_bit - rss.at) <= kPlaceTolerance;

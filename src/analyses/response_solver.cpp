@@ -53,7 +53,7 @@ std::vector<solvers::FrequencyTermCoefficients> SweepTermCoefficients(const Swee
 SparseMat ReferenceMass(const SweepSystem& sweep, double reference_frequency) {
   SparseMat mass = sweep.system.mass;
   const std::vector<solvers::FrequencyTermCoefficients> coefficients = SweepTermCoefficients(sweep, reference_frequency);
-  for (std::size_t g = 0; g < sweep.annulus_radii.size(); ++g) mass += coefficients[g].mass * sweep.terms[g];
+  for (Index g = 0; g < std::ssize(sweep.annulus_radii); ++g) mass += coefficients[g].mass * sweep.terms[g];
   return mass;
 }
 

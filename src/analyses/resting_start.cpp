@@ -24,8 +24,8 @@ constexpr double kSupportReach = 4.572;
 constexpr double kStartPenetration = 1e-6;
 
 struct NodeStation {
-  int body = 0;
-  int node = 0;
+  Index body = 0;
+  Index node = 0;
   double s = 0.0;   // from the bit, m
   double md = 0.0;  // m
   Vec3 position = Vec3::Zero();  // reference, global
@@ -35,12 +35,12 @@ struct NodeStation {
 };
 
 std::vector<NodeStation> Stations(const model::ModelInput& input, const model::SystemModel& system) {
-  const well::Trajectory& trajectory = *input.trajectory;
-  const well::HoleProfile hole(input.hole);
+  const well::Trajectory& trajectory = input.well->trajectory;
+  const well::HoleProfile& hole = input.well->hole;
   std::vector<NodeStation> stations;
-  for (int b = 0; b < static_cast<int>(system.bodies().size()); ++b) {
+  for (Index b = 0; b < std::ssize(system.bodies()); ++b) {
     const model::Body& body = system.bodies()[b];
-    for (int k = 0; k < body.node_count(); ++k) {
+    for (Index k = 0; k < body.node_count(); ++k) {
       NodeStation station;
       station.body = b;
       station.node = k;
@@ -69,7 +69,7 @@ double HelicalBucklingLoad(double bending_rigidity, double lateral_weight, doubl
 // the string buckles onto instead of on the low side (or, in a vertical hole, on the axis).
 void AddLoadDirections(const model::ModelInput& input, const model::SystemModel& system,
                        std::vector<NodeStation>& stations) {
-  const well::Trajectory& trajectory = *input.trajectory;
+  const well::Trajectory& trajectory = input.well->trajectory;
   const Vec3 down = Vec3::UnitZ();  // gravity along global +z (TVD)
   double tension = -input.operation.weight_on_bit;
   double previous_s = 0.0;
@@ -154,8 +154,8 @@ std::vector<Vec3> Offsets(const std::vector<NodeStation>& stations) {
 class RestingLine {
  public:
   RestingLine(const model::ModelInput& input, const std::vector<NodeStation>& stations, const std::vector<Vec3>& offsets)
-      : trajectory_(*input.trajectory), bit_md_(input.bit_md) {
-    for (std::size_t i = 0; i < stations.size(); ++i) {
+      : trajectory_(input.well->trajectory), bit_md_(input.bit_md) {
+    for (Index i = 0; i < std::ssize(stations); ++i) {
       const double u = bit_md_ - stations[i].md;
       if (!u_.empty() && u <= u_.back()) continue;  // a joint's second node, or a station out of order
       u_.push_back(u);
@@ -194,7 +194,7 @@ class RestingLine {
   Vec3 Offset(double u) const {
     if (u_.empty() || u <= u_.front()) return offsets_.empty() ? Vec3::Zero() : offsets_.front();
     if (u >= u_.back()) return offsets_.back();
-    const std::size_t i = static_cast<std::size_t>(std::upper_bound(u_.begin(), u_.end(), u) - u_.begin());
+    const Index i = std::upper_bound(u_.begin(), u_.end(), u) - u_.begin();
     const double w = (u - u_[i - 1]) / (u_[i] - u_[i - 1]);
     return (1.0 - w) * offsets_[i - 1] + w * offsets_[i];
   }
@@ -223,7 +223,7 @@ Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const s
   std::vector<Vec3> starts;
   Vec3 start = bit;
   ends.clear();
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  for (Index b = 0; b < std::ssize(bodies); ++b) {
     const model::Body& body = bodies[b];
     const Vec3 first = body.reduced->node_positions.front(), last = body.reduced->node_positions.back();
     u = line.Along(start, u, (last - first).norm() + stretches[b]);
@@ -231,7 +231,7 @@ Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const s
     ends.push_back(u);
     // The next body starts `gaps[b]` beyond this one's end (before it in compression), so that the
     // coupling carries the axial force; u is the arc length along the line to ~1e-6 of a gap.
-    if (b + 1 < bodies.size()) u += gaps[b];
+    if (b + 1 < std::ssize(bodies)) u += gaps[b];
     start = line.At(u);
   }
   starts.push_back(start);
@@ -258,9 +258,9 @@ Vec3 LayChain(const model::SystemModel& system, const RestingLine& line, const s
 // curved hole comes with lateral moves of ~0.1 m in the linearized step).
 std::vector<double> Stretches(const model::SystemModel& system, const std::vector<NodeStation>& stations) {
   std::vector<double> stretches;
-  std::size_t index = 0;
+  Index index = 0;
   for (const model::Body& body : system.bodies()) {
-    const std::size_t last = index + static_cast<std::size_t>(body.node_count()) - 1;
+    const Index last = index + body.node_count() - 1;
     const double tension = 0.5 * (stations[index].tension + stations[last].tension);
     stretches.push_back(tension * body.length() / body.axial_rigidity);
     index = last + 1;
@@ -277,13 +277,13 @@ std::vector<double> Stretches(const model::SystemModel& system, const std::vecto
 std::vector<double> CouplingGaps(const model::BuiltModel& built, const std::vector<NodeStation>& stations) {
   const auto& bodies = built.system.bodies();
   std::vector<double> gaps(bodies.size(), 0.0);
-  std::vector<std::size_t> last_station(bodies.size(), 0);
-  for (std::size_t i = 0; i < stations.size(); ++i) last_station[static_cast<std::size_t>(stations[i].body)] = i;
+  std::vector<Index> last_station(bodies.size(), 0);
+  for (Index i = 0; i < std::ssize(stations); ++i) last_station[stations[i].body] = i;
   for (const auto handle : built.couplings) {
     const model::CouplingElement& coupling = built.Get(handle);
-    const std::size_t lower = static_cast<std::size_t>(built.system.IndexOf(coupling.bodies()[0]));
+    const Index lower = built.system.IndexOf(coupling.bodies()[0]);
     const double axial = coupling.stiffness()[0];
-    if (lower + 1 < bodies.size() && axial > 0.0) gaps[lower] = stations[last_station[lower]].tension / axial;
+    if (lower + 1 < std::ssize(bodies) && axial > 0.0) gaps[lower] = stations[last_station[lower]].tension / axial;
   }
   return gaps;
 }
@@ -316,12 +316,12 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
   for (const model::Body& body : bodies) chords.push_back(BodyOrientation(body, q).toRotationMatrix());
   std::vector<Mat3> joints;  // joints[b]: the frame at body b's first node; joints[n]: the top's
   joints.push_back(joint_frame(chords.front(), shift));
-  for (std::size_t b = 0; b < bodies.size(); ++b) joints.push_back(joint_frame(chords[b], ends[b]));
+  for (Index b = 0; b < std::ssize(bodies); ++b) joints.push_back(joint_frame(chords[b], ends[b]));
   constexpr double kFrameWeight = 1e3;  // frame columns scaled up: their motion counts as free
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  for (Index b = 0; b < std::ssize(bodies); ++b) {
     const model::Body& body = bodies[b];
-    const int nf = body.flexible_count;
-    const int last = body.node_count() - 1;
+    const Index nf = body.flexible_count;
+    const Index last = body.node_count() - 1;
     // Modal columns scaled by 1/ω_j: the least |ζ| with η_j = ζ_j/ω_j is the least strain energy
     // ½ Σ ω_j² η_j², i.e. the static shape of the body under its end conditions. (The least |η|
     // of the mass-normalised modes instead took shear-dominated shapes of the short Timoshenko
@@ -329,7 +329,7 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
     const VecX compliance = body.reduced->natural_frequencies.cwiseInverse();
     MatX a = MatX::Zero(12, 6 + nf);
     for (int end = 0; end < 2; ++end) {
-      const int k = end == 0 ? 0 : last;
+      const Index k = end == 0 ? 0 : last;
       const Vec3& rho = body.reduced->node_positions[k];
       a.block<3, 3>(6 * end, 0) = kFrameWeight * Mat3::Identity();
       a.block<3, 3>(6 * end, 3) = -kFrameWeight * so3::Skew(rho);
@@ -348,7 +348,7 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
       const model::BodyPose pose = model::PoseOf(body, q);
       VecX rhs = VecX::Zero(12);
       for (int end = 0; end < 2; ++end) {
-        const int k = end == 0 ? 0 : last;
+        const Index k = end == 0 ? 0 : last;
         rhs.segment<3>(6 * end) = pose.A.transpose() * (targets[end] - pose.NodePosition(body, k));
         const Mat3 node_frame = pose.A * so3::ExpMap(pose.NodeRotation(body, k));
         rhs.segment<3>(6 * end + 3) = so3::LogMap(node_frame.transpose() * joints[b + end]);
@@ -366,7 +366,7 @@ void BendAlongLine(const model::SystemModel& system, const RestingLine& line, co
 
 VecX RestingStart(const model::ModelInput& input, const model::BuiltModel& built) {
   const profile::Scope scope("static: resting start");
-  if (!input.trajectory || input.hole.empty()) throw LogicError("RestingStart: the string is not in a hole");
+  if (!input.well || input.well->hole.empty()) throw LogicError("RestingStart: the string is not in a hole");
   const model::SystemModel& system = built.system;
   std::vector<NodeStation> stations = Stations(input, system);
   AddLoadDirections(input, system, stations);
@@ -429,7 +429,7 @@ void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& b
       const model::WallContactElement& contact = built.Get(handle);
       const model::WallContactResult state =
           contact.Result(built.system.StateOf(contact, poses, rest, 0.0, parameters));
-      const int body = built.system.IndexOf(contact.bodies()[0]);
+      const Index body = built.system.IndexOf(contact.bodies()[0]);
       // A rotating pipe climbs the wall until the friction balances the lateral load, which then
       // splits into N and μN: N = F⊥/√(1 + μ²) of the frictionless N = F⊥.
       const model::WallContactParameters effective = contact.EffectiveParameters(parameters);
@@ -439,7 +439,7 @@ void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& b
   }
   std::vector<double> torque(bodies.size(), 0.0);
   double below = input.operation.torque_on_bit;
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  for (Index b = 0; b < std::ssize(bodies); ++b) {
     torque[b] = below + 0.5 * friction_torque[b];
     below += friction_torque[b];
   }
@@ -447,8 +447,8 @@ void TwistUnderTorque(const model::ModelInput& input, const model::BuiltModel& b
   std::vector<double> joint_stiffness(bodies.size(), 0.0);
   for (const auto handle : built.couplings) {
     const model::CouplingElement& coupling = built.Get(handle);
-    const int upper = built.system.IndexOf(coupling.bodies()[1]);
-    if (upper >= 0) joint_stiffness[static_cast<std::size_t>(upper)] = coupling.stiffness()[3];
+    const Index upper = built.system.IndexOf(coupling.bodies()[1]);
+    if (upper >= 0) joint_stiffness[upper] = coupling.stiffness()[3];
   }
   // θ(s) = ∫_s^top T ds'/GJ: each body turned by θ at its middle and twisted inside by dθ/ds =
   // −T/GJ (x up the hole), each coupling by T/k_θ (without the inner twist the couplings carried

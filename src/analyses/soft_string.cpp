@@ -19,16 +19,16 @@ constexpr double kVerticalSine = 1e-9;
 constexpr double kCutMergeLength = 1e-9;
 
 void CheckWellAndString(const model::ModelInput& input) {
-  if (!input.trajectory) throw InputError({}, "well", "the soft-string torque and drag needs a well (a survey)");
+  if (!input.well) throw InputError({}, "well", "the soft-string torque and drag needs a well (a survey)");
   if (input.string.components.empty()) throw InputError({}, "string", "the string has no components");
-  const double start = input.trajectory->start_md();
+  const double start = input.well->trajectory.start_md();
   if (!std::isfinite(input.bit_md) || !(input.bit_md > start)) {
     throw InputError({}, "well.bit_md",
                      fmt::format("the bit MD ({:.6g} m) must lie below the survey's first station ({:.6g} m)",
                                  input.bit_md, start));
   }
   const auto& components = input.string.components;
-  for (std::size_t i = 0; i < components.size(); ++i) {
+  for (Index i = 0; i < std::ssize(components); ++i) {
     const model::Component& component = components[i];
     if (input.materials.count(component.material) == 0) {
       throw InputError({"", component.source_line, 0}, fmt::format("string[{}].material", i),
@@ -57,7 +57,7 @@ void CheckOperation(const SoftStringOperation& operation) {
 // The element ends' MDs from the bit up to the surface (the trajectory's start MD): the bit, every
 // component boundary and every survey station between, the surface.
 std::vector<double> CutMds(const model::ModelInput& input, double max_element_length) {
-  const double surface = input.trajectory->start_md();
+  const double surface = input.well->trajectory.start_md();
   const double bit = input.bit_md;
   const auto inside = [&](double md) { return md > surface + kCutMergeLength && md < bit - kCutMergeLength; };
   std::vector<double> interior;
@@ -66,10 +66,10 @@ std::vector<double> CutMds(const model::ModelInput& input, double max_element_le
     md -= component.length * component.count;
     if (inside(md)) interior.push_back(md);
   }
-  for (const well::SurveyStation& station : input.trajectory->stations()) {
+  for (const well::SurveyStation& station : input.well->trajectory.stations()) {
     if (inside(station.md)) interior.push_back(station.md);
   }
-  for (const well::HoleSection& section : input.hole) {
+  for (const well::HoleSection& section : input.well->hole.sections()) {
     if (section.to_md && inside(*section.to_md)) interior.push_back(*section.to_md);
   }
   std::sort(interior.begin(), interior.end(), std::greater<>());
@@ -82,8 +82,8 @@ std::vector<double> CutMds(const model::ModelInput& input, double max_element_le
   std::vector<double> split{cuts.front()};
   for (std::size_t i = 1; i < cuts.size(); ++i) {
     const double length = cuts[i - 1] - cuts[i];
-    const int pieces = std::max(1, static_cast<int>(std::ceil(length / max_element_length - 1e-9)));
-    for (int k = 1; k < pieces; ++k) split.push_back(cuts[i - 1] - length * k / pieces);
+    const Index pieces = std::max<Index>(1, std::lround(std::ceil(length / max_element_length - 1e-9)));
+    for (Index k = 1; k < pieces; ++k) split.push_back(cuts[i - 1] - length * k / pieces);
     split.push_back(cuts[i]);
   }
   return split;
@@ -160,9 +160,9 @@ model::WallFriction FrictionAt(const model::ModelInput& input, const well::HoleP
 SoftStringResult ComputeSoftString(const model::ModelInput& input, const SoftStringOperation& operation) {
   CheckWellAndString(input);
   CheckOperation(operation);
-  const well::Trajectory& trajectory = *input.trajectory;
+  const well::Trajectory& trajectory = input.well->trajectory;
   const std::vector<double> cuts = CutMds(input, operation.max_element_length);
-  const well::HoleProfile hole(input.hole);  // the sections' friction, looked up at every element
+  const well::HoleProfile& hole = input.well->hole;  // the sections' friction, looked up at every element
   SoftStringResult result;
   result.stations.reserve(cuts.size());
   // At the bit the rock pushes up with the WOB and resists the rotation with the TOB.

@@ -97,7 +97,7 @@ struct SoftStringResult {
   double surface_torque = 0.0;              // N·m
 };
 
-// The soft-string axial force and torque along `input`'s string in its well: `input.trajectory`, the
+// The soft-string axial force and torque along `input`'s string in its well: `input.well`, the
 // string from the bit upward with the bit at `input.bit_md`, its materials, fluid and gravity (the
 // buoyed weight: model::BuoyedWeightPerLength). `input.operation` is not read: `operation` gives the
 // motion, friction factors, WOB and TOB. Throws InputError (key "well") without a trajectory, with a

@@ -42,10 +42,10 @@ void AddStresses(const model::Body& body, StaticNodeResult& node) {
 // g_η = −(Φ_kᵀ Aᵀ A_g R_t + Ψ_kᵀ R_r) (model/coupling_kinematics.hpp with the ground as side 1,
 // A_g the body's reference frame). Evaluated at a state with a small modal perturbation so that
 // the reaction is not zero.
-int SupportNode(const model::SystemModel& model, const model::SupportElement& support, const VecX& q) {
+Index SupportNode(const model::SystemModel& model, const model::SupportElement& support, const VecX& q) {
   const model::Body& body = *support.bodies()[0];
   VecX dv = VecX::Zero(model.num_velocities());
-  for (int j = 0; j < body.flexible_count; ++j) dv[body.v_offset + 6 + j] = 1e-4 * (1.0 + 0.37 * j);
+  for (Index j = 0; j < body.flexible_count; ++j) dv[body.v_offset + 6 + j] = 1e-4 * (1.0 + 0.37 * j);
   const VecX perturbed = model.Increment(q, dv);
   const auto poses = model.Poses(perturbed);
   const VecX v = VecX::Zero(model.num_velocities());
@@ -57,9 +57,9 @@ int SupportNode(const model::SystemModel& model, const model::SupportElement& su
   const model::BodyPose& pose = *state.poses[0];
   const Mat3 ground = body.reference_orientation.toRotationMatrix();
   const VecX modal_force = contribution.force.tail(body.flexible_count);
-  int best = 0;
+  Index best = 0;
   double best_error = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < body.node_count(); ++k) {
+  for (Index k = 0; k < body.node_count(); ++k) {
     const VecX predicted = -(body.reduced->node_translation_modes[k].transpose() * (pose.A.transpose() * ground *
                                                                                     reaction.head<3>()) +
                              body.reduced->node_rotation_modes[k].transpose() * reaction.tail<3>());
@@ -83,19 +83,19 @@ solvers::NewtonOptions DefaultNewtonOptions() {
 
 std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
                                                 const model::LoadParameters& load) {
-  std::vector<int> all(StringStations(built.system).size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  std::vector<Index> all(StringStations(built.system).size());
+  for (Index i = 0; i < std::ssize(all); ++i) all[i] = i;
   return StaticNodeResults(built, q, load, all);
 }
 
 std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
-                                                const model::LoadParameters& load, std::span<const int> station_indices) {
+                                                const model::LoadParameters& load, std::span<const Index> station_indices) {
   const model::SystemModel& model = built.system;
   const std::vector<Station> stations = StringStations(model);
   // Only the bodies and joints the listed stations read.
-  std::vector<int> bodies, joints;
-  for (const int i : station_indices) {
-    const Station& station = stations.at(static_cast<std::size_t>(i));
+  std::vector<Index> bodies, joints;
+  for (const Index i : station_indices) {
+    const Station& station = stations.at(i);
     if (station.lower_body >= 0) {
       joints.push_back(station.lower_body);
     } else {
@@ -107,7 +107,7 @@ std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, 
   const auto joint_forces = model::JointInternalForces(built, q, VecX::Zero(model.num_velocities()), joints);
   std::vector<StaticNodeResult> nodes;
   nodes.reserve(station_indices.size());
-  for (const int i : station_indices) {
+  for (const Index i : station_indices) {
     const Station& station = stations[i];
     const model::Body& body = model.bodies()[station.body];
     const model::NodeDisplacement motion = model::ComputeNodeDisplacement(body, poses[station.body], station.node);
@@ -195,14 +195,7 @@ StaticResult ToStaticResult(const model::BuiltModel& built, const StaticOutcome&
                             const model::LoadParameters& parameters) {
   if (!outcome.converged) throw SolverError("static: " + outcome.failure);
   StaticResult result;
-  result.converged = true;
-  result.q = outcome.q;
-  result.iterations = outcome.iterations;
-  result.load_steps = outcome.load_steps;
-  result.residual_norm = outcome.residual_norm;
-  result.method = outcome.method;
-  result.warnings = outcome.warnings;
-  result.stable = outcome.stable;
+  static_cast<StaticOutcome&>(result) = outcome;
   return WithResults(built, std::move(result), parameters);
 }
 
@@ -239,9 +232,9 @@ StaticResult RunStaticInWell(const model::ModelInput& input, const model::BuiltM
                              const VecX* start) {
   StaticResult result =
       ToStaticResult(built, SolveStaticEquilibrium(input, built, settings, parameters, start), parameters);
-  if (input.trajectory) {
+  if (input.well) {
     if (const auto sensor = MwdSensorAt(input.string, settings.mwd_at)) {
-      result.mwd = ComputeMwdSag(result.nodes, *input.trajectory, *sensor);
+      result.mwd = ComputeMwdSag(result.nodes, input.well->trajectory, *sensor);
     }
   }
   return result;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analyses/analysis_settings.hpp"
+#include "analyses/static_outcome.hpp"
 #include "analyses/string_stations.hpp"
 #include "core/types.hpp"
 #include "model/builder.hpp"
@@ -78,7 +79,7 @@ struct ContactReport {
   double normal_force = 0.0;      // N
   double friction_force = 0.0;    // N (magnitude)
   double high_side_angle = 0.0;   // rad: 0 high side, π/2 right, π low side
-  int component = 0;              // index in the string
+  Index component = 0;              // index in the string
   Vec3 contact_point = Vec3::Zero();  // where the string touches the wall (global), m
   Vec3 normal = Vec3::Zero();         // unit, from the hole axis toward the contact (global)
 };
@@ -93,27 +94,15 @@ struct BitReport {
   double tilt_right = 0.0;   // rad, the same toward the right (looking down-hole)
 };
 
-struct StaticResult {
-  bool converged = false;
-  VecX q;                      // the equilibrium positions
-  int iterations = 0;          // Newton iterations (or relaxation steps)
-  int load_steps = 0;
-  double residual_norm = 0.0;  // |R|₂ at q, N
+// The static analysis's result: the equilibrium as found (StaticOutcome: the state, how, its warnings)
+// and what is derived from it.
+struct StaticResult : StaticOutcome {
   std::vector<StaticNodeResult> nodes;    // from the bit upward
   std::vector<SupportReaction> reactions; // one per case support, in case order
   std::optional<PipeAboveReaction> pipe_above;  // with the pipe above the model (model.top)
   std::vector<ContactReport> contacts;     // wall contacts carrying force, from the bit upward
   std::optional<BitReport> bit;            // in a well, with a support at the bit
   std::optional<MwdSag> mwd;               // in a well, with an MWD component or analyses.static.mwd_at
-  // How the equilibrium was found (results.json `static.method_used`; analyses/static_solve.hpp):
-  // "newton" (load stepping), "energy-minimum" (the energy trust region from the resting start),
-  // "energy-minimum+friction" (then continued in the sliding friction), "continuation" (Newton from
-  // a neighbouring equilibrium), "dynamic-relaxation".
-  std::string method;
-  // What the engineer must know about the answer (a fallback that was needed, a rotating string
-  // answered at rest), in words; also in results.json (`static.warnings`).
-  std::vector<std::string> warnings;
-  bool stable = false;  // the tangent stiffness has no negative eigenvalue (checked by the solver)
 };
 
 // The contacts carrying force and the bit report at a state (filled in by RunStatic), the model
@@ -150,7 +139,7 @@ std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, 
 // The same at the listed stations only (indices into StringStations(built.system)), in that order: a
 // transient run's samples (the bit, the top, the probes) without the forces of the whole string.
 std::vector<StaticNodeResult> StaticNodeResults(const model::BuiltModel& built, const VecX& q,
-                                                const model::LoadParameters& load, std::span<const int> station_indices);
+                                                const model::LoadParameters& load, std::span<const Index> station_indices);
 std::vector<SupportReaction> SupportReactions(const model::BuiltModel& built, const VecX& q,
                                              const model::LoadParameters& parameters = 1.0);
 

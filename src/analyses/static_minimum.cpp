@@ -35,15 +35,17 @@ model::ModelInput EffectiveInput(const model::ModelInput& input, const model::Lo
   effective.operation.torque_on_bit = load * parameters.torque_on_bit.value_or(input.operation.torque_on_bit);
   if (parameters.OverridesFriction()) {
     // Every hole section its coefficients under the block, the case's own where it gives none.
-    std::vector<well::HoleSection>& hole = effective.hole;
+    // (A well of its own: the input's is shared, read only.)
+    std::vector<well::HoleSection> hole = input.well ? input.well->hole.sections() : std::vector<well::HoleSection>{};
     model::LoadParameters unscaled = parameters;
     unscaled.friction_factor = 1.0;
-    for (std::size_t i = 0; i < hole.size(); ++i) {
+    for (Index i = 0; i < std::ssize(hole); ++i) {
       const model::WallFriction friction =
           model::EffectiveFriction(model::SectionFriction(hole[i], input.settings.contact), unscaled);
       hole[i].friction = friction.tangential;
       hole[i].axial_friction = friction.axial;
     }
+    if (!hole.empty()) effective.well = model::MakeWellbore(input.well->trajectory, hole);
     if (hole.empty() && parameters.open_hole_friction) {
       effective.settings.contact.friction = parameters.open_hole_friction->tangential;
       effective.settings.contact.axial_friction = parameters.open_hole_friction->axial;
@@ -138,7 +140,7 @@ FrictionContinuation ContinueInFriction(const model::BuiltModel& built, const St
   continuation.throw_on_failure = false;
   continuation.log = settings.log;
   if (settings.log) settings.log("static: sliding, the friction from 0 to its value");
-  const solvers::StaticResult moving = solvers::SolveStatic(problem, at_rest, continuation);
+  const solvers::NewtonResult moving = solvers::SolveStatic(problem, at_rest, continuation);
   if (settings.log) {
     settings.log(fmt::format("static: friction continuation {} after {} Newton iterations in {} steps",
                              moving.converged ? "converged" : "stopped", moving.iterations, moving.load_steps));

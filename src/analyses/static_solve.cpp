@@ -30,13 +30,9 @@ constexpr double kWallStepLimit = 0.01;
 // kept while each step brings |R| to a quarter or less.
 constexpr double kNeighbourContraction = 0.25;
 
-StaticOutcome FromSolver(const solvers::StaticResult& solved, const char* method) {
+StaticOutcome FromSolver(const solvers::NewtonResult& solved, const char* method) {
   StaticOutcome outcome;
-  outcome.converged = solved.converged;
-  outcome.q = solved.q;
-  outcome.iterations = solved.iterations;
-  outcome.load_steps = solved.load_steps;
-  outcome.residual_norm = solved.residual_norm;
+  static_cast<solvers::StaticSolution&>(outcome) = solved;  // the solution; the solver's own account stays
   outcome.method = method;
   return outcome;
 }
@@ -106,7 +102,7 @@ StaticOutcome SolveByEnergyMinimum(const model::ModelInput& input, const model::
 }
 
 bool InWell(const model::ModelInput& input) {
-  return input.trajectory && !input.hole.empty() && input.supports.empty();
+  return input.well && !input.well->hole.empty() && input.supports.empty();
 }
 
 }  // namespace

@@ -16,28 +16,12 @@
 // found the equilibrium (results.json `static.method_used`).
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include "analyses/analysis_settings.hpp"
+#include "analyses/static_outcome.hpp"
 #include "core/types.hpp"
 #include "model/builder.hpp"
 
 namespace drillflex::analyses {
-
-struct StaticOutcome {
-  bool converged = false;
-  VecX q;                      // the equilibrium, or where the last strategy stopped
-  int iterations = 0;          // Newton / trust-region iterations, or relaxation steps, of every strategy tried
-  int load_steps = 0;
-  double residual_norm = 0.0;  // |R|₂ at q, N
-  bool stable = false;         // checked by the energy minimum: no direction of negative curvature
-  // "continuation" (1), "energy-minimum" or "energy-minimum+friction" (2), "newton" (3),
-  // "dynamic-relaxation" (4).
-  std::string method;
-  std::string failure;                 // why no strategy converged (empty when one did)
-  std::vector<std::string> warnings;   // what the engineer must know about the answer
-};
 
 // The chain above. `input` is what `built` was built from; `start` a nearby equilibrium of the same
 // model, or null.

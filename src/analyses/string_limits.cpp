@@ -75,17 +75,17 @@ const char* BucklingStateName(BucklingState state) {
 }
 
 BucklingLoads BucklingLoadsAt(const model::ModelInput& input, double s, double md) {
-  if (!input.trajectory || input.hole.empty()) return {kNoLimit, kNoLimit};
+  if (!input.well || input.well->hole.empty()) return {kNoLimit, kNoLimit};
   const model::Component& component = model::ComponentAt(input.string, s);
   // r of the component as a whole: the pipe lies on its tool joints (a stabilizer on its blades) all
   // along a buckle, which spans many joints; not the clearance at the station itself, which would
   // alternate between the joint's and the body's along every joint.
-  const double clearance =
-      0.5 * (well::HoleProfile(input.hole).Diameter(input.bit_md - s) - model::ContactDiameter(component));
+  const double clearance = 0.5 * (input.well->hole.Diameter(input.bit_md - s) - model::ContactDiameter(component));
   const fe::HollowSection body{component.outer_diameter, component.inner_diameter};
   const double stiffness = input.materials.at(component.material).youngs_modulus * body.second_moment();
   const double weight = std::abs(model::BuoyedWeightPerLength(component, input));
-  const double inclined = model::SinusoidalBucklingLoad(stiffness, weight, input.trajectory->Inclination(md), clearance);
+  const double inclined =
+      model::SinusoidalBucklingLoad(stiffness, weight, input.well->trajectory.Inclination(md), clearance);
   return {std::max(inclined, model::VerticalSinusoidalBucklingLoad(stiffness, weight)),
           std::max(model::HelicalBucklingLoad(inclined), model::VerticalHelicalBucklingLoad(stiffness, weight))};
 }
@@ -95,7 +95,7 @@ NodeLimits StationRatings(const model::ModelInput& input, double s, double md, d
   node.s = s;
   node.md = md;
   const model::Component& component = model::ComponentAt(input.string, s);
-  node.component = static_cast<int>(&component - input.string.components.data());
+  node.component = &component - input.string.components.data();
   if (component.type != model::ComponentType::Bit) {
     if (component.yield_strength) {
       node.yield = *component.yield_strength;
@@ -104,8 +104,8 @@ NodeLimits StationRatings(const model::ModelInput& input, double s, double md, d
     }
     node.allowable_stress = node.yield / design_factor;
     const bool rotating = input.operation.rotary_speed > 0.0;
-    if (rotating && std::isfinite(node.yield) && input.trajectory) {
-      node.hole_curvature = input.trajectory->Curvature(node.md).norm();
+    if (rotating && std::isfinite(node.yield) && input.well) {
+      node.hole_curvature = input.well->trajectory.Curvature(node.md).norm();
     }
   }
   if (component.makeup_torque) node.makeup_torque = *component.makeup_torque;
@@ -116,7 +116,7 @@ NodeLimits StationRatings(const model::ModelInput& input, double s, double md, d
 }
 
 void LoadStationLimits(const model::ModelInput& input, const StaticNodeResult& result, NodeLimits& node) {
-  const model::Component& component = input.string.components[static_cast<std::size_t>(node.component)];
+  const model::Component& component = input.string.components[node.component];
   node.von_mises_stress =
       model::VonMisesStress(model::RatedSection(component), result.axial_force, result.torque, result.bending_moment);
   if (component.type != model::ComponentType::Bit) {
@@ -141,10 +141,10 @@ StringLimits ComputeStringLimits(const model::ModelInput& input, const std::vect
   std::set<int> assumed;  // components whose yield is taken as E-75's
   bool any_torque_limit = false;
   for (const StaticNodeResult& result : nodes) {
-    const double md = result.has_wall ? result.md : (input.trajectory ? input.bit_md - result.s : result.s);
+    const double md = result.has_wall ? result.md : (input.well ? input.bit_md - result.s : result.s);
     NodeLimits node = StationRatings(input, result.s, md, design_factor);
     LoadStationLimits(input, result, node);
-    const model::Component& component = components[static_cast<std::size_t>(node.component)];
+    const model::Component& component = components[node.component];
     if (std::isfinite(node.yield) && !component.yield_strength) assumed.insert(node.component);
     any_torque_limit = any_torque_limit || std::isfinite(node.makeup_torque);
     Consider(limits.yield, "yield", node.stress_utilisation, node);

@@ -23,7 +23,7 @@ inline constexpr double kNoLimit = std::numeric_limits<double>::quiet_NaN();
 struct NodeLimits {
   double s = 0.0;                          // m from the bit
   double md = 0.0;                         // m (s without a well)
-  int component = 0;                       // index in the string (model::ComponentAt)
+  Index component = 0;                       // index in the string (model::ComponentAt)
   double yield = kNoLimit;                 // minimum yield strength, Pa (E-75's for steel of no grade)
   double allowable_stress = kNoLimit;      // yield / design factor, Pa
   double von_mises_stress = 0.0;           // on the rated (class) section, Pa
@@ -55,7 +55,7 @@ struct LimitUtilisation {
   std::string limit;  // "yield", "makeup_torque", "helical_buckling", "fatigue"
   double utilisation = kNoLimit;
   double s = 0.0, md = 0.0;  // m
-  int component = -1;
+  Index component = -1;
 };
 
 struct StringLimits {

@@ -12,9 +12,9 @@ namespace drillflex::analyses {
 
 struct Station {
   double s = 0.0;  // distance from the bit end along the undeformed string, m
-  int body = 0;    // the body and node the station reads (at a joint: the upper body's node 0)
-  int node = 0;
-  int lower_body = -1;  // at a joint: the body below (its last node coincides); −1 elsewhere
+  Index body = 0;    // the body and node the station reads (at a joint: the upper body's node 0)
+  Index node = 0;
+  Index lower_body = -1;  // at a joint: the body below (its last node coincides); −1 elsewhere
 };
 
 // Ordered from the bit (s = 0) to the top; bodies must be listed from the bit upward.

@@ -25,7 +25,7 @@ double InDegreesPer100Ft(double curvature) { return curvature / kDegreesPer100Ft
 // A static solved in a hole, with what a later static of the same variant starts from.
 struct Solved {
   Vec2 curvature;
-  well::Trajectory hole;
+  std::shared_ptr<const model::Wellbore> hole;  // the one its model's input and contacts share
   std::shared_ptr<const model::BuiltModel> built;
   VecX q;
 };
@@ -75,7 +75,7 @@ std::vector<Variant> Variants(const model::ModelInput& input, const TendencySett
     return variants;
   }
   if (!(input.operation.rotary_speed > 0.0)) return {{input, 1.0}};
-  for (std::size_t i = 0; i < input.string.components.size(); ++i) {
+  for (Index i = 0; i < std::ssize(input.string.components); ++i) {
     const model::Component& component = input.string.components[i];
     if (!component.bend_angle || !(*component.bend_angle > 0.0)) continue;
     std::vector<Variant> variants;
@@ -97,20 +97,22 @@ class Search {
       : input_(input), build_(build), statics_(statics), settings_(settings), variants_(Variants(input, settings)),
         solved_(variants_.size()), bit_md_(input.bit_md), model_length_(model::StringLength(input.string)),
         top_md_(std::max(0.0, input.bit_md - model_length_ - kTendencyHoleAboveTop)),
-        formation_(settings.formation ? FormationDeviation(*settings.formation, input.trajectory->Frame(input.bit_md))
-                                      : HoleCurvature{}) {}
+        formation_(settings.formation
+                       ? FormationDeviation(*settings.formation, input.well->trajectory.Frame(input.bit_md))
+                       : HoleCurvature{}) {}
 
-  int variant_count() const { return static_cast<int>(variants_.size()); }
+  int variant_count() const { return std::ssize(variants_); }
   int statics() const { return statics_count_; }
   int toolfaces() const { return settings_.rss ? 1 : variant_count(); }
 
   const Evaluated& Evaluate(const Vec2& kappa) {
     const double arc = TendencyArcLength(input_.string, kappa.norm());
-    const well::Trajectory hole = ConstantCurvatureHole(*input_.trajectory, bit_md_, top_md_, arc, AsCurvature(kappa));
+    const auto hole = std::make_shared<const model::Wellbore>(model::Wellbore{
+        ConstantCurvatureHole(input_.well->trajectory, bit_md_, top_md_, arc, AsCurvature(kappa)), input_.well->hole});
     TendencyPoint point;
     point.curvature = AsCurvature(kappa);
     StaticResult first;
-    for (std::size_t v = 0; v < variants_.size(); ++v) {
+    for (Index v = 0; v < std::ssize(variants_); ++v) {
       const double share = variants_[v].weight;
       StaticResult equilibrium = Solve(v, kappa, hole);
       const BitReport& bit = *equilibrium.bit;
@@ -147,7 +149,7 @@ class Search {
   // A point-the-bit system's bend is set at its toolface plus the string's twist at the fulcrum (the
   // last static's), and solved again from there while the twist moves it by more than
   // kPointToolfaceTolerance: the housing holds the toolface in space, whatever the string's twist.
-  StaticResult Solve(std::size_t v, const Vec2& kappa, const well::Trajectory& hole) {
+  StaticResult Solve(std::size_t v, const Vec2& kappa, const std::shared_ptr<const model::Wellbore>& hole) {
     const Variant& variant = variants_[v];
     const Solved* nearest = nullptr;
     for (const Solved& solved : solved_[v]) {
@@ -160,10 +162,11 @@ class Search {
     for (int round = 0;; ++round) {
       model::ModelInput hole_input =
           variant.pointing ? PointTheBit(variant.input, *settings_.rss, settings_.rss->toolface + twist_) : variant.input;
-      hole_input.trajectory = hole;
+      hole_input.well = hole;
       built = std::make_shared<const model::BuiltModel>(build_(hole_input));
       if (round == 0 && nearest) {
-        start = CarryIntoHole(nearest->built->system, nearest->q, built->system, bit_md_, nearest->hole, hole);
+        start = CarryIntoHole(nearest->built->system, nearest->q, built->system, bit_md_, nearest->hole->trajectory,
+                              hole->trajectory);
       }
       try {
         equilibrium = RunStaticInWell(hole_input, *built, statics_, 1.0, start ? &*start : nullptr);
@@ -268,7 +271,7 @@ double TendencyArcLength(const model::StringConfig& string, double curvature) {
 }
 
 std::optional<std::pair<std::string, std::string>> TendencyInputProblem(const model::ModelInput& input) {
-  if (!input.trajectory || input.hole.empty()) {
+  if (!input.well || input.well->hole.empty()) {
     return std::make_pair(std::string("well"), std::string("a tendency needs a well (survey and hole): the bit "
                                                             "drills a hole, the string lies in it"));
   }
@@ -302,7 +305,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   }
   Search search(input, build, statics, settings);
 
-  Vec2 kappa = AsVector(first.value_or(CurvatureAtBit(*input.trajectory, input.bit_md)));
+  Vec2 kappa = AsVector(first.value_or(CurvatureAtBit(input.well->trajectory, input.bit_md)));
   kappa = kappa.cwiseMax(-kTendencyCurvatureLimit).cwiseMin(kTendencyCurvatureLimit);
   const auto deviation_at = [&](const Vec2& at) { return Deviation(search.Evaluate(at).point); };
   Vec2 d = deviation_at(kappa);
@@ -314,10 +317,10 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
                                                                            : kTendencyDifferenceStep;
     jacobian.col(j) = (deviation_at(kappa + step) - d) / step[j];
   }
-  std::size_t answer = 0;  // index of the current point in search.evaluated()
+  Index answer = 0;  // index of the current point in search.evaluated()
   int outward = 0;         // consecutive steps that wanted to leave the range
   bool converged = false;
-  while (static_cast<int>(search.evaluated().size()) < kTendencyEvaluations) {
+  while (std::ssize(search.evaluated()) < kTendencyEvaluations) {
     if (std::abs(jacobian.determinant()) < 1e-300 || !jacobian.allFinite()) {
       throw SolverError("tendency: the bit's deviation does not change with the hole's curvature (a singular Jacobian)");
     }
@@ -337,7 +340,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
     jacobian += ((d_next - d) - jacobian * step) * step.transpose() / step.squaredNorm();
     kappa = bounded;
     d = d_next;
-    answer = search.evaluated().size() - 1;
+    answer = std::ssize(search.evaluated()) - 1;
   }
   if (!converged) {
     // No root found: the deviation at both ends of the range says which way the bit goes there.
@@ -351,8 +354,8 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   Evaluated& steady = search.evaluated()[answer];
   TendencyResult result;
   result.curvature = steady.point.curvature;
-  result.inclination = input.trajectory->Inclination(input.bit_md);
-  result.azimuth = input.trajectory->Azimuth(input.bit_md);
+  result.inclination = input.well->trajectory.Inclination(input.bit_md);
+  result.azimuth = input.well->trajectory.Azimuth(input.bit_md);
   result.build_rate = result.curvature.build;
   const double sine = std::sin(result.inclination);
   result.turn_rate = sine > 1e-3 ? result.curvature.right / sine : 0.0;
@@ -363,7 +366,7 @@ TendencyResult RunTendency(const model::ModelInput& input, const ModelFactory& b
   result.toolfaces = search.toolfaces();
   for (const Evaluated& e : search.evaluated()) result.trace.push_back(e.point);
   result.statics = search.statics();
-  result.steady_index = static_cast<int>(answer);
+  result.steady_index = answer;
   result.equilibrium = std::move(steady.equilibrium);
   result.three_point = settings.rss && settings.rss->type == RssType::Point
                             ? PointTheBitThreePoint(input.string, *settings.rss)

@@ -93,7 +93,7 @@ struct TendencyResult {
   int statics = 0;                // of the search: trace × the statics a point averages
   std::optional<SteeringRates> steering;  // with a rotary steerable system
   std::vector<TendencyPoint> trace;  // every static of the search, in order
-  int steady_index = 0;              // the answer's in `trace`
+  Index steady_index = 0;              // the answer's in `trace`
   StaticResult equilibrium;       // in the steady hole
   std::optional<TendencySensitivities> sensitivities;  // when the settings ask for them
   std::optional<ThreePointYield> three_point;          // a bent motor's geometric yield, beside

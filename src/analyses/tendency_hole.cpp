@@ -51,8 +51,8 @@ well::Trajectory ConstantCurvatureHole(const well::Trajectory& path, double bit_
   const Vec3 top_tangent = tangent_at(arc);
   const double straight = bit_md - arc - top_md;  // above the arc, along its top tangent
   if (straight > 0.0) stations.push_back(StationOf(top_md, top_tangent));
-  const int pieces = std::max(1, static_cast<int>(std::ceil(arc / kStationSpacing)));
-  for (int i = pieces; i >= 0; --i) {
+  const Index pieces = std::max<Index>(1, std::lround(std::ceil(arc / kStationSpacing)));
+  for (Index i = pieces; i >= 0; --i) {
     const double sigma = arc * static_cast<double>(i) / pieces;
     stations.push_back(StationOf(bit_md - sigma, tangent_at(sigma)));
   }
@@ -75,7 +75,7 @@ VecX CarryIntoHole(const model::SystemModel& from_model, const VecX& q, const mo
     return Vec3(after.position + Quat::FromTwoVectors(before.tangent, after.tangent) * (x - before.position));
   };
   VecX carried = q;
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  for (Index b = 0; b < std::ssize(bodies); ++b) {
     const model::Body& body = bodies[b];
     const model::BodyPose& pose = poses[b];
     const int qo = body.q_offset, last = body.node_count() - 1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "core/error.hpp"
 
@@ -57,7 +58,7 @@ TendencySensitivities ComputeTendencySensitivities(const model::ModelInput& inpu
     varied.operation.weight_on_bit = wob;
     AddPoint(varied, build, statics, settings, base, wob, sensitivities.weight_on_bit);
   }
-  const double inclination = input.trajectory->Inclination(input.bit_md);
+  const double inclination = input.well->trajectory.Inclination(input.bit_md);
   for (const double change : {-10.0, -5.0, 0.0, 5.0, 10.0}) {
     const double value = inclination + change * kDegree;
     if (change == 0.0) {
@@ -66,7 +67,8 @@ TendencySensitivities ComputeTendencySensitivities(const model::ModelInput& inpu
     }
     if (value < 0.0 || value > 0.5 * kPi + 1e-12) continue;
     model::ModelInput varied = input;
-    varied.trajectory = PathAtInclination(*input.trajectory, input.bit_md, value);
+    varied.well = std::make_shared<const model::Wellbore>(
+        model::Wellbore{PathAtInclination(input.well->trajectory, input.bit_md, value), input.well->hole});
     AddPoint(varied, build, statics, settings, base, value, sensitivities.inclination);
   }
   for (const double sixteenths : {0.0, 1.0, 2.0}) {

@@ -16,20 +16,21 @@
 #include "model/dynamic_problem.hpp"
 #include "model/lateral_fluid.hpp"
 #include "model/node_kinematics.hpp"
+#include "model/wall_contact.hpp"
 
 namespace drillflex::analyses {
 namespace {
 
 // What one probe reads: a string station and the wall contact element at its node, if any.
 struct Probe {
-  int station = 0;
+  Index station = 0;
   std::optional<model::ElementHandle<model::WallContactElement>> contact;
 };
 
-int NearestStation(const std::vector<Station>& stations, double s) {
-  int best = 0;
-  for (std::size_t i = 0; i < stations.size(); ++i) {
-    if (std::abs(stations[i].s - s) < std::abs(stations[best].s - s)) best = static_cast<int>(i);
+Index NearestStation(const std::vector<Station>& stations, double s) {
+  Index best = 0;
+  for (Index i = 0; i < std::ssize(stations); ++i) {
+    if (std::abs(stations[i].s - s) < std::abs(stations[best].s - s)) best = i;
   }
   return best;
 }
@@ -63,7 +64,7 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   const model::SystemModel& model = built.system;
   // Only the stations read: the bit, the top, then the probes (a whole string's forces and wall
   // offsets took ~1 ms a sample, a tenth of the bundled example's run at 100 samples a second).
-  std::vector<int> read = {0, static_cast<int>(stations.size()) - 1};
+  std::vector<Index> read = {0, std::ssize(stations) - 1};
   for (const Probe& probe : probes) read.push_back(probe.station);
   std::vector<StaticNodeResult> nodes = StaticNodeResults(built, q, 1.0, read);
   AddWallOffsets(built, q, nodes, read);
@@ -102,7 +103,7 @@ TransientSample Sample(const model::BuiltModel& built, const std::vector<Station
   const model::Energies energies = model.ComputeEnergies(q, v, 1.0);
   sample.kinetic_energy = energies.kinetic;
   sample.potential_energy = energies.elastic + energies.potential;
-  for (std::size_t i = 0; i < probes.size(); ++i) {
+  for (Index i = 0; i < std::ssize(probes); ++i) {
     const Probe& probe = probes[i];
     const StaticNodeResult& node = nodes[2 + i];
     ProbeSample out;

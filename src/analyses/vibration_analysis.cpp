@@ -49,7 +49,7 @@ double OrbitSemiMajorAxis(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 // A station's lateral translation (string frame y, z) as rows acting on its body's velocity block:
 // rows y, z of [Fᵀ, Fᵀ A (−ũ_k), Fᵀ A Φ_k], F the string frame (model/node_kinematics.hpp ComputeStringFrameNodeRates).
 struct StationMap {
-  int v_offset = 0;
+  Index v_offset = 0;
   // Two fixed rows: the products below stay on the stack (a dynamic 2-row result was a heap
   // allocation per station and response).
   Eigen::Matrix<double, 2, Eigen::Dynamic> lateral;  // 2 × (6 + n_f)
@@ -59,21 +59,21 @@ struct StationMap {
 
 // An FE element's curvature rows (body frame bending y, z) on η, and E·OD/2.
 struct ElementMap {
-  int eta_offset = 0;
+  Index eta_offset = 0;
   Eigen::Matrix<double, 2, Eigen::Dynamic> curvature;  // 2 × n_f: (Ψ_{k+1} − Ψ_k)_{y,z} / ℓ
   double stress_per_curvature = 0.0;
 };
 
 // A contact closed at q: n ᵀ L_k (global radial direction on the body block) and k_n.
 struct ContactMap {
-  int v_offset = 0;
+  Index v_offset = 0;
   VecX radial;  // 6 + n_f
   double stiffness = 0.0;
 };
 
 // Open-contact clearances and closed contacts at q, by (body, node).
 struct WallState {
-  std::map<std::pair<int, int>, double> clearance;  // open contacts: R_h − R_c − ρ, m
+  std::map<std::pair<Index, Index>, double> clearance;  // open contacts: R_h − R_c − ρ, m
   std::vector<ContactMap> closed;
 };
 
@@ -84,7 +84,7 @@ WallState ReadWall(const model::BuiltModel& built, const std::vector<model::Body
   for (const auto handle : built.contacts) {
     const model::WallContactElement* contact = &model.Get(handle);
     const model::Body* body = contact->bodies().front();
-    const int b = model.IndexOf(body);
+    const Index b = model.IndexOf(body);
     const model::WallContactResult result = contact->Result(model.StateOf(*contact, poses, v, 0.0, 1.0));
     if (result.in_contact) {
       ContactMap map;
@@ -122,7 +122,7 @@ std::vector<ElementMap> MapElements(const model::SystemModel& model) {
   std::vector<ElementMap> maps;
   for (const model::Body& body : model.bodies()) {
     const auto& spec = body.reduced->spec;
-    for (int k = 0; k + 1 < body.node_count(); ++k) {
+    for (Index k = 0; k + 1 < body.node_count(); ++k) {
       const double length = body.reduced->node_positions[k + 1].x() - body.reduced->node_positions[k].x();
       ElementMap map;
       map.eta_offset = body.v_offset + 6;
@@ -218,7 +218,7 @@ double ExcitationFrequency(const Excitation& excitation, double rotary_speed, do
   throw LogicError("ExcitationFrequency: unknown excitation type");
 }
 
-double MotorSpeed(const Excitation& excitation, const model::ModelInput& input, int index) {
+double MotorSpeed(const Excitation& excitation, const model::ModelInput& input, Index index) {
   if (excitation.type != ExcitationType::Motor) return 0.0;
   const std::string key = fmt::format("analyses.vibration.excitations[{}]", index);
   const model::Component* motor = FirstMotor(input.string);
@@ -248,9 +248,9 @@ struct ResolvedExcitation {
 
 std::vector<ResolvedExcitation> Resolve(const VibrationSettings& settings, const model::ModelInput& input) {
   std::vector<ResolvedExcitation> resolved;
-  for (std::size_t i = 0; i < settings.excitations.size(); ++i) {
+  for (Index i = 0; i < std::ssize(settings.excitations); ++i) {
     ResolvedExcitation item{settings.excitations[i], 0.0};
-    item.motor_speed = MotorSpeed(item.excitation, input, static_cast<int>(i));
+    item.motor_speed = MotorSpeed(item.excitation, input, i);
     if (item.excitation.type == ExcitationType::Motor && item.excitation.lobes < 1) {
       item.excitation.lobes = *FirstMotor(input.string)->lobes;
     }
@@ -270,7 +270,7 @@ struct Amplitudes {
              const std::vector<ContactMap>& contacts) {
     const VecX re = x.real(), im = x.imag();
     double largest = 0.0;
-    for (std::size_t i = 0; i < stations.size(); ++i) {
+    for (Index i = 0; i < std::ssize(stations); ++i) {
       const StationMap& map = stations[i];
       const Eigen::Index n = map.lateral.cols();
       const double amplitude =
@@ -278,13 +278,13 @@ struct Amplitudes {
       displacement[i] += amplitude;
       largest = std::max(largest, amplitude);
     }
-    for (std::size_t e = 0; e < elements.size(); ++e) {
+    for (Index e = 0; e < std::ssize(elements); ++e) {
       const ElementMap& map = elements[e];
       const Eigen::Index n = map.curvature.cols();
       stress[e] += map.stress_per_curvature * OrbitSemiMajorAxis(map.curvature * re.segment(map.eta_offset, n),
                                                                  map.curvature * im.segment(map.eta_offset, n));
     }
-    for (std::size_t c = 0; c < contacts.size(); ++c) {
+    for (Index c = 0; c < std::ssize(contacts); ++c) {
       const ContactMap& map = contacts[c];
       const Eigen::Index n = map.radial.size();
       const double a = map.radial.dot(re.segment(map.v_offset, n)), b = map.radial.dot(im.segment(map.v_offset, n));
@@ -315,10 +315,10 @@ void FindCriticalSpeeds(const VibrationSettings& settings, const std::vector<Res
     critical.displacement = result.max_lateral_displacement[i];
     critical.bending_stress = result.max_bending_stress[i];
     double driving = -1.0;
-    for (std::size_t e = 0; e < excitations.size(); ++e) {
+    for (Index e = 0; e < std::ssize(excitations); ++e) {
       if (excitations[e].excitation.type == ExcitationType::Motor || sums[i].by_excitation[e] <= driving) continue;
       driving = sums[i].by_excitation[e];
-      critical.excitation = static_cast<int>(e);
+      critical.excitation = e;
       critical.frequency = ExcitationFrequency(excitations[e].excitation, result.rotary_speeds[i], excitations[e].motor_speed);
     }
     result.critical_speeds.push_back(critical);
@@ -326,7 +326,7 @@ void FindCriticalSpeeds(const VibrationSettings& settings, const std::vector<Res
   std::stable_sort(result.critical_speeds.begin(), result.critical_speeds.end(),
                    [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.severity > b.severity; });
   std::vector<bool> ok(result.rotary_speeds.size());
-  for (std::size_t i = 0; i < ok.size(); ++i) {
+  for (Index i = 0; i < std::ssize(ok); ++i) {
     ok[i] = result.max_bending_stress[i] <= settings.stress_limit &&
             (!ratio || result.max_clearance_ratio[i] <= settings.clearance_fraction);
   }
@@ -334,7 +334,7 @@ void FindCriticalSpeeds(const VibrationSettings& settings, const std::vector<Res
   // The quietest ranges: severity within kQuietFactor of the sweep's least.
   const double least = *std::min_element(curve.begin(), curve.end());
   std::vector<bool> quiet(curve.size());
-  for (std::size_t i = 0; i < quiet.size(); ++i) quiet[i] = curve[i] <= kQuietFactor * least;
+  for (Index i = 0; i < std::ssize(quiet); ++i) quiet[i] = curve[i] <= kQuietFactor * least;
   for (const IndexRange& run : FindRuns(quiet)) {
     result.quietest_windows.push_back({result.rotary_speeds[run.first], result.rotary_speeds[run.last]});
   }
@@ -343,8 +343,8 @@ void FindCriticalSpeeds(const VibrationSettings& settings, const std::vector<Res
 // One excitation at one sweep point: its frequency there.
 struct SweepTask {
   double frequency = 0.0;  // rad/s
-  int point = 0;           // RPM index
-  int excitation = 0;
+  Index point = 0;         // RPM index
+  Index excitation = 0;
 };
 
 // The load of an excitation is its unit load (at Ω = 1 rad/s) times this: the imbalance's m e Ω².
@@ -384,23 +384,23 @@ void SolveFrequency(const std::vector<SweepTask>& tasks, const FrequencyGroup& g
                     const std::vector<ComplexVec>& unit_loads, const std::vector<ResolvedExcitation>& excitations,
                     const std::vector<double>& speeds, ResponseSolver& solver, const SweepMaps& maps,
                     std::vector<Amplitudes>& sums) {
-  std::vector<int> columns(unit_loads.size(), -1);
-  std::vector<int> used;
+  std::vector<Index> columns(unit_loads.size(), -1);
+  std::vector<Index> used;
   for (std::size_t t = group.begin; t < group.end; ++t) {
     if (columns[tasks[t].excitation] < 0) {
-      columns[tasks[t].excitation] = static_cast<int>(used.size());
+      columns[tasks[t].excitation] = std::ssize(used);
       used.push_back(tasks[t].excitation);
     }
   }
-  solvers::ComplexMat loads(unit_loads.front().size(), static_cast<Eigen::Index>(used.size()));
-  for (std::size_t c = 0; c < used.size(); ++c) loads.col(static_cast<Eigen::Index>(c)) = unit_loads[used[c]];
+  solvers::ComplexMat loads(unit_loads.front().size(), std::ssize(used));
+  for (Index c = 0; c < std::ssize(used); ++c) loads.col(c) = unit_loads[used[c]];
   const solvers::ComplexMat response = solver.Solve(tasks[group.begin].frequency, loads);
   for (std::size_t t = group.begin; t < group.end;) {
-    const int point = tasks[t].point;
+    const Index point = tasks[t].point;
     const std::size_t first = t;
     ComplexVec x = ComplexVec::Zero(response.rows());
     for (; t < group.end && tasks[t].point == point; ++t) {
-      const int e = tasks[t].excitation;
+      const Index e = tasks[t].excitation;
       x += LoadScale(excitations[e].excitation, speeds[point]) * response.col(columns[e]);
     }
     const double largest = sums[point].Add(x, maps.stations, maps.elements, maps.contacts);
@@ -415,7 +415,7 @@ std::vector<Amplitudes> SolveSweep(std::vector<SweepTask> tasks, const std::vect
                                    std::vector<std::unique_ptr<ResponseSolver>>& solvers, const Amplitudes& zero,
                                    const SweepMaps& maps) {
   const std::vector<FrequencyGroup> groups = GroupByFrequency(tasks);
-  const int threads = static_cast<int>(solvers.size());
+  const Index threads = std::ssize(solvers);
   std::vector<std::vector<Amplitudes>> sums(threads, std::vector<Amplitudes>(speeds.size(), zero));
   std::exception_ptr failure;
   const auto count = static_cast<std::ptrdiff_t>(groups.size());
@@ -431,7 +431,7 @@ std::vector<Amplitudes> SolveSweep(std::vector<SweepTask> tasks, const std::vect
   }
   if (failure) std::rethrow_exception(failure);
   for (int thread = 1; thread < threads; ++thread) {
-    for (std::size_t point = 0; point < speeds.size(); ++point) sums[0][point].Accumulate(sums[thread][point]);
+    for (Index point = 0; point < std::ssize(speeds); ++point) sums[0][point].Accumulate(sums[thread][point]);
   }
   return std::move(sums[0]);
 }
@@ -446,8 +446,8 @@ double CheckReducedSolver(const SweepSystem& sweep, const solvers::ProjectedHarm
   solvers::HarmonicSolver direct(sweep.system, sweep.terms, sweep.options);
   double largest = 0.0, previous = -1.0;
   for (int k = 0; k < kReducedCheckPoints; ++k) {
-    const auto at = static_cast<std::size_t>((k + 0.5) / kReducedCheckPoints * static_cast<double>(tasks.size()));
-    const double frequency = tasks[std::min(at, tasks.size() - 1)].frequency;
+    const Index at = std::lround(std::floor((k + 0.5) / kReducedCheckPoints * std::ssize(tasks)));
+    const double frequency = tasks[std::min(at, std::ssize(tasks) - 1)].frequency;
     // A frequency many tasks share (a motor's) can be picked twice: checked once.
     if (frequency == previous) continue;
     previous = frequency;
@@ -471,8 +471,9 @@ double CheckReducedSolver(const SweepSystem& sweep, const solvers::ProjectedHarm
 }
 
 // One direct solver a thread.
-std::vector<std::unique_ptr<ResponseSolver>> MakeDirectSolvers(const std::shared_ptr<const SweepSystem>& sweep, int threads) {
-  std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(threads));
+std::vector<std::unique_ptr<ResponseSolver>> MakeDirectSolvers(const std::shared_ptr<const SweepSystem>& sweep,
+                                                               Index threads) {
+  std::vector<std::unique_ptr<ResponseSolver>> solvers(threads);
   for (auto& solver : solvers) solver = std::make_unique<ResponseSolver>(sweep);
   return solvers;
 }
@@ -482,7 +483,7 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeDirectSolvers(const std::shared
 std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemModel& model, const model::LateralFluid& fluid,
                                                          const VecX& q, const VibrationSettings& settings,
                                                          const std::vector<ComplexVec>& unit_loads,
-                                                         const std::vector<SweepTask>& tasks, int threads,
+                                                         const std::vector<SweepTask>& tasks, Index threads,
                                                          VibrationResult& result) {
   auto sweep = std::make_shared<const SweepSystem>(AssembleSweepSystem(model, fluid, q));
   std::shared_ptr<const solvers::ProjectedHarmonicSolver> reduced;
@@ -490,10 +491,10 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
   if (settings.method == VibrationMethod::Reduced) {
     double lowest = tasks.front().frequency, highest = lowest;
     for (const SweepTask& task : tasks) lowest = std::min(lowest, task.frequency), highest = std::max(highest, task.frequency);
-    MatX patterns(model.num_velocities(), 2 * static_cast<Eigen::Index>(unit_loads.size()));
-    for (std::size_t e = 0; e < unit_loads.size(); ++e) {
-      patterns.col(2 * static_cast<Eigen::Index>(e)) = unit_loads[e].real();
-      patterns.col(2 * static_cast<Eigen::Index>(e) + 1) = unit_loads[e].imag();
+    MatX patterns(model.num_velocities(), 2 * std::ssize(unit_loads));
+    for (Index e = 0; e < std::ssize(unit_loads); ++e) {
+      patterns.col(2 * e) = unit_loads[e].real();
+      patterns.col(2 * e + 1) = unit_loads[e].imag();
     }
     solvers::KrylovBasisOptions options;
     options.lowest_frequency = lowest;
@@ -504,7 +505,7 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
     options.pattern_bands.assign(patterns.cols(), {1e300, -1e300});
     for (const SweepTask& task : tasks) {
       for (const Eigen::Index c : {2 * task.excitation, 2 * task.excitation + 1}) {
-        solvers::FrequencyBand& band = options.pattern_bands[static_cast<std::size_t>(c)];
+        solvers::FrequencyBand& band = options.pattern_bands[c];
         band.lowest = std::min(band.lowest, task.frequency);
         band.highest = std::max(band.highest, task.frequency);
       }
@@ -512,8 +513,8 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
     // A fixed frequency (a motor's): its exact damped response, real and imaginary parts, in the
     // basis (the undamped shift at that frequency alone missed the direct solve by 23 % there).
     std::vector<Eigen::Index> fixed;
-    for (std::size_t c = 0; c < options.pattern_bands.size(); ++c) {
-      if (!(options.pattern_bands[c].highest > options.pattern_bands[c].lowest)) fixed.push_back(static_cast<Eigen::Index>(c));
+    for (Index c = 0; c < std::ssize(options.pattern_bands); ++c) {
+      if (!(options.pattern_bands[c].highest > options.pattern_bands[c].lowest)) fixed.push_back(c);
     }
     // The annulus of the basis at the geometric mean of the band (the solve takes each ω's own).
     const double reference = std::sqrt(std::max(lowest, 1e-3 * options.highest_frequency) * options.highest_frequency);
@@ -524,8 +525,8 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
     // (Sylvester's count, solvers/spectrum_count.hpp; a long string's dense lateral spectrum: 3 km
     // of pipe has over a thousand below 12.5 Hz) the basis cannot follow the sweep: it, its check
     // and the check's direct solves are skipped.
-    const auto loads_count = static_cast<int>(patterns.cols());
-    const int capacity = loads_count * (1 + options.depth * (options.shifts + loads_count)) + 2 * static_cast<int>(fixed.size());
+    const Index loads_count = patterns.cols();
+    const Index capacity = loads_count * (1 + options.depth * (options.shifts + loads_count)) + 2 * std::ssize(fixed);
     result.band_modes = solvers::CountEigenvaluesBetween(sweep->system.stiffness, reference_mass, lowest * lowest,
                                                          highest * highest);
     if (result.band_modes > capacity) {
@@ -534,10 +535,10 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
                                        "{} vectors can follow: solved directly", result.band_modes, capacity);
       return MakeDirectSolvers(sweep, threads);
     }
-    for (std::size_t k = 0; k < fixed.size(); k += 2) {
-      const double frequency = options.pattern_bands[static_cast<std::size_t>(fixed[k])].lowest;
+    for (Index k = 0; k < std::ssize(fixed); k += 2) {
+      const double frequency = options.pattern_bands[fixed[k]].lowest;
       solvers::HarmonicSolver direct(sweep->system, sweep->terms, sweep->options);
-      const std::vector<Eigen::Index> pair{fixed[k], fixed[std::min(k + 1, fixed.size() - 1)]};
+      const std::vector<Eigen::Index> pair{fixed[k], fixed[std::min(k + 1, std::ssize(fixed) - 1)]};
       const solvers::ComplexMat response = direct.Solve(frequency, MatX(patterns(Eigen::all, pair)).cast<std::complex<double>>(),
                                                         0.0, SweepTermCoefficients(*sweep, frequency));
       const Eigen::Index old = options.extra_vectors.cols();
@@ -546,7 +547,7 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
       options.extra_vectors.middleCols(old + response.cols(), response.cols()) = response.imag();
     }
     solvers::KrylovBasis basis = solvers::BuildKrylovBasis(sweep->system.stiffness, reference_mass, patterns, options);
-    result.basis_size = static_cast<int>(basis.vectors.cols());
+    result.basis_size = basis.vectors.cols();
     reduced = std::make_shared<const solvers::ProjectedHarmonicSolver>(sweep->system, sweep->terms, std::move(basis.vectors),
                                                                         SweepTermCoefficients(*sweep, reference));
     result.reduced_check_error = CheckReducedSolver(*sweep, *reduced, tasks, patterns);
@@ -559,7 +560,7 @@ std::vector<std::unique_ptr<ResponseSolver>> MakeSolvers(const model::SystemMode
     }
   }
   if (!reduced) return MakeDirectSolvers(sweep, threads);
-  std::vector<std::unique_ptr<ResponseSolver>> solvers(static_cast<std::size_t>(threads));
+  std::vector<std::unique_ptr<ResponseSolver>> solvers(threads);
   for (auto& solver : solvers) solver = std::make_unique<ResponseSolver>(sweep, reduced);
   return solvers;
 }
@@ -601,27 +602,28 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
   const WallState wall = ReadWall(built, poses);
   const std::vector<StationMap> stations = MapStations(model, poses, wall);
   const std::vector<ElementMap> elements = MapElements(model);
-  const int count = static_cast<int>(std::floor((settings.speed_to - settings.speed_from) / settings.speed_step + 1e-9)) + 1;
+  const Index count =
+      std::lround(std::floor((settings.speed_to - settings.speed_from) / settings.speed_step + 1e-9)) + 1;
   VibrationResult result;
   result.clearance_fraction = settings.clearance_fraction;
   result.stress_limit = settings.stress_limit;
-  result.closed_contacts = static_cast<int>(wall.closed.size());
+  result.closed_contacts = std::ssize(wall.closed);
   std::vector<SweepTask> tasks;
   std::vector<ComplexVec> unit_loads;
   for (const ResolvedExcitation& item : excitations) {
     unit_loads.push_back(ExcitationLoad(model, poses, input, item.excitation, 1.0));
     result.excitation_frequencies.push_back(ExcitationFrequency(item.excitation, settings.speed_from, item.motor_speed));
   }
-  for (int j = 0; j < count; ++j) {
+  for (Index j = 0; j < count; ++j) {
     result.rotary_speeds.push_back(settings.speed_from + j * settings.speed_step);
-    for (std::size_t e = 0; e < excitations.size(); ++e) {
+    for (Index e = 0; e < std::ssize(excitations); ++e) {
       const double frequency = ExcitationFrequency(excitations[e].excitation, result.rotary_speeds.back(), excitations[e].motor_speed);
-      tasks.push_back({frequency, j, static_cast<int>(e)});
+      tasks.push_back({frequency, j, e});
     }
   }
   // One solver a thread, at most one per RPM value.
   std::vector<std::unique_ptr<ResponseSolver>> solvers =
-      MakeSolvers(model, fluid, q, settings, unit_loads, tasks, std::clamp(MaxThreads(), 1, count), result);
+      MakeSolvers(model, fluid, q, settings, unit_loads, tasks, std::clamp<Index>(MaxThreads(), 1, count), result);
   const Amplitudes zero{std::vector<double>(stations.size(), 0.0), std::vector<double>(elements.size(), 0.0),
                         std::vector<double>(wall.closed.size(), 0.0), std::vector<double>(excitations.size(), 0.0)};
   const std::vector<Amplitudes> sums =
@@ -630,10 +632,10 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
   for (const Amplitudes& point : sums) {
     const auto widest = std::max_element(point.displacement.begin(), point.displacement.end());
     result.max_lateral_displacement.push_back(*widest);
-    result.s_max_displacement.push_back(stations[static_cast<std::size_t>(widest - point.displacement.begin())].s);
+    result.s_max_displacement.push_back(stations[widest - point.displacement.begin()].s);
     if (with_clearance) {
       double ratio = 0.0;
-      for (std::size_t i = 0; i < stations.size(); ++i) {
+      for (Index i = 0; i < std::ssize(stations); ++i) {
         if (stations[i].clearance > 0.0) ratio = std::max(ratio, point.displacement[i] / stations[i].clearance);
       }
       result.max_clearance_ratio.push_back(ratio);
@@ -642,8 +644,8 @@ VibrationResult RunVibration(const model::BuiltModel& built, const model::ModelI
     result.max_contact_force.push_back(point.contact.empty() ? 0.0 : *std::max_element(point.contact.begin(), point.contact.end()));
   }
   result.excitation_displacement.assign(excitations.size(), std::vector<double>(sums.size(), 0.0));
-  for (std::size_t i = 0; i < sums.size(); ++i) {
-    for (std::size_t e = 0; e < excitations.size(); ++e) result.excitation_displacement[e][i] = sums[i].by_excitation[e];
+  for (Index i = 0; i < std::ssize(sums); ++i) {
+    for (Index e = 0; e < std::ssize(excitations); ++e) result.excitation_displacement[e][i] = sums[i].by_excitation[e];
   }
   FindCriticalSpeeds(settings, excitations, sums, result);
   return result;

@@ -62,7 +62,7 @@ struct CriticalSpeed {
   double severity = 0.0;        // the clearance ratio there (without clearances: the displacement, m)
   double displacement = 0.0;    // the largest lateral displacement amplitude there, m
   double bending_stress = 0.0;  // the largest bending-stress amplitude there, Pa
-  int excitation = -1;          // the excitation that drives it (its response is the largest there)
+  Index excitation = -1;         // the excitation that drives it (its response is the largest there)
   double frequency = 0.0;       // that excitation's frequency there, rad/s: the natural frequency met
 };
 
@@ -90,7 +90,7 @@ struct VibrationResult {
   // one response: each gets its sum). The map's one curve per excitation.
   std::vector<std::vector<double>> excitation_displacement;
   VibrationMethod method = VibrationMethod::Reduced;  // how the sweep was solved
-  int basis_size = 0;  // reduced: the columns of the basis
+  Index basis_size = 0;  // reduced: the columns of the basis
   // Reduced: the largest relative error of the reduced response against the direct one at the
   // check frequencies (above kReducedCheckTolerance the sweep is solved directly instead).
   double reduced_check_error = 0.0;
@@ -110,7 +110,7 @@ std::string ExcitationName(const Excitation& excitation);
 // The rotor speed of a motor excitation (rad/s): its `speed`, else rev_per_volume × flow rate of the
 // string's first motor. Throws InputError (key path analyses.vibration.excitations[index]) when
 // neither is known, or when there is no motor to take the lobes or place from.
-double MotorSpeed(const Excitation& excitation, const model::ModelInput& input, int index);
+double MotorSpeed(const Excitation& excitation, const model::ModelInput& input, Index index);
 
 // The excitations of a vibration analysis whose case gives none (docs/case-format.md "Vibration"): a mass
 // imbalance of kDefaultImbalance at 1× at the middle of the string's first MWD or LWD, else of its BHA

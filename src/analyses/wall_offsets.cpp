@@ -70,13 +70,13 @@ void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<S
   if (nodes.size() != stations) {
     throw LogicError(fmt::format("AddWallOffsets: {} node results for {} stations", nodes.size(), stations));
   }
-  std::vector<int> all(stations);
+  std::vector<Index> all(stations);
   std::iota(all.begin(), all.end(), 0);
   AddWallOffsets(built, q, nodes, all);
 }
 
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes,
-                    std::span<const int> station_indices) {
+                    std::span<const Index> station_indices) {
   if (built.contacts.empty()) return;
   const model::SystemModel& system = built.system;
   const std::vector<Station> stations = StringStations(system);
@@ -87,14 +87,12 @@ void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<S
   const std::vector<ContactAtStation> contacts = ContactsByStation(built);
   const auto poses = system.Poses(q);
   const VecX rest = VecX::Zero(system.num_velocities());
-  // The hole shared by the model's contacts, for the nodes without a contact of their own; the
-  // aliasing shared_ptr does not own it (the model outlives this function).
-  const model::WallContactElement& any = *contacts.front().element;
-  const std::shared_ptr<const model::Wellbore> wellbore(std::shared_ptr<const model::Wellbore>(), &any.wellbore());
+  // The hole shared by the model's contacts, for the nodes without a contact of their own.
+  const std::shared_ptr<const model::Wellbore>& wellbore = contacts.front().element->wellbore();
 
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
+  for (Index i = 0; i < std::ssize(nodes); ++i) {
     StaticNodeResult& node = nodes[i];
-    const Station& station = stations.at(static_cast<std::size_t>(station_indices[i]));
+    const Station& station = stations.at(station_indices[i]);
     const ContactAtStation& nearest = NearestContact(contacts, node.s);
     if (std::abs(nearest.s - node.s) <= kSameStationTolerance) {
       const model::WallContactElement& contact = *nearest.element;

@@ -32,6 +32,6 @@ void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<S
 // The same for results at the listed stations only (nodes[i] at station station_indices[i], as
 // StaticNodeResults(built, q, load_factor, station_indices) gives them).
 void AddWallOffsets(const model::BuiltModel& built, const VecX& q, std::vector<StaticNodeResult>& nodes,
-                    std::span<const int> station_indices);
+                    std::span<const Index> station_indices);
 
 }  // namespace drillflex::analyses

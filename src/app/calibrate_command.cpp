@@ -48,7 +48,7 @@ int RunCalibrateCommand(const CommandOptions& options) {
   if (!options.roadmap_stiff_length.empty()) {
     c = io::WithValues(c, {{"analyses.roadmap.stiff_length", options.roadmap_stiff_length}});
   }
-  if (!c.well || !c.input.trajectory) throw InputError({c.file, 0, 0}, "well", "a calibration needs a well");
+  if (!c.well || !c.input.well) throw InputError({c.file, 0, 0}, "well", "a calibration needs a well");
   pipeline::CalibrationSettings settings;
   settings.fit = ParseFit(options.calibrate_fit);
   if (options.calibrate_model == "soft") {
@@ -59,7 +59,7 @@ int RunCalibrateCommand(const CommandOptions& options) {
   settings.model.roadmap = c.analyses.roadmap.value_or(analyses::RoadmapSettings{});
   settings.model.jobs = options.jobs;
   io::RigReadingsOptions reading_options;
-  reading_options.deepest_md = c.input.trajectory->end_md();
+  reading_options.deepest_md = c.input.well->trajectory.end_md();
   const io::RigReadings readings = io::ReadRigReadings(options.readings_path, reading_options);
   for (const std::string& warning : readings.warnings) std::cerr << "drillflex: readings: " << warning << '\n';
   std::cout << fmt::format("calibrate: {} readings of {} against the {} string model of {}, on {} job{}\n",

@@ -59,7 +59,7 @@ int RunRoadmapCommand(const CommandOptions& options) {
   std::string readings_csv;
   if (!options.readings_path.empty()) {
     io::RigReadingsOptions reading_options;
-    if (c.input.trajectory) reading_options.deepest_md = c.input.trajectory->end_md();
+    if (c.input.well) reading_options.deepest_md = c.input.well->trajectory.end_md();
     const io::RigReadings readings = io::ReadRigReadings(options.readings_path, reading_options);
     for (const std::string& warning : readings.warnings) std::cerr << "drillflex: readings: " << warning << '\n';
     pipeline::ReadingsModelOptions model_options;

@@ -32,18 +32,18 @@ Eigen::LLT<MatX> FactorStiffness(const MatX& stiffness, const char* what) {
 // The (up to) `count` lowest eigenpairs of K x = λ M x from K = LLᵀ (the stiffness-Cholesky form
 // of the header). Stops early at massless modes (1/λ ≤ 1e-14 of the largest): the caller checks
 // that it got what it needs.
-Eigenpairs LowestModes(const Eigen::LLT<MatX>& llt, const MatX& mass, int count) {
+Eigenpairs LowestModes(const Eigen::LLT<MatX>& llt, const MatX& mass, Index count) {
   const MatX l_inv_m = llt.matrixL().solve(mass);
   MatX c = llt.matrixL().solve(l_inv_m.transpose());
   c = 0.5 * (c + c.transpose());
   const DenseEigenpairs solver = SymmetricEigen(c);
   const VecX& mu = solver.values;  // ascending: the largest μ = 1/λ is the lowest λ
-  const int n = static_cast<int>(mu.size());
+  const Index n = mu.size();
   const double mu_max = n > 0 ? mu(n - 1) : 0.0;
-  int massive = 0;
+  Index massive = 0;
   while (massive < std::min(count, n) && mu(n - 1 - massive) > 1e-14 * mu_max) ++massive;
   Eigenpairs out{VecX(massive), MatX(mass.rows(), massive)};
-  for (int j = 0; j < massive; ++j) {
+  for (Index j = 0; j < massive; ++j) {
     const double m = mu(n - 1 - j);
     out.eigenvalues(j) = 1.0 / m;
     // x = L⁻ᵀ y has xᵀ K x = 1 and xᵀ M x = μ: divide by sqrt(μ).
@@ -58,11 +58,11 @@ void ThrowMassless(const char* what) {
   throw LogicError(message);
 }
 
-MatX Submatrix(const MatX& a, const std::vector<int>& index) {
-  const int n = static_cast<int>(index.size());
+MatX Submatrix(const MatX& a, const std::vector<Index>& index) {
+  const Index n = std::ssize(index);
   MatX out(n, n);
-  for (int c = 0; c < n; ++c) {
-    for (int r = 0; r < n; ++r) out(r, c) = a(index[r], index[c]);
+  for (Index c = 0; c < n; ++c) {
+    for (Index r = 0; r < n; ++r) out(r, c) = a(index[r], index[c]);
   }
   return out;
 }
@@ -70,25 +70,25 @@ MatX Submatrix(const MatX& a, const std::vector<int>& index) {
 // Groups of DOFs coupled through K or M: the connected components of their coupling graph (a
 // straight beam splits into axial, torsion and the two bending planes). Solving each group alone
 // is exact and about ten times cheaper than one dense eigenproblem.
-std::vector<std::vector<int>> CoupledGroups(const MatX& k, const MatX& m) {
-  const int n = static_cast<int>(k.rows());
-  std::vector<int> parent(n);
-  for (int i = 0; i < n; ++i) parent[i] = i;
-  const auto root = [&](int i) {
+std::vector<std::vector<Index>> CoupledGroups(const MatX& k, const MatX& m) {
+  const Index n = k.rows();
+  std::vector<Index> parent(n);
+  for (Index i = 0; i < n; ++i) parent[i] = i;
+  const auto root = [&](Index i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (int c = 0; c < n; ++c) {
-    for (int r = 0; r < c; ++r) {
+  for (Index c = 0; c < n; ++c) {
+    for (Index r = 0; r < c; ++r) {
       if (k(r, c) != 0.0 || m(r, c) != 0.0) parent[root(r)] = root(c);
     }
   }
-  std::vector<std::vector<int>> groups;
-  std::vector<int> group_of_root(n, -1);
-  for (int i = 0; i < n; ++i) {
-    int& g = group_of_root[root(i)];
+  std::vector<std::vector<Index>> groups;
+  std::vector<Index> group_of_root(n, -1);
+  for (Index i = 0; i < n; ++i) {
+    Index& g = group_of_root[root(i)];
     if (g < 0) {
-      g = static_cast<int>(groups.size());
+      g = std::ssize(groups);
       groups.emplace_back();
     }
     groups[g].push_back(i);
@@ -103,44 +103,43 @@ std::vector<std::vector<int>> CoupledGroups(const MatX& k, const MatX& m) {
 // of the bundled example, 6 modes asked: 865.4 and 868.0 rad/s instead of a pair) and its modes
 // not closed under a turn about its axis (cms::ReducedBody::twist_generator). Throws LogicError on
 // a non-positive-definite K or a massless kept mode.
-Eigenpairs LowestModesByGroups(const MatX& k, const MatX& m, int count, const char* what) {
-  const std::vector<std::vector<int>> groups = CoupledGroups(k, m);
+Eigenpairs LowestModesByGroups(const MatX& k, const MatX& m, Index count, const char* what) {
+  const std::vector<std::vector<Index>> groups = CoupledGroups(k, m);
   std::vector<Eigenpairs> solved;
   struct Candidate {
     double eigenvalue;
-    int group, index;
+    Index group, index;
   };
   std::vector<Candidate> candidates;
-  for (std::size_t g = 0; g < groups.size(); ++g) {
+  for (Index g = 0; g < std::ssize(groups); ++g) {
     const Eigen::LLT<MatX> llt = FactorStiffness(Submatrix(k, groups[g]), what);
     solved.push_back(LowestModes(llt, Submatrix(m, groups[g]), count));
-    for (int j = 0; j < solved.back().eigenvalues.size(); ++j) {
-      candidates.push_back({solved.back().eigenvalues(j), static_cast<int>(g), j});
+    for (Index j = 0; j < solved.back().eigenvalues.size(); ++j) {
+      candidates.push_back({solved.back().eigenvalues(j), g, j});
     }
   }
-  if (static_cast<int>(candidates.size()) < count) ThrowMassless(what);
+  if (std::ssize(candidates) < count) ThrowMassless(what);
   std::stable_sort(
       candidates.begin(), candidates.end(),
       [](const Candidate& a, const Candidate& b) { return a.eigenvalue < b.eigenvalue; });
-  while (count > 0 && count < static_cast<int>(candidates.size()) &&
+  while (count > 0 && count < std::ssize(candidates) &&
          candidates[count].eigenvalue - candidates[count - 1].eigenvalue <= 1e-8 * candidates[count].eigenvalue) {
     ++count;
   }
   Eigenpairs out{VecX(count), MatX::Zero(k.rows(), count)};
-  for (int j = 0; j < count; ++j) {
+  for (Index j = 0; j < count; ++j) {
     const Candidate& pick = candidates[j];
     out.eigenvalues(j) = pick.eigenvalue;
-    const std::vector<int>& rows = groups[pick.group];
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-      out.vectors(rows[r], j) =
-          solved[pick.group].vectors(static_cast<Eigen::Index>(r), pick.index);
+    const std::vector<Index>& rows = groups[pick.group];
+    for (Index r = 0; r < std::ssize(rows); ++r) {
+      out.vectors(rows[r], j) = solved[pick.group].vectors(r, pick.index);
     }
   }
   return out;
 }
 
-void CheckBoundary(int dof_count, const std::vector<int>& boundary) {
-  std::vector<int> sorted = boundary;
+void CheckBoundary(Index dof_count, const std::vector<Index>& boundary) {
+  std::vector<Index> sorted = boundary;
   std::sort(sorted.begin(), sorted.end());
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
     throw LogicError("Craig-Bampton: a boundary DOF is listed twice");
@@ -151,15 +150,14 @@ void CheckBoundary(int dof_count, const std::vector<int>& boundary) {
 }
 
 // Dense block A(rows, cols) of a sparse matrix.
-MatX DenseBlock(const SparseMat& a, const std::vector<int>& rows, const std::vector<int>& cols) {
-  std::vector<int> row_position(a.rows(), -1);
-  for (std::size_t r = 0; r < rows.size(); ++r) row_position[rows[r]] = static_cast<int>(r);
-  MatX block =
-      MatX::Zero(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
-  for (std::size_t c = 0; c < cols.size(); ++c) {
+MatX DenseBlock(const SparseMat& a, const std::vector<Index>& rows, const std::vector<Index>& cols) {
+  std::vector<Index> row_position(a.rows(), -1);
+  for (Index r = 0; r < std::ssize(rows); ++r) row_position[rows[r]] = r;
+  MatX block = MatX::Zero(std::ssize(rows), std::ssize(cols));
+  for (Index c = 0; c < std::ssize(cols); ++c) {
     for (SparseMat::InnerIterator it(a, cols[c]); it; ++it) {
-      const int r = row_position[it.row()];
-      if (r >= 0) block(r, static_cast<Eigen::Index>(c)) = it.value();
+      const Index r = row_position[it.row()];
+      if (r >= 0) block(r, c) = it.value();
     }
   }
   return block;
@@ -169,14 +167,14 @@ MatX DenseBlock(const SparseMat& a, const std::vector<int>& rows, const std::vec
 // has the most lateral-v content and the second the least: planar modes for a planar pair. Then
 // fixes each mode's sign so its largest entry of U is positive. Keeps M- and K-orthonormality.
 void AlignModes(const VecX& eigenvalues, MatX& x, MatX& u) {
-  const int n = static_cast<int>(eigenvalues.size());
-  for (int j = 0; j + 1 < n; ++j) {
+  const Index n = eigenvalues.size();
+  for (Index j = 0; j + 1 < n; ++j) {
     const bool pair = std::abs(eigenvalues(j + 1) - eigenvalues(j)) <= 1e-7 * eigenvalues(j + 1);
     const bool triple =
         j + 2 < n && std::abs(eigenvalues(j + 2) - eigenvalues(j)) <= 1e-7 * eigenvalues(j + 2);
     if (!pair || triple) continue;
     MatX v(u.rows() / 6, 2);  // the v (y) displacement of every node in both modes
-    for (int k = 0; k < v.rows(); ++k) v.row(k) = u.block(6 * k + 1, j, 1, 2);
+    for (Index k = 0; k < v.rows(); ++k) v.row(k) = u.block(6 * k + 1, j, 1, 2);
     const DenseEigenpairs split = SymmetricEigen(v.transpose() * v);
     Eigen::Matrix2d rotation;  // columns: most v-content first
     rotation << split.vectors.col(1), split.vectors.col(0);
@@ -184,7 +182,7 @@ void AlignModes(const VecX& eigenvalues, MatX& x, MatX& u) {
     u.middleCols(j, 2) = u.middleCols(j, 2) * rotation;
     ++j;
   }
-  for (int j = 0; j < n; ++j) {
+  for (Index j = 0; j < n; ++j) {
     Eigen::Index largest = 0;
     u.col(j).cwiseAbs().maxCoeff(&largest);
     if (u(largest, j) < 0.0) {
@@ -197,18 +195,18 @@ void AlignModes(const VecX& eigenvalues, MatX& x, MatX& u) {
 }  // namespace
 
 CraigBamptonBasis BuildCraigBamptonBasis(const SparseMat& stiffness, const SparseMat& mass,
-                                         const std::vector<int>& boundary_dofs, int mode_count) {
-  const int n = static_cast<int>(stiffness.rows());
+                                         const std::vector<Index>& boundary_dofs, Index mode_count) {
+  const Index n = stiffness.rows();
   CheckBoundary(n, boundary_dofs);
   CraigBamptonBasis basis;
   basis.boundary_dofs = boundary_dofs;
   std::vector<bool> is_boundary(n, false);
-  for (int d : boundary_dofs) is_boundary[d] = true;
-  for (int d = 0; d < n; ++d) {
+  for (Index d : boundary_dofs) is_boundary[d] = true;
+  for (Index d = 0; d < n; ++d) {
     if (!is_boundary[d]) basis.internal_dofs.push_back(d);
   }
-  const int nb = static_cast<int>(boundary_dofs.size());
-  const int ni = static_cast<int>(basis.internal_dofs.size());
+  const Index nb = std::ssize(boundary_dofs);
+  const Index ni = std::ssize(basis.internal_dofs);
   if (mode_count < 0 || mode_count > ni) {
     std::string message = "needs 0 <= modes <= ";
     message.append(std::to_string(ni))
@@ -224,16 +222,16 @@ CraigBamptonBasis BuildCraigBamptonBasis(const SparseMat& stiffness, const Spars
   const char* interior = "interior (interface held)";
   const Eigen::LLT<MatX> k_ii_llt = FactorStiffness(k_ii, interior);
   const Eigenpairs fixed = LowestModesByGroups(k_ii, m_ii, mode_count, interior);
-  mode_count = static_cast<int>(fixed.eigenvalues.size());  // a cut pair completed
+  mode_count = fixed.eigenvalues.size();  // a cut pair completed
   basis.fixed_interface_eigenvalues = fixed.eigenvalues;
   // Step 4: constraint modes Ψ_ib = −K_ii⁻¹ K_ib.
   const MatX psi = -k_ii_llt.solve(k_ib);
 
   // Step 5: T = [[I, 0], [Ψ_ib, Φ_ik]] in the model's DOF order.
   basis.transformation = MatX::Zero(n, nb + mode_count);
-  for (int j = 0; j < nb; ++j) basis.transformation(boundary_dofs[j], j) = 1.0;
-  for (int i = 0; i < ni; ++i) {
-    const int row = basis.internal_dofs[i];
+  for (Index j = 0; j < nb; ++j) basis.transformation(boundary_dofs[j], j) = 1.0;
+  for (Index i = 0; i < ni; ++i) {
+    const Index row = basis.internal_dofs[i];
     basis.transformation.row(row).head(nb) = psi.row(i);
     // No modes (modes_per_body: 0): row() of the empty mode matrix would offset a null pointer.
     if (mode_count > 0) basis.transformation.row(row).tail(mode_count) = fixed.vectors.row(i);
@@ -250,8 +248,8 @@ CraigBamptonBasis BuildCraigBamptonBasis(const SparseMat& stiffness, const Spars
 
 namespace {
 
-std::vector<int> InterfaceNodes(const fe::BodyFeModel& model, const ReductionOptions& options) {
-  std::vector<int> nodes = options.interface_nodes;
+std::vector<Index> InterfaceNodes(const fe::BodyFeModel& model, const ReductionOptions& options) {
+  std::vector<Index> nodes = options.interface_nodes;
   if (nodes.empty()) nodes = {0, model.node_count() - 1};
   std::sort(nodes.begin(), nodes.end());
   const bool duplicate = std::adjacent_find(nodes.begin(), nodes.end()) != nodes.end();
@@ -264,12 +262,12 @@ std::vector<int> InterfaceNodes(const fe::BodyFeModel& model, const ReductionOpt
 // Step 6: the elastic eigenpairs of K̄ x = λ M̄ x in the M̄-orthogonal complement of the rigid
 // fields, X mass-normalised. Throws LogicError unless there are exactly six zero-energy modes.
 Eigenpairs ElasticModes(const CraigBamptonBasis& basis, const MatX& rigid_fields) {
-  const int nc = static_cast<int>(basis.reduced_mass.rows());
-  const int nb = static_cast<int>(basis.boundary_dofs.size());
+  const Index nc = basis.reduced_mass.rows();
+  const Index nb = std::ssize(basis.boundary_dofs);
   MatX rigid = MatX::Zero(nc, 6);  // boundary rows of R, zero modal rows
-  for (int j = 0; j < nb; ++j) rigid.row(j) = rigid_fields.row(basis.boundary_dofs[j]);
+  for (Index j = 0; j < nb; ++j) rigid.row(j) = rigid_fields.row(basis.boundary_dofs[j]);
   const double k_norm = basis.reduced_stiffness.norm();
-  for (int c = 0; c < 6; ++c) {
+  for (Index c = 0; c < 6; ++c) {
     if ((basis.reduced_stiffness * rigid.col(c)).norm() > 1e-9 * k_norm * rigid.col(c).norm()) {
       throw LogicError(
           "Craig-Bampton: a rigid-body motion stores strain energy (fewer than 6 zero modes)");
@@ -293,7 +291,7 @@ Eigenpairs ElasticModes(const CraigBamptonBasis& basis, const MatX& rigid_fields
 
 // Step 7: the per-node data of the floating-frame node sum.
 void FillNodeData(const fe::BodyFeModel& model, const MatX& u, ReducedBody& body) {
-  for (int k = 0; k < model.node_count(); ++k) {
+  for (Index k = 0; k < model.node_count(); ++k) {
     body.node_positions.emplace_back(model.node_x[k], 0.0, 0.0);
     body.node_mass.push_back(model.node_mass[k]);
     body.node_lateral_mass.push_back(model.node_lateral_mass[k]);
@@ -319,10 +317,10 @@ ReducedBody Reduce(const fe::BodyFeModel& model, const ReductionOptions& options
   if (!(options.structural_damping >= 0.0)) {
     throw InputError({}, "structural_damping", "the structural damping ratio must not be negative");
   }
-  const std::vector<int> nodes = InterfaceNodes(model, options);
-  std::vector<int> boundary;
-  for (int node : nodes) {
-    for (int d = 0; d < fe::kDofPerNode; ++d) boundary.push_back(fe::kDofPerNode * node + d);
+  const std::vector<Index> nodes = InterfaceNodes(model, options);
+  std::vector<Index> boundary;
+  for (Index node : nodes) {
+    for (Index d = 0; d < fe::kDofPerNode; ++d) boundary.push_back(fe::kDofPerNode * node + d);
   }
   const CraigBamptonBasis basis =
       BuildCraigBamptonBasis(model.stiffness, model.mass, boundary, options.modes_per_body);
@@ -334,8 +332,8 @@ ReducedBody Reduce(const fe::BodyFeModel& model, const ReductionOptions& options
   ReducedBody body;
   body.spec = model.spec;
   body.length = model.spec.length;
-  body.fixed_interface_mode_count = static_cast<int>(basis.fixed_interface_eigenvalues.size());
-  body.flexible_count = static_cast<int>(u.cols());
+  body.fixed_interface_mode_count = basis.fixed_interface_eigenvalues.size();
+  body.flexible_count = u.cols();
   body.interface_nodes = nodes;
   body.structural_damping = options.structural_damping;
   FillNodeData(model, u, body);
@@ -353,9 +351,9 @@ ReducedBody Reduce(const fe::BodyFeModel& model, const ReductionOptions& options
   body.modal_torque_geometric_stiffness = u.transpose() * (model.torque_geometric_stiffness * u);
   body.modal_torque_geometric_stiffness =
       0.5 * (body.modal_torque_geometric_stiffness + body.modal_torque_geometric_stiffness.transpose()).eval();
-  const int elements = model.node_count() - 1;
+  const Index elements = model.node_count() - 1;
   body.element_modal_geometric_stiffness.reserve(elements);
-  for (int e = 0; e < elements; ++e) {
+  for (Index e = 0; e < elements; ++e) {
     const auto rows = u.middleRows(fe::kDofPerNode * e, 2 * fe::kDofPerNode);
     const MatX modal = rows.transpose() * model.element_geometric_stiffness * rows;
     body.element_modal_geometric_stiffness.push_back(0.5 * (modal + modal.transpose()));
@@ -379,7 +377,7 @@ ReducedBody Reduce(const fe::BodyFeModel& model, const ReductionOptions& options
   return body;
 }
 
-ReducedBody Reduce(const fe::BodyFeModel& model, int modes_per_body, double structural_damping) {
+ReducedBody Reduce(const fe::BodyFeModel& model, Index modes_per_body, double structural_damping) {
   ReductionOptions options;
   options.modes_per_body = modes_per_body;
   options.structural_damping = structural_damping;

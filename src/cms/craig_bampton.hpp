@@ -24,8 +24,8 @@ namespace drillflex::cms {
 
 // The Craig–Bampton basis of steps 2–5 on any FE model.
 struct CraigBamptonBasis {
-  std::vector<int> boundary_dofs;  // the first n_b coordinates, in this order
-  std::vector<int> internal_dofs;  // every other DOF, ascending
+  std::vector<Index> boundary_dofs;  // the first n_b coordinates, in this order
+  std::vector<Index> internal_dofs;  // every other DOF, ascending
   MatX transformation;             // T = [[I, 0], [Ψ_ib, Φ_ik]], N × (n_b + H), model DOF order
   VecX fixed_interface_eigenvalues;  // ω² of the H kept fixed-interface modes, ascending
   MatX reduced_stiffness;            // K̄ = Tᵀ K T
@@ -39,12 +39,12 @@ struct CraigBamptonBasis {
 // mode_count is negative or exceeds the internal DOF count, LogicError on a bad boundary list or
 // an unrestrained interior.
 CraigBamptonBasis BuildCraigBamptonBasis(const SparseMat& stiffness, const SparseMat& mass,
-                                         const std::vector<int>& boundary_dofs, int mode_count);
+                                         const std::vector<Index>& boundary_dofs, Index mode_count);
 
 struct ReductionOptions {
-  int modes_per_body = 12;           // H fixed-interface modes
+  Index modes_per_body = 12;           // H fixed-interface modes
   double structural_damping = 0.0;   // ζ_s of D_ff = diag(2 ζ_s ω_j)
-  std::vector<int> interface_nodes;  // node indices; empty: the two end nodes {0, n}
+  std::vector<Index> interface_nodes;  // node indices; empty: the two end nodes {0, n}
 };
 
 // Steps 2–7: the floating-frame body. n_f = 6 n_interface − 6 + H. Throws InputError on bad
@@ -53,6 +53,6 @@ struct ReductionOptions {
 ReducedBody Reduce(const fe::BodyFeModel& model, const ReductionOptions& options);
 
 // The default interface (both end nodes): n_f = 6 + H.
-ReducedBody Reduce(const fe::BodyFeModel& model, int modes_per_body, double structural_damping);
+ReducedBody Reduce(const fe::BodyFeModel& model, Index modes_per_body, double structural_damping);
 
 }  // namespace drillflex::cms

@@ -32,9 +32,9 @@ using Matrix6X = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 struct ReducedBody {
   fe::BodySpec spec;                   // what was reduced (element matrices can be rebuilt from it)
   double length = 0.0;                 // m
-  int fixed_interface_mode_count = 0;  // H (modes_per_body, one more to complete a cut pair)
-  int flexible_count = 0;              // n_f = 6 n_interface − 6 + H (6 + H for two end nodes)
-  std::vector<int> interface_nodes;    // node indices used as the Craig–Bampton interface
+  Index fixed_interface_mode_count = 0;  // H (modes_per_body, one more to complete a cut pair)
+  Index flexible_count = 0;              // n_f = 6 n_interface − 6 + H (6 + H for two end nodes)
+  std::vector<Index> interface_nodes;    // node indices used as the Craig–Bampton interface
   double structural_damping = 0.0;     // ζ_s
 
   // Per node k (body frame):
@@ -76,9 +76,9 @@ struct ReducedBody {
   Vec3 center_of_mass = Vec3::Zero();        // m
   Mat3 inertia_about_center = Mat3::Zero();  // kg·m²
 
-  int node_count() const { return static_cast<int>(node_positions.size()); }
+  Index node_count() const { return std::ssize(node_positions); }
   // diag(m_k, m_k + m_lat,k, m_k + m_lat,k): node k's translational mass in the body frame.
-  Mat3 NodeTranslationalMass(int node) const;
+  Mat3 NodeTranslationalMass(Index node) const;
 };
 
 // Σ_k L_kᵀ diag(M_k, J_k) L_k at η = 0 and A = I in the velocities (ṙ, ω, η̇): the node-sum mass

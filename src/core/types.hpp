@@ -16,6 +16,10 @@ using MatX = Eigen::MatrixXd;
 using Quat = Eigen::Quaterniond;
 using SparseMat = Eigen::SparseMatrix<double>;
 using Triplet = Eigen::Triplet<double>;
+// The one index type of degrees of freedom, nodes, bodies and elements, and of their counts: Eigen's
+// (signed, std::ptrdiff_t), so that an index goes into a vector or a matrix as it is; a container's
+// size comes in by std::ssize.
+using Index = Eigen::Index;
 
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kDegree = kPi / 180.0;  // one degree in radians

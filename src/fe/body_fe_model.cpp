@@ -24,20 +24,20 @@ void ValidateSpec(const BodySpec& spec) {
 }
 
 // Adds a 12 × 12 element matrix of element e (nodes e, e + 1) to the triplet list.
-void AddElement(const Mat12& element, int e, std::vector<Triplet>& triplets) {
-  const int offset = kDofPerNode * e;
-  for (int c = 0; c < 12; ++c) {
-    for (int r = 0; r < 12; ++r) {
+void AddElement(const Mat12& element, Index e, std::vector<Triplet>& triplets) {
+  const Index offset = kDofPerNode * e;
+  for (Index c = 0; c < 12; ++c) {
+    for (Index r = 0; r < 12; ++r) {
       if (element(r, c) != 0.0) triplets.emplace_back(offset + r, offset + c, element(r, c));
     }
   }
 }
 
-SparseMat Assemble(const Mat12& element, int element_count) {
+SparseMat Assemble(const Mat12& element, Index element_count) {
   std::vector<Triplet> triplets;
-  triplets.reserve(static_cast<std::size_t>(element_count) * 144);
-  for (int e = 0; e < element_count; ++e) AddElement(element, e, triplets);
-  const int n = kDofPerNode * (element_count + 1);
+  triplets.reserve(element_count * 144);
+  for (Index e = 0; e < element_count; ++e) AddElement(element, e, triplets);
+  const Index n = kDofPerNode * (element_count + 1);
   SparseMat matrix(n, n);
   matrix.setFromTriplets(triplets.begin(), triplets.end());
   return matrix;
@@ -58,12 +58,12 @@ BodyFeModel BuildBodyFeModel(const BodySpec& spec) {
   ValidateSpec(spec);
   const BodyFeOptions& options = spec.options;
   const BeamElementProperties element = BodyElementProperties(spec);
-  const int n = spec.element_count;
+  const Index n = spec.element_count;
 
   BodyFeModel model;
   model.spec = spec;
   model.node_x.resize(n + 1);
-  for (int k = 0; k <= n; ++k) model.node_x[k] = spec.length * k / n;
+  for (Index k = 0; k <= n; ++k) model.node_x[k] = spec.length * k / n;
   model.node_x[n] = spec.length;
 
   // Every element is the same, so each matrix is one element matrix assembled n times.
@@ -81,10 +81,10 @@ BodyFeModel BuildBodyFeModel(const BodySpec& spec) {
   model.node_mass.assign(n + 1, 0.0);
   model.node_lateral_mass.assign(n + 1, 0.0);
   model.node_rotary_inertia.assign(n + 1, Vec3::Zero());
-  for (int e = 0; e < n; ++e) {
-    for (int side = 0; side < 2; ++side) {
-      const int k = e + side;
-      const int d = kDofPerNode * side;
+  for (Index e = 0; e < n; ++e) {
+    for (Index side = 0; side < 2; ++side) {
+      const Index k = e + side;
+      const Index d = kDofPerNode * side;
       model.node_mass[k] += structural_half;
       model.node_lateral_mass[k] += lumped(d + 1, d + 1) - structural_half;
       model.node_rotary_inertia[k] += lumped.diagonal().segment<3>(d + 3);
@@ -94,10 +94,10 @@ BodyFeModel BuildBodyFeModel(const BodySpec& spec) {
 }
 
 MatX RigidBodyFields(const std::vector<double>& node_x) {
-  const int nodes = static_cast<int>(node_x.size());
+  const Index nodes = std::ssize(node_x);
   MatX fields = MatX::Zero(kDofPerNode * nodes, 6);
-  for (int k = 0; k < nodes; ++k) {
-    const int row = kDofPerNode * k;
+  for (Index k = 0; k < nodes; ++k) {
+    const Index row = kDofPerNode * k;
     fields.block<3, 3>(row, 0).setIdentity();
     // θ × ρ_k with ρ_k = (x, 0, 0): rotation about y moves w by −x θy, about z moves v by x θz.
     fields(row + 2, 4) = -node_x[k];

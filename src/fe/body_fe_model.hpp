@@ -37,7 +37,7 @@ struct BodySpec {
   HollowSection section;
   Material material;
   double length = 0.0;    // m
-  int element_count = 0;  // ≥ 1
+  Index element_count = 0;  // ≥ 1
   BodyFeOptions options;
 };
 
@@ -56,11 +56,11 @@ struct BodyFeModel {
   std::vector<double> node_lateral_mass;  // fluid mass moving laterally only (y, z), kg
   std::vector<Vec3> node_rotary_inertia;  // diag(Jx, Jy, Jz) about the node, kg·m²
 
-  int node_count() const { return static_cast<int>(node_x.size()); }
-  int dof_count() const { return 6 * node_count(); }
+  Index node_count() const { return std::ssize(node_x); }
+  Index dof_count() const { return 6 * node_count(); }
 };
 
-inline constexpr int kDofPerNode = 6;
+inline constexpr Index kDofPerNode = 6;
 
 // Builds the model. Throws InputError (no file position) on a bad section, material, length,
 // element count or negative fluid mass.

@@ -35,7 +35,7 @@ json UtilisationJson(const Case& c, const analyses::LimitUtilisation& limit) {
           {"utilisation", limit.utilisation},
           {"s", out(limit.s, Quantity::Length)},
           {"md", out(limit.md, Quantity::Length)},
-          {"component", c.input.string.components.at(static_cast<std::size_t>(limit.component)).name}};
+          {"component", c.input.string.components.at(limit.component).name}};
 }
 
 void AddCaseHeader(const Case& c, const model::BuiltModel& built, ResultFiles& files) {

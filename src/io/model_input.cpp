@@ -12,13 +12,12 @@ void CompleteModelInput(Case& c) {
   // (rotating off bottom or drilling; torque and drag).
   if (input.operation.rotary_speed > 0.0) input.static_sliding = model::PrescribedSliding{0.0, input.operation.rotary_speed};
   if (c.well) {
-    input.trajectory.emplace(c.well->survey);
+    input.well = model::MakeWellbore(well::Trajectory(c.well->survey), c.well->hole);
     input.bit_md = c.well->bit_md;
-    input.hole = c.well->hole;
   }
   // A surface hook load instead of a WOB (a string in a well on the default supports): the WOB is
   // what the hook leaves of the string's buoyed weight along the hole (model/builder.hpp).
-  if (input.operation.hook_load && input.trajectory && input.supports.empty()) {
+  if (input.operation.hook_load && input.well && input.supports.empty()) {
     const double hook_load = *input.operation.hook_load;
     const double wob = model::WeightOnBitFromHookLoad(input, hook_load);
     if (wob < 0.0) {

@@ -107,11 +107,11 @@ void ReportData::AddStatic(const Case& c, const model::ModelInput& input, const 
   }
   json_["units"] = UnitNames(out);
   json_["components"] = std::move(components);
-  if (input.trajectory) {
+  if (input.well) {
     // The hole's centre at each station (the string's place in the hole is node.position less it).
     json centre = json::array();
     for (const analyses::StaticNodeResult& node : result.nodes) {
-      const Vec3 point = input.trajectory->Position(node.has_wall ? node.md : StationMd(c, node.s));
+      const Vec3 point = input.well->trajectory.Position(node.has_wall ? node.md : StationMd(c, node.s));
       centre.push_back(json::array({Drawn(out(point.x(), Quantity::Length), 9), Drawn(out(point.y(), Quantity::Length), 9),
                                     Drawn(out(point.z(), Quantity::Length), 9)}));
     }

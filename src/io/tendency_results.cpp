@@ -28,7 +28,7 @@ void AddTendencyResults(const Case& c, const analyses::TendencyResult& result, R
                   out(point.deviation_right, Quantity::Angle)});
   }
   files.Add("tendency.csv", table.ToString());
-  const analyses::BitReport& bit = result.trace.at(static_cast<std::size_t>(result.steady_index)).bit;
+  const analyses::BitReport& bit = result.trace.at(result.steady_index).bit;
   // Where the BHA touches the wall in the steady hole.
   json contacts = json::array();
   for (const analyses::ContactReport& contact : result.equilibrium.contacts) {

@@ -195,17 +195,6 @@ double OuterRadiusAt(const Case& c, double s) {
   return c.input.string.components.empty() ? 0.0 : 0.5 * model::ComponentAt(c.input.string, s).outer_diameter;
 }
 
-// The well the model was built in (its wall contacts share it); without wall contacts, the case's,
-// kept in `storage` (placed as io/model_input.cpp places it: the first survey station at the
-// origin). Null without a well.
-const model::Wellbore* WellboreOf(const Case& c, const model::BuiltModel& built,
-                                  std::optional<model::Wellbore>& storage) {
-  if (!built.contacts.empty()) return &built.Get(built.contacts.front()).wellbore();
-  if (!c.well) return nullptr;
-  storage.emplace(model::Wellbore{well::Trajectory(c.well->survey), well::HoleProfile(c.well->hole)});
-  return &*storage;
-}
-
 // ---- string.vtp (a static result's, and each frame of a transient's) ----
 
 double NodeMd(const Case& c, const analyses::StaticNodeResult& node) {
@@ -359,10 +348,9 @@ std::string TransientPvd(const std::vector<double>& times, const std::vector<std
 void AddStaticVtk(const Case& c, const model::BuiltModel& built, const analyses::StaticResult& result,
                   ResultFiles& files) {
   files.Add("string.vtp", StringVtp(c, built, result.nodes));
-  std::optional<model::Wellbore> case_wellbore;
-  const model::Wellbore* wellbore = WellboreOf(c, built, case_wellbore);
   const std::vector<double> node_mds = FiniteNodeMds(c, result.nodes);
-  if (wellbore != nullptr && !node_mds.empty()) files.Add("well.vtp", WellVtp(*wellbore, node_mds));
+  // The case's well, the one its model was built in (its wall contacts share it).
+  if (c.input.well && !node_mds.empty()) files.Add("well.vtp", WellVtp(*c.input.well, node_mds));
   if (!result.contacts.empty()) files.Add("contacts.vtp", ContactsVtp(result.contacts));
 }
 

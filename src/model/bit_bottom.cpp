@@ -54,7 +54,7 @@ void CheckBitBottomParameters(const BitBottomParameters& p) {
   Require(p.ramp_time >= 0.0, "the ramp time must not be negative");
 }
 
-BitBottomElement::BitBottomElement(const Body* bit, int node, const Vec3& position, const Vec3& axis,
+BitBottomElement::BitBottomElement(const Body* bit, Index node, const Vec3& position, const Vec3& axis,
                                    const BitBottomParameters& parameters, double stiffness, double damping)
     : ForceElement({bit}), node_(node), position_(position), axis_(axis.normalized()), parameters_(parameters),
       stiffness_(stiffness), damping_(damping) {

@@ -40,7 +40,7 @@ struct BitBottomParameters {
 class BitBottomElement : public ForceElement {
  public:
   // `position`, `axis`: the bit node's reference place and t (global); k (N/m), c (N·s/m).
-  BitBottomElement(const Body* bit, int node, const Vec3& position, const Vec3& axis,
+  BitBottomElement(const Body* bit, Index node, const Vec3& position, const Vec3& axis,
                    const BitBottomParameters& parameters, double stiffness, double damping);
   std::string Describe() const override;
   double stiffness() const { return stiffness_; }
@@ -59,7 +59,7 @@ class BitBottomElement : public ForceElement {
   bool DoPenalty(const ElementState& state, double& value, double& stiffness, VecX& gradient) const override;
 
  private:
-  int node_;
+  Index node_;
   Vec3 position_, axis_;
   BitBottomParameters parameters_;
   double stiffness_, damping_;

@@ -18,7 +18,7 @@ class BlockPattern {
  public:
   BlockPattern() = default;
   // `coupled`: pairs of body indices that share a block (each body's own block is always there).
-  BlockPattern(const std::vector<Body>& bodies, const std::vector<std::pair<int, int>>& coupled, int size);
+  BlockPattern(const std::vector<Body>& bodies, const std::vector<std::pair<Index, Index>>& coupled, Index size);
 
   // The pattern with every value 0.
   SparseMat Zero() const { return zero_; }
@@ -28,24 +28,24 @@ class BlockPattern {
   void Prepare(SparseMat& matrix) const;
   // Zeroes body `body`'s columns: one contiguous range of the values (column-major storage), so that
   // the thread that assembles a body's columns clears them too, while they are in its cache.
-  void ZeroColumns(int body, SparseMat& matrix) const;
+  void ZeroColumns(Index body, SparseMat& matrix) const;
 
   // Adds `block`, over the concatenated velocity blocks of `body_indices` (in that order), into
   // `matrix` (a copy of Zero()). Throws LogicError for a pair of bodies outside the pattern.
-  void Add(const MatX& block, const std::vector<int>& body_indices, SparseMat& matrix) const;
+  void Add(const MatX& block, const std::vector<Index>& body_indices, SparseMat& matrix) const;
   // The same for only the columns of body `column_body` (one of `body_indices`): calls for distinct
   // column bodies write disjoint entries, so they may run on different threads.
-  void AddColumns(const MatX& block, std::span<const int> body_indices, int column_body, SparseMat& matrix) const;
+  void AddColumns(const MatX& block, std::span<const Index> body_indices, Index column_body, SparseMat& matrix) const;
 
  private:
   // Row position of body `row_body`'s first row within any column of body `col_body`.
-  int PositionInColumn(int row_body, int col_body) const;
+  Index PositionInColumn(Index row_body, Index col_body) const;
 
-  std::vector<int> offsets_;  // v_offset of each body
-  std::vector<int> sizes_;    // velocity count of each body
+  std::vector<Index> offsets_;  // v_offset of each body
+  std::vector<Index> sizes_;    // velocity count of each body
   // Per body (as column block): the bodies with a block in its columns, ascending, with the
   // position of their first row within the column.
-  std::vector<std::vector<std::pair<int, int>>> column_bodies_;
+  std::vector<std::vector<std::pair<Index, Index>>> column_bodies_;
   SparseMat zero_;
 };
 

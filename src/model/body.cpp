@@ -4,15 +4,15 @@
 
 namespace drillflex::model {
 
-Vec3 BodyPose::NodeOffset(const Body& body, int node) const {
+Vec3 BodyPose::NodeOffset(const Body& body, Index node) const {
   return body.reduced->node_positions[node] + body.reduced->node_translation_modes[node] * eta;
 }
 
-Vec3 BodyPose::NodePosition(const Body& body, int node) const {
+Vec3 BodyPose::NodePosition(const Body& body, Index node) const {
   return r + A * NodeOffset(body, node);
 }
 
-Vec3 BodyPose::NodeRotation(const Body& body, int node) const {
+Vec3 BodyPose::NodeRotation(const Body& body, Index node) const {
   return body.reduced->node_rotation_modes[node] * eta;
 }
 
@@ -28,7 +28,7 @@ BodyPose PoseOf(const Body& body, const VecX& q) {
   return pose;
 }
 
-NodeMove NodeMoveBetween(const Body& body, const BodyPose& from, const BodyPose& to, int node) {
+NodeMove NodeMoveBetween(const Body& body, const BodyPose& from, const BodyPose& to, Index node) {
   NodeMove move;
   move.translation = (to.displacement - from.displacement) + to.A * to.NodeOffset(body, node) -
                      from.A * from.NodeOffset(body, node);
@@ -49,15 +49,15 @@ void TwistKeepingShape(const Body& body, double angle, VecX& q, double twist_rat
   rotation = rotation * Quat(Eigen::AngleAxisd(angle, Vec3::UnitX()));
   rotation.normalize();
   q.segment<4>(body.q_offset + 3) << rotation.w(), rotation.x(), rotation.y(), rotation.z();
-  const int modes = body.flexible_count;
+  const Index modes = body.flexible_count;
   if (modes == 0) return;
-  const int nodes = body.node_count();
+  const Index nodes = body.node_count();
   const Mat3 back = Eigen::AngleAxisd(-angle, Vec3::UnitX()).toRotationMatrix();
   const VecX eta = q.segment(body.q_offset + 7, modes);
   MatX basis(6 * nodes, modes);
   VecX target(6 * nodes);
   const double middle = 0.5 * (body.reduced->node_positions.front().x() + body.reduced->node_positions.back().x());
-  for (int k = 0; k < nodes; ++k) {
+  for (Index k = 0; k < nodes; ++k) {
     basis.middleRows(6 * k, 3) = body.reduced->node_translation_modes[k];
     basis.middleRows(6 * k + 3, 3) = body.reduced->node_rotation_modes[k];
     target.segment<3>(6 * k) = back * (body.reduced->node_translation_modes[k] * eta);

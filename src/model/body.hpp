@@ -17,13 +17,13 @@ namespace drillflex::model {
 
 struct Body {
   std::shared_ptr<const cms::ReducedBody> reduced;
-  int component = 0;          // index of the string component it was cut from
+  Index component = 0;          // index of the string component it was cut from
   double s_start = 0.0;       // distance of node 0 from the bit end, m
   Vec3 reference_position = Vec3::Zero();   // r of the undeformed placement, m
   Quat reference_orientation = Quat::Identity();
-  int q_offset = 0;           // first position coordinate in the system's q
-  int v_offset = 0;           // first velocity coordinate in the system's v
-  int flexible_count = 0;     // n_f
+  Index q_offset = 0;           // first position coordinate in the system's q
+  Index v_offset = 0;           // first velocity coordinate in the system's v
+  Index flexible_count = 0;     // n_f
 
   // Section data (SI) for couplings, contact and internal forces.
   double axial_rigidity = 0.0;    // EA, N
@@ -53,11 +53,11 @@ struct Body {
   VecX fluid_lateral_mass, fluid_lateral_damping;
 
   double length() const { return reduced->length; }
-  int velocity_count() const { return 6 + flexible_count; }
-  int position_count() const { return 7 + flexible_count; }
-  int node_count() const { return reduced->node_count(); }
+  Index velocity_count() const { return 6 + flexible_count; }
+  Index position_count() const { return 7 + flexible_count; }
+  Index node_count() const { return reduced->node_count(); }
   // Node k's distance from the bit end along the undeformed string, m.
-  double NodeS(int k) const { return s_start + reduced->node_positions[k].x(); }
+  double NodeS(Index k) const { return s_start + reduced->node_positions[k].x(); }
 };
 
 // The pose of a body read from the system's positions.
@@ -73,11 +73,11 @@ struct BodyPose {
   VecX eta;
 
   // u_k = ρ_k + Φ_k η: node k's position in the body frame, m.
-  Vec3 NodeOffset(const Body& body, int node) const;
+  Vec3 NodeOffset(const Body& body, Index node) const;
   // r_k = r + A u_k, m.
-  Vec3 NodePosition(const Body& body, int node) const;
+  Vec3 NodePosition(const Body& body, Index node) const;
   // θ_k = Ψ_k η: node k's small elastic rotation in the body frame, rad.
-  Vec3 NodeRotation(const Body& body, int node) const;
+  Vec3 NodeRotation(const Body& body, Index node) const;
 };
 
 BodyPose PoseOf(const Body& body, const VecX& q);
@@ -91,7 +91,7 @@ struct NodeMove {
   Vec3 translation = Vec3::Zero();
   Vec3 rotation = Vec3::Zero();
 };
-NodeMove NodeMoveBetween(const Body& body, const BodyPose& from, const BodyPose& to, int node);
+NodeMove NodeMoveBetween(const Body& body, const BodyPose& from, const BodyPose& to, Index node);
 
 // Writes the undeformed placement of the body into q (η = 0).
 void SetReferencePose(const Body& body, VecX& q);

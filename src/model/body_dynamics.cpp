@@ -11,8 +11,8 @@ using so3::Skew;
 
 MatX BodyMassMatrix(const Body& body, const BodyPose& pose) {
   const cms::ReducedBody& reduced = *body.reduced;
-  const int nf = body.flexible_count;
-  const int nodes = reduced.node_count();
+  const Index nf = body.flexible_count;
+  const Index nodes = reduced.node_count();
   // In the body-frame velocities w = (Aᵀṙ, ω, η̇) the node sum Σ L_kᵀ diag(M_k, J_k) L_k, with
   // L_k = [I, −ũ_k, Φ_k] for translation and [0, I, Ψ_k] for rotation, depends on η only through
   // the offsets u_k = ρ_k + d_k, d_k = Φ_k η, in the ω rows and columns. So M_w = M_w(0) + ΔM with
@@ -26,7 +26,7 @@ MatX BodyMassMatrix(const Body& body, const BodyPose& pose) {
     displacement.noalias() = reduced.mode_shapes * pose.eta;
     weighted.setZero(3, 6 * nodes);
     Mat3 translation_rotation = Mat3::Zero(), rotation_rotation = Mat3::Zero();
-    for (int k = 0; k < nodes; ++k) {
+    for (Index k = 0; k < nodes; ++k) {
       const Mat3 node_mass = reduced.NodeTranslationalMass(k);
       const Mat3 reference_skew = Skew(reduced.node_positions[k]);
       const Mat3 displacement_skew = Skew(displacement.segment<3>(6 * k));
@@ -53,12 +53,12 @@ MatX BodyMassMatrix(const Body& body, const BodyPose& pose) {
 
 VecX BodyVelocityForces(const Body& body, const BodyPose& pose, const VecX& velocity) {
   const cms::ReducedBody& reduced = *body.reduced;
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   VecX forces = VecX::Zero(6 + nf);
   const Vec3 omega = velocity.segment<3>(3);
   const VecX eta_rate = velocity.tail(nf);
   Vec3 translational_sum = Vec3::Zero();  // Σ M_k c_k in the body frame
-  for (int k = 0; k < reduced.node_count(); ++k) {
+  for (Index k = 0; k < reduced.node_count(); ++k) {
     const Vec3 offset = pose.NodeOffset(body, k);
     const auto& phi = reduced.node_translation_modes[k];
     const auto& psi = reduced.node_rotation_modes[k];
@@ -131,7 +131,7 @@ double BodyTorque(const Body& body, const BodyPose& pose) {
 
 void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& velocity, VecX& residual) {
   const cms::ReducedBody& reduced = *body.reduced;
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   const VecX& eta = pose.eta;
   auto modal = residual.tail(nf);
   modal.noalias() += reduced.modal_stiffness * eta + reduced.modal_damping * velocity.tail(nf);
@@ -144,7 +144,7 @@ void AddElasticForces(const Body& body, const BodyPose& pose, const VecX& veloci
 
 void AddElasticMatrices(const Body& body, const BodyPose& pose, double cK, double cD, MatX& matrix) {
   const cms::ReducedBody& reduced = *body.reduced;
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   auto block = matrix.bottomRightCorner(nf, nf);
   if (cK != 0.0) {
     block.noalias() += cK * reduced.modal_stiffness;

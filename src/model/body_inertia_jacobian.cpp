@@ -33,8 +33,8 @@ void AddTranslationalMap(const Mat3& skew_offset, const Matrix3X& phi, const Row
 BodyFrameDerivatives ComputeBodyFrameDerivatives(const Body& body, const BodyPose& pose, const VecX& velocity,
                                                  const VecX& acceleration, bool stiffness, bool damping) {
   const cms::ReducedBody& reduced = *body.reduced;
-  const int nf = body.flexible_count;
-  const int n = 6 + nf;
+  const Index nf = body.flexible_count;
+  const Index n = 6 + nf;
   const Vec3 omega = velocity.segment<3>(3);
   const auto eta_rate = velocity.tail(nf);
   VecX alpha = acceleration;  // α = W a
@@ -54,7 +54,7 @@ BodyFrameDerivatives ComputeBodyFrameDerivatives(const Body& body, const BodyPos
   }
   if (damping) out.velocity_damping = MatX::Zero(n, 3 + nf);
   Matrix3X force_rate(3, nf), velocity_rate(3, 3 + nf), gyroscopic_rate(3, 3 + nf);
-  for (int k = 0; k < reduced.node_count(); ++k) {
+  for (Index k = 0; k < reduced.node_count(); ++k) {
     const Mat3 mass = reduced.NodeTranslationalMass(k);
     const Matrix3X& phi = reduced.node_translation_modes[k];
     const Matrix3X& psi = reduced.node_rotation_modes[k];
@@ -103,8 +103,8 @@ VecX BodyInertialForces(const Body& body, const BodyPose& pose, const VecX& velo
   // shapes U (6 per node), so the modal parts of all nodes are three products U x and one Uᵀ g:
   // O(nodes · n_f) instead of the O(nodes · n²) of forming M.
   const cms::ReducedBody& reduced = *body.reduced;
-  const int nf = body.flexible_count;
-  const int nodes = reduced.node_count();
+  const Index nf = body.flexible_count;
+  const Index nodes = reduced.node_count();
   const MatX& shapes = reduced.mode_shapes;
   if (shapes.rows() != 6 * nodes || shapes.cols() != nf) {
     throw LogicError("BodyInertialForces: the mode shapes do not have 6 rows a node and n_f columns");
@@ -120,7 +120,7 @@ VecX BodyInertialForces(const Body& body, const BodyPose& pose, const VecX& velo
   elastic_acceleration.noalias() = shapes * acceleration.tail(nf);
   nodal.setZero(6 * nodes);  // (f_k, m_k) per node, body frame
   Vec3 translational_sum = Vec3::Zero(), rotational_sum = Vec3::Zero();
-  for (int k = 0; k < nodes; ++k) {
+  for (Index k = 0; k < nodes; ++k) {
     const Vec3 offset = reduced.node_positions[k] + displacement.segment<3>(6 * k);
     const Vec3 node_acceleration = alpha_t + alpha_w.cross(offset) + elastic_acceleration.segment<3>(6 * k) +
                                    omega.cross(omega.cross(offset)) + 2.0 * omega.cross(rate.segment<3>(6 * k));
@@ -145,7 +145,7 @@ VecX BodyInertialForces(const Body& body, const BodyPose& pose, const VecX& velo
 
 InertiaJacobians BodyInertiaJacobians(const Body& body, const BodyPose& pose, const VecX& velocity,
                                       const VecX& acceleration) {
-  const int n = body.velocity_count();
+  const Index n = body.velocity_count();
   InertiaJacobians jacobians{MatX::Zero(n, n), MatX::Zero(n, n)};
   AddInertiaMatrices(body, pose, velocity, acceleration, 1.0, 0.0, 0.0, jacobians.stiffness);
   AddInertiaMatrices(body, pose, velocity, acceleration, 0.0, 1.0, 0.0, jacobians.damping);
@@ -159,7 +159,7 @@ void AddInertiaMatrices(const Body& body, const BodyPose& pose, const VecX& velo
   const bool stiffness = cK != 0.0 && (moving || !acceleration.isZero(0.0));
   const bool damping = cD != 0.0 && moving;
   if (!stiffness && !damping) return;
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   BodyFrameDerivatives d = ComputeBodyFrameDerivatives(body, pose, velocity, acceleration, stiffness, damping);
   if (stiffness) {
     // δθ columns: Wᵀ (M̂ + C)[:, t] skew(α_t) − [A skew(G_t); 0; 0].

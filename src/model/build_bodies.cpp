@@ -20,7 +20,7 @@ fe::BodyFeOptions FeOptions(const ModelSettings& settings) {
   return options;
 }
 
-Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::BodySpec& spec, int component,
+Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::BodySpec& spec, Index component,
               double s_start, double contact_diameter, const MatX& mass_correction) {
   Body body;
   body.reduced = reduced;
@@ -37,7 +37,7 @@ Body MakeBody(const std::shared_ptr<const cms::ReducedBody>& reduced, const fe::
   body.outer_diameter = spec.section.outer_diameter;
   body.contact_diameter = contact_diameter;
   // N = EA/L (u_x(L) − u_x(0)) from the axial rows of the end nodes.
-  const int last = reduced->node_count() - 1;
+  const Index last = reduced->node_count() - 1;
   body.axial_force_row = (body.axial_rigidity / spec.length) *
                          (reduced->node_translation_modes[last].row(0) - reduced->node_translation_modes[0].row(0)).transpose();
   body.torque_row = (body.torsional_rigidity / spec.length) *
@@ -107,7 +107,7 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
   reduction.structural_damping = settings.structural_damping;
   const std::vector<double> cuts = BodyCuts(input);
   double s = 0.0;
-  for (std::size_t c = 0; c < input.string.components.size(); ++c) {
+  for (Index c = 0; c < std::ssize(input.string.components); ++c) {
     const Component& component = input.string.components[c];
     const double span = component.length * component.count;
     // The component's stretches between the cuts inside it, each split evenly into bodies.
@@ -119,7 +119,7 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
     double stretch_start = s;
     for (const double stretch_end : ends) {
       const double stretch = stretch_end - stretch_start;
-      const int count = std::max(1, static_cast<int>(std::ceil(stretch / settings.body_length - 1e-9)));
+      const Index count = std::max<Index>(1, std::lround(std::ceil(stretch / settings.body_length - 1e-9)));
       fe::BodySpec spec;
       spec.section = {component.outer_diameter, component.inner_diameter};
       spec.material = input.materials.at(component.material);
@@ -131,25 +131,24 @@ std::vector<Body> CutBodies(const ModelInput& input, cms::ReductionCache& cache)
       // the element length ℓ stays near body_length / elements_per_body: the coupling stiffness
       // grows as 1/ℓ³ and a 1 ft bit cut into 10 elements would make the couplings 1000 times
       // stiffer than the rest of the model for no accuracy (ill-conditioned tangents).
-      spec.element_count = std::clamp(
-          static_cast<int>(std::lround(settings.elements_per_body * spec.length / settings.body_length)), 2,
-          settings.elements_per_body);
-      reduction.modes_per_body = std::min(settings.modes_per_body, 6 * (spec.element_count - 1));
+      spec.element_count = std::clamp<Index>(
+          std::lround(settings.elements_per_body * spec.length / settings.body_length), 2, settings.elements_per_body);
+      reduction.modes_per_body = std::min<Index>(settings.modes_per_body, 6 * (spec.element_count - 1));
       spec.options = FeOptions(settings);
       const auto reduced = ReduceSection(cache, spec, reduction, component, c);
       // Once per section (it was 2/3 of the build time of a 1000-body string when made per body).
       const MatX mass_correction = cms::ReferenceMassMatrix(*reduced) - cms::NodalReferenceMassMatrix(*reduced);
       double body_start = stretch_start;
-      for (int i = 0; i < count; ++i) {
+      for (Index i = 0; i < count; ++i) {
         bodies.push_back(
-            MakeBody(reduced, spec, static_cast<int>(c), body_start, ContactDiameter(component), mass_correction));
+            MakeBody(reduced, spec, c, body_start, ContactDiameter(component), mass_correction));
         body_start += spec.length;
       }
       stretch_start = stretch_end;
     }
     s += span;
   }
-  int q_offset = 0, v_offset = 0;
+  Index q_offset = 0, v_offset = 0;
   for (Body& body : bodies) {
     body.q_offset = q_offset;
     body.v_offset = v_offset;

@@ -10,7 +10,7 @@ std::vector<ElementHandle<CouplingElement>> PlaceCouplings(ModelDraft& draft) {
   const std::vector<Body>& placed = draft.bodies;
   const double factor = input.settings.coupling_factor;
   std::vector<ElementHandle<CouplingElement>> couplings;
-  for (std::size_t b = 0; b + 1 < placed.size(); ++b) {
+  for (Index b = 0; b + 1 < std::ssize(placed); ++b) {
     const Body& lower = placed[b];
     const Body& upper = placed[b + 1];
     const Vec6 stiffness = SectionCouplingStiffness(lower, factor).cwiseMax(SectionCouplingStiffness(upper, factor));

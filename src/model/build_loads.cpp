@@ -13,7 +13,7 @@ namespace {
 // The work-equivalent nodal forces and moments of a uniform global line load over every element of
 // a body (the buoyed weight, N/m).
 void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
-  for (int k = 0; k + 1 < body.node_count(); ++k) {
+  for (Index k = 0; k + 1 < body.node_count(); ++k) {
     AddUniformLineLoad(NodeReferencePosition(body, k), NodeReferencePosition(body, k + 1), per_length, forces[k],
                        moments[k], forces[k + 1], moments[k + 1]);
   }
@@ -24,7 +24,7 @@ void AddLineLoad(const Body& body, const Vec3& per_length, std::vector<Vec3>& fo
 bool AddDistributedLoad(const Body& body, const Load& load, std::vector<Vec3>& forces, std::vector<Vec3>& moments) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   bool any = false;
-  for (int k = 0; k + 1 < body.node_count(); ++k) {
+  for (Index k = 0; k + 1 < body.node_count(); ++k) {
     const double a = std::max(load.from, body.NodeS(k)), c = std::min(load.to, body.NodeS(k + 1));
     if (c <= a) continue;
     any = true;
@@ -65,7 +65,7 @@ PlacedLoads PlaceLoads(ModelDraft& draft) {
     if (weight != 0.0) {
       AddLineLoad(body, weight * Vec3(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]), forces, moments);
     }
-    for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
+    for (Index k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
     add(body, std::move(forces), std::move(moments), LoadGroup::kWeight, 1.0);
   }
   for (const auto& [loads, group] : {std::pair{&input.loads, LoadGroup::kCaseLoads},
@@ -78,7 +78,7 @@ PlacedLoads PlaceLoads(ModelDraft& draft) {
       }
       if (!any) continue;
       if (group == LoadGroup::kCaseLoads) {
-        for (int k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
+        for (Index k = 0; k < body.node_count(); ++k) force_scale += forces[k].norm();
       }
       add(body, std::move(forces), std::move(moments), group, 1.0);
     }

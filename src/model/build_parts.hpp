@@ -36,7 +36,7 @@ struct ModelDraft {
   const ModelInput& input;
   const std::vector<Body>& bodies;
   double length = 0.0;       // of the string, m
-  std::pair<int, int> top;   // the top node: (body, node)
+  std::pair<Index, Index> top;   // the top node: (body, node)
   ElementList elements;
 };
 

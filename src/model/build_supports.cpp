@@ -9,7 +9,7 @@ std::vector<ElementHandle<SupportElement>> PlaceSupports(ModelDraft& draft) {
   const ModelInput& input = draft.input;
   const std::vector<Body>& placed = draft.bodies;
   const double factor = input.settings.coupling_factor;
-  const bool default_supports = input.trajectory && input.supports.empty();
+  const bool default_supports = input.well && input.supports.empty();
   std::vector<Support> supports = default_supports ? DefaultWellSupports(draft.length) : input.supports;
   const auto top = draft.top;
   const bool side_cutting = input.bit_rock && input.bit_rock->side_cutting;
@@ -33,11 +33,12 @@ std::vector<ElementHandle<SupportElement>> PlaceSupports(ModelDraft& draft) {
       // Along the hole's axis at the top, not the top body's chord (which a curved hole turns by half
       // the body's arc): the support's rest frame is the frame turned onto the hole's up-hole tangent.
       const Vec3 up_hole =
-          -input.trajectory->Frame(input.trajectory->ClosestMd(position, input.bit_md - draft.length)).tangent;
+          -input.well->trajectory.Frame(input.well->trajectory.ClosestMd(position, input.bit_md - draft.length))
+               .tangent;
       frame = Quat::FromTwoVectors(frame.col(0), up_hole).toRotationMatrix() * frame;
     }
     Vec6 stiffness = support.stiffness_scale * kSupportStiffnessFactor * SectionCouplingStiffness(body, factor);
-    for (int d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
+    for (Index d = 0; d < 6; ++d) if (!support.fixed[d]) stiffness[d] = 0.0;
     const bool holds_bit = std::pair{b, node} == FindNodeAt(placed, 0.0);
     handles.push_back(draft.elements.Add<SupportElement>(&body, node, position, frame, stiffness,
                                                          SpringDamping(stiffness, ElementInertia(body)), holds_bit));

@@ -12,7 +12,7 @@ namespace drillflex::model {
 // lie on the wall.
 std::optional<ElementHandle<StringAboveElement>> PlaceStringAbove(ModelDraft& draft) {
   const ModelInput& input = draft.input;
-  if (!input.trajectory || input.hole.empty() || !input.supports.empty() ||
+  if (!input.well || input.well->hole.empty() || !input.supports.empty() ||
       input.settings.top != TopCondition::StringAbove) {
     return std::nullopt;
   }
@@ -26,12 +26,12 @@ std::optional<ElementHandle<StringAboveElement>> PlaceStringAbove(ModelDraft& dr
   above.weight_per_length = BuoyedWeightPerLength(component, input);
   // Gravity across the hole and the hole's curvature, in the top's string frame (y, z).
   const Vec3 gravity(kGravityDirection[0], kGravityDirection[1], kGravityDirection[2]);
-  const Vec3 curvature = input.trajectory->Curvature(top_md);
+  const Vec3 curvature = input.well->trajectory.Curvature(top_md);
   above.gravity_across = Eigen::Vector2d(frame.col(1).dot(gravity), frame.col(2).dot(gravity));
   above.curvature = Eigen::Vector2d(frame.col(1).dot(curvature), frame.col(2).dot(curvature));
   const double joint_diameter = component.joint_diameter.value_or(component.outer_diameter);
-  above.clearance = 0.5 * (well::HoleProfile(input.hole).Diameter(top_md) - joint_diameter);
-  const HoleFriction top_friction = HoleFrictionAt(well::HoleProfile(input.hole), input.settings.contact, top_md);
+  above.clearance = 0.5 * (input.well->hole.Diameter(top_md) - joint_diameter);
+  const HoleFriction top_friction = HoleFrictionAt(input.well->hole, input.settings.contact, top_md);
   above.friction = top_friction.friction;
   above.cased = top_friction.cased;
   above.contact_radius = 0.5 * joint_diameter;
@@ -52,7 +52,7 @@ TopDrives PlaceDrives(ModelDraft& draft) {
   TopDrives drives;
   if (!input.top_drive && !input.block) return drives;
   const Body& body = draft.bodies[draft.top.first];
-  const int node = draft.top.second;
+  const Index node = draft.top.second;
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   const Vec3 position = NodeReferencePosition(body, node);
   // As stiff as the support it replaces, so the start equilibrium holds at t = 0 (drives.hpp).

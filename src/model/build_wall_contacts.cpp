@@ -17,16 +17,16 @@ std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& dra
   const ModelInput& input = draft.input;
   const std::vector<Body>& placed = draft.bodies;
   std::vector<ElementHandle<WallContactElement>> contacts;
-  if (!input.trajectory || input.hole.empty()) return contacts;
-  auto wellbore = std::make_shared<const Wellbore>(Wellbore{*input.trajectory, well::HoleProfile(input.hole)});
-  struct ContactNode { const Body* body; int node; double s; };
+  if (!input.well || input.well->hole.empty()) return contacts;
+  const std::shared_ptr<const Wellbore>& wellbore = input.well;  // shared by the contacts, not copied
+  struct ContactNode { const Body* body; Index node; double s; };
   std::vector<ContactNode> nodes;
-  for (std::size_t b = 0; b < placed.size(); ++b) {
+  for (Index b = 0; b < std::ssize(placed); ++b) {
     const Body& body = placed[b];
     // The bit cuts the hole it sits in (its support holds it at the hole centre): no contact.
     if (input.string.components[body.component].type == ComponentType::Bit) continue;
-    for (int k = 0; k < body.node_count(); ++k) {
-      if (k == body.node_count() - 1 && b + 1 != placed.size()) continue;  // the next body's node 0 carries it
+    for (Index k = 0; k < body.node_count(); ++k) {
+      if (k == body.node_count() - 1 && b + 1 != std::ssize(placed)) continue;  // the next body's node 0 carries it
       nodes.push_back({&body, k, body.NodeS(k)});
     }
   }
@@ -36,7 +36,7 @@ std::vector<ElementHandle<WallContactElement>> PlaceWallContacts(ModelDraft& dra
   const std::vector<ContactCircle> circles =
       nodes.empty() ? std::vector<ContactCircle>{} : ContactCircles(input.string, positions);
   const ContactSettings& contact = input.settings.contact;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
+  for (Index i = 0; i < std::ssize(nodes); ++i) {
     const auto [body, k, s] = nodes[i];
     const double clearance = 0.5 * (wellbore->hole.Diameter(input.bit_md - s) - circles[i].diameter);
     // A circle wider than its body is a point contact (blades, a tool joint): it carries a span.

@@ -14,7 +14,7 @@ namespace drillflex::model {
 BuiltModel BuildSystemModel(const ModelInput& input, cms::ReductionCache& cache) {
   if (input.string.components.empty()) throw LogicError("BuildSystemModel: the string has no components");
   std::vector<Body> bodies = CutBodies(input, cache);
-  if (input.trajectory) PlaceAlongWell(bodies, *input.trajectory, input.bit_md);
+  if (input.well) PlaceAlongWell(bodies, input.well->trajectory, input.bit_md);
   if (input.transient_fluid_frequency) AttachLateralFluid(input, *input.transient_fluid_frequency, bodies);
   double length = 0.0;
   for (const Body& body : bodies) length = std::max(length, body.s_start + body.length());

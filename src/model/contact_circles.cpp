@@ -34,8 +34,8 @@ std::vector<Feature> Features(const StringConfig& string) {
     if (component.joint_diameter) {
       const double spacing = component.joint_spacing.value_or(std::min(kDefaultJointSpacing, component.length));
       const double half_joint = 0.5 * component.joint_length.value_or(kDefaultJointLength);
-      const int joints = static_cast<int>(std::lround(span / spacing));
-      for (int j = 0; j <= joints; ++j) {
+      const Index joints = std::lround(span / spacing);
+      for (Index j = 0; j <= joints; ++j) {
         const double connection = start + std::min(j * spacing, span);
         features.push_back({std::max(connection - half_joint, start), std::min(connection + half_joint, start + span),
                             *component.joint_diameter, connection});
@@ -52,9 +52,9 @@ double Overlap(double a0, double a1, double b0, double b1) { return std::max(0.0
 
 std::vector<ContactCircle> ContactCircles(const StringConfig& string, const std::vector<double>& s) {
   if (s.empty()) throw LogicError("ContactCircles: no contact nodes");
-  const int count = static_cast<int>(s.size());
+  const Index count = std::ssize(s);
   std::vector<double> from(s.size()), to(s.size());
-  for (int i = 0; i < count; ++i) {
+  for (Index i = 0; i < count; ++i) {
     if (i > 0 && s[i] < s[i - 1]) throw LogicError("ContactCircles: the contact positions are not ascending");
     from[i] = i > 0 ? 0.5 * (s[i - 1] + s[i]) : s[i];
     to[i] = i + 1 < count ? 0.5 * (s[i] + s[i + 1]) : s[i];
@@ -65,13 +65,13 @@ std::vector<ContactCircle> ContactCircles(const StringConfig& string, const std:
   for (const Feature& feature : features) {
     if (feature.to <= s.front() - 1e-9 || feature.from >= s.back() + 1e-9) continue;  // beyond the contacts (the bit)
     const auto above = std::lower_bound(s.begin(), s.end(), feature.point);
-    int node = static_cast<int>(above - s.begin());
+    Index node = above - s.begin();
     if (node == count || (node > 0 && feature.point - s[node - 1] < s[node] - feature.point)) --node;
     circles[node].diameter = std::max(circles[node].diameter, feature.diameter);
     circles[node].length += feature.to - feature.from;
     feature_node[node] = true;
   }
-  for (int i = 0; i < count; ++i) {
+  for (Index i = 0; i < count; ++i) {
     const double span = to[i] - from[i];
     if (!feature_node[i]) {
       double body = span;

@@ -55,7 +55,7 @@ CouplingKinematics ComputeCouplingKinematics(const CouplingEnd& end1, const Coup
     k.jacobian.block<3, 3>(3, 3) = g1 * k.R0.transpose();
     k.jacobian.block(3, 6, 3, body1.flexible_count) = -psi_a;
   }
-  const int o = k.n1;
+  const Index o = k.n1;
   k.jacobian.block<3, 3>(0, o) = k.A1.transpose();
   k.jacobian.block<3, 3>(0, o + 3) = -k.R12 * Skew(k.u_b);
   k.jacobian.block(0, o + 6, 3, body2.flexible_count) = k.R12 * (*k.phi_b);
@@ -65,15 +65,15 @@ CouplingKinematics ComputeCouplingKinematics(const CouplingEnd& end1, const Coup
 }
 
 MatX CouplingJacobianDerivative(const CouplingKinematics& k, const Vec6& lambda) {
-  const int n = k.n1 + k.n2;
+  const Index n = k.n1 + k.n2;
   MatX h = MatX::Zero(n, n);
   const Vec3 lt = lambda.head<3>();
   const Vec3 lr = lambda.tail<3>();
   const Mat3 skew_lt = Skew(lt);
   const Vec3 r12t_lt = k.R12.transpose() * lt;
   const Eigen::Matrix<double, 3, Eigen::Dynamic>& phi_b = *k.phi_b;
-  const int nf2 = static_cast<int>(phi_b.cols());
-  const int o = k.n1;  // first column of side 2
+  const Index nf2 = phi_b.cols();
+  const Index o = k.n1;  // first column of side 2
   // Rotational part: derivatives of G1ᵀλ and G2ᵀλ (see the header), δθ1' = R0ᵀ δθ1.
   const Mat3 lv = lr * k.vee_r.transpose();
   const Mat3 g1_d1 = -0.5 * (2.0 * lv + k.R.transpose() * Skew(lr));

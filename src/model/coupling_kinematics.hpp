@@ -19,14 +19,14 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 struct CouplingEnd {
   const Body* body = nullptr;  // nullptr: the ground
-  int node = 0;
+  Index node = 0;
   BodyPose pose;               // of the body, or the ground frame (r = point, A = frame, η empty)
 };
 
 struct CouplingKinematics {
   Vec6 strain = Vec6::Zero();
   MatX jacobian;  // 6 × (n1 + n2)
-  int n1 = 0, n2 = 0;
+  Index n1 = 0, n2 = 0;
   // Intermediate quantities the Hessian needs.
   Mat3 A1 = Mat3::Identity(), R12 = Mat3::Identity(), R0 = Mat3::Identity(), R = Mat3::Identity();
   Vec3 w = Vec3::Zero(), u_b = Vec3::Zero(), vee_r = Vec3::Zero();

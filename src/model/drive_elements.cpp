@@ -15,7 +15,7 @@ using so3::Skew;
 
 namespace {
 
-void CheckNode(const Body* body, int node, const char* what) {
+void CheckNode(const Body* body, Index node, const char* what) {
   if (body == nullptr || node < 0 || node >= body->node_count()) {
     throw LogicError(fmt::format("{}: node {} is not on the body", what, node));
   }
@@ -33,7 +33,7 @@ struct TopDriveElement::Twist {
   double drive_rate = 0.0;     // ψ̇ = −speed(t), rad/s about +x
 };
 
-TopDriveElement::TopDriveElement(const Body* body, int node, const Mat3& frame, const TopDrive& drive,
+TopDriveElement::TopDriveElement(const Body* body, Index node, const Mat3& frame, const TopDrive& drive,
                                  double stiffness, double damping)
     : ForceElement({body}), node_(node), frame_(frame), drive_(drive), stiffness_(stiffness), damping_(damping) {
   CheckNode(body, node, "TopDriveElement");
@@ -55,7 +55,7 @@ double TopDriveElement::DriveAngle(double t) const {
 TopDriveElement::Twist TopDriveElement::Kinematics(const ElementState& state) const {
   const Body& body = *bodies()[0];
   const BodyPose& pose = *state.poses[0];
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   const auto& psi = body.reduced->node_rotation_modes[node_];
   Twist k;
   // G = F Rx(ψ), ψ = −angle: from cos and sin of the total angle, so any number of turns is exact
@@ -120,7 +120,7 @@ double TopDriveElement::DoPotentialEnergy(const ElementState& state) const {
   return 0.5 * stiffness_ * e * e;
 }
 
-BlockElement::BlockElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
+BlockElement::BlockElement(const Body* body, Index node, const Vec3& position, const Mat3& frame,
                            const BlockDrive& drive, double stiffness, double damping, double preload)
     : ForceElement({body}), node_(node), position_(position), axis_(frame.col(0)), drive_(drive),
       stiffness_(stiffness), damping_(damping), preload_(preload) {

@@ -40,11 +40,11 @@ class TopDriveElement : public ForceElement {
  public:
   // `frame`: the node's reference frame (columns: string frame x up-hole, y, z; global).
   // `stiffness` (N·m/rad) and `damping` (N·m·s/rad) of the speed drive's spring (unused for torque).
-  TopDriveElement(const Body* body, int node, const Mat3& frame, const TopDrive& drive, double stiffness,
+  TopDriveElement(const Body* body, Index node, const Mat3& frame, const TopDrive& drive, double stiffness,
                   double damping);
   std::string Describe() const override;
   const TopDrive& drive() const { return drive_; }
-  int node() const { return node_; }
+  Index node() const { return node_; }
   // The drive's angle ∫ speed dt (rad, clockwise looking down-hole) at time t; 0 for a torque drive.
   double DriveAngle(double t) const;
   // The torque the drive puts on the string, N·m, clockwise looking down-hole.
@@ -60,7 +60,7 @@ class TopDriveElement : public ForceElement {
   struct Twist;
   Twist Kinematics(const ElementState& state) const;
   void EvaluateSpeed(const ElementState& state, bool with_matrices, ElementContribution& out) const;
-  int node_;
+  Index node_;
   Mat3 frame_;
   TopDrive drive_;
   double stiffness_, damping_;
@@ -71,7 +71,7 @@ class BlockElement : public ForceElement {
   // `position`, `frame`: the node's reference place and frame (global). Velocity: the line's
   // `stiffness` and `damping`, and its `preload` (N, tension), the force it carries where the top
   // is where the block has taken it: k e + c ė + preload, e the top's axial lag behind the block.
-  BlockElement(const Body* body, int node, const Vec3& position, const Mat3& frame, const BlockDrive& drive,
+  BlockElement(const Body* body, Index node, const Vec3& position, const Mat3& frame, const BlockDrive& drive,
                double stiffness, double damping, double preload = 0.0);
   std::string Describe() const override;
   const BlockDrive& drive() const { return drive_; }
@@ -85,7 +85,7 @@ class BlockElement : public ForceElement {
  private:
   // k e + c ė + preload of the velocity drive's line (tension), N.
   double SpringForce(const NodeMotion& motion, double t) const;
-  int node_;
+  Index node_;
   Vec3 position_, axis_;
   BlockDrive drive_;
   double stiffness_, damping_, preload_;

@@ -13,8 +13,8 @@ class DynamicModelProblem final : public solvers::Problem {
  public:
   explicit DynamicModelProblem(const SystemModel& model) : model_(model) {}
 
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
     return model_.Residual(t, q, v, a, 1.0);

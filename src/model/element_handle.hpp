@@ -19,13 +19,13 @@ template <class E>
 class ElementHandle {
  public:
   // The element's place in SystemModel::elements().
-  int index() const { return index_; }
+  Index index() const { return index_; }
   bool operator==(const ElementHandle&) const = default;
 
  private:
   friend class ElementList;
-  explicit ElementHandle(int index) : index_(index) {}
-  int index_;
+  explicit ElementHandle(Index index) : index_(index) {}
+  Index index_;
 };
 
 // The elements of a model as the builder adds them, each addition answered with its typed handle.
@@ -34,7 +34,7 @@ class ElementList {
   template <class E, class... Arguments>
   ElementHandle<E> Add(Arguments&&... arguments) {
     elements_.push_back(std::make_unique<E>(std::forward<Arguments>(arguments)...));
-    return ElementHandle<E>(static_cast<int>(elements_.size()) - 1);
+    return ElementHandle<E>(std::ssize(elements_) - 1);
   }
   std::vector<std::unique_ptr<ForceElement>> Release() && { return std::move(elements_); }
 

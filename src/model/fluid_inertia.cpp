@@ -21,11 +21,11 @@ Vec3 NodeForce(double mass, double damping, const Vec3& omega, const BodyFrameNo
 }  // namespace
 
 VecX BodyFluidForces(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration) {
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   VecX forces = VecX::Zero(body.velocity_count());
   const FrameMotion frame = ComputeFrameMotion(pose, velocity, acceleration);
   Vec3 translational_sum = Vec3::Zero();
-  for (int k = 0; k < body.node_count(); ++k) {
+  for (Index k = 0; k < body.node_count(); ++k) {
     const double mass = body.fluid_lateral_mass[k], damping = body.fluid_lateral_damping[k];
     if (mass == 0.0 && damping == 0.0) continue;
     const BodyFrameNodeMotion node = ComputeBodyFrameNodeMotion(body, pose, frame, velocity, acceleration, k);
@@ -47,13 +47,13 @@ VecX BodyFluidForces(const Body& body, const BodyPose& pose, const VecX& velocit
 // and the pull-back Jᵀ F itself depends on q: δ(A F) ∋ −A F̃ δθ, δ(u × F) ∋ −F̃ Φ δη.
 void AddFluidMatrices(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& acceleration,
                       double cK, double cD, double cM, MatX& matrix) {
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   const FrameMotion frame = ComputeFrameMotion(pose, velocity, acceleration);
   const Mat3 projection = Vec3(0.0, 1.0, 1.0).asDiagonal();
   const Mat3 omega_skew = Skew(frame.omega);
   const Mat3 velocity_skew = Skew(frame.velocity);
   thread_local Rows3 jacobian, velocity_part, rate_part, force_part, moment_part, lateral_velocity_part;
-  for (int k = 0; k < body.node_count(); ++k) {
+  for (Index k = 0; k < body.node_count(); ++k) {
     const double mass = body.fluid_lateral_mass[k], damping = body.fluid_lateral_damping[k];
     if (mass == 0.0 && damping == 0.0) continue;
     const auto& phi = body.reduced->node_translation_modes[k];
@@ -92,10 +92,10 @@ void AddFluidMatrices(const Body& body, const BodyPose& pose, const VecX& veloci
 }
 
 MatX BodyFluidMassMatrix(const Body& body, const BodyPose& pose) {
-  const int n = body.velocity_count();
+  const Index n = body.velocity_count();
   MatX mass = MatX::Zero(n, n);
   Rows3 jacobian;
-  for (int k = 0; k < body.node_count(); ++k) {
+  for (Index k = 0; k < body.node_count(); ++k) {
     if (body.fluid_lateral_mass[k] == 0.0) continue;
     NodeVelocityJacobian(body, pose, k, pose.NodeOffset(body, k), jacobian);
     mass.noalias() += body.fluid_lateral_mass[k] * jacobian.bottomRows<2>().transpose() * jacobian.bottomRows<2>();
@@ -107,7 +107,7 @@ namespace {
 // Σ weight_k |Π t_k|² over the nodes.
 double SumOfLateralSquares(const Body& body, const BodyPose& pose, const VecX& velocity, const VecX& weights) {
   double sum = 0.0;
-  for (int k = 0; k < body.node_count(); ++k) {
+  for (Index k = 0; k < body.node_count(); ++k) {
     if (weights[k] == 0.0) continue;
     const Vec3 t = ComputeBodyFrameNodeRates(body, pose, k, velocity).translation;
     sum += weights[k] * Lateral(t).squaredNorm();

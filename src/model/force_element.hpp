@@ -36,7 +36,7 @@ class ForceElement {
   virtual ~ForceElement() = default;
 
   const std::vector<const Body*>& bodies() const { return bodies_; }
-  int local_size() const { return local_size_; }
+  Index local_size() const { return local_size_; }
 
   // Checks sizes, then computes. Matrices only when `with_matrices` (else left empty).
   void Evaluate(const ElementState& state, bool with_matrices, ElementContribution& out) const;
@@ -66,7 +66,7 @@ class ForceElement {
 
  private:
   std::vector<const Body*> bodies_;
-  int local_size_ = 0;
+  Index local_size_ = 0;
 };
 
 }  // namespace drillflex::model

@@ -25,11 +25,11 @@ void GyroscopicElement::DoEvaluate(const ElementState& state, bool with_matrices
   const Body& body = *bodies()[0];
   const cms::ReducedBody& reduced = *body.reduced;
   const BodyPose& pose = *state.poses[0];
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   const Vec3 axis = Vec3::UnitX();
   const Vec3 omega = state.velocity.segment<3>(3);
   const auto eta_rate = state.velocity.tail(nf);
-  for (int k = 0; k < reduced.node_count(); ++k) {
+  for (Index k = 0; k < reduced.node_count(); ++k) {
     const Eigen::Matrix<double, 3, Eigen::Dynamic>& psi = reduced.node_rotation_modes[k];
     const double polar = spin_ * reduced.node_rotary_inertia[k](0, 0);  // Ω J_p,k
     if (polar == 0.0) continue;
@@ -55,7 +55,7 @@ void GyroscopicElement::DoEvaluate(const ElementState& state, bool with_matrices
 SparseMat ComputeGyroscopicMatrix(const SystemModel& model, const VecX& q) {
   const std::vector<BodyPose> poses = model.Poses(q);
   std::vector<Eigen::Triplet<double>> triplets;
-  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+  for (Index b = 0; b < std::ssize(model.bodies()); ++b) {
     const Body& body = model.bodies()[b];
     const GyroscopicElement element(&body, 1.0);
     ElementState state;

@@ -13,7 +13,7 @@ namespace drillflex::model {
 
 using so3::Skew;
 
-ImbalanceElement::ImbalanceElement(const Body* body, int node, double imbalance, const Vec3& direction)
+ImbalanceElement::ImbalanceElement(const Body* body, Index node, double imbalance, const Vec3& direction)
     : ForceElement({body}), node_(node), imbalance_(imbalance) {
   if (body == nullptr || node < 0 || node >= body->node_count()) {
     throw LogicError(fmt::format("ImbalanceElement: node {} is not on the body", node));

@@ -23,7 +23,7 @@ namespace drillflex::model {
 class ImbalanceElement : public ForceElement {
  public:
   // `imbalance` m·e (kg·m) at `node`, offset toward `direction` (body frame, ⟂ x; normalized here).
-  ImbalanceElement(const Body* body, int node, double imbalance, const Vec3& direction);
+  ImbalanceElement(const Body* body, Index node, double imbalance, const Vec3& direction);
   std::string Describe() const override;
   // F above (global), N.
   Vec3 Force(const ElementState& state) const;
@@ -33,7 +33,7 @@ class ImbalanceElement : public ForceElement {
   double DoPotentialEnergy(const ElementState&) const override { return 0.0; }
 
  private:
-  int node_;
+  Index node_;
   double imbalance_;
   Vec3 direction_;
 };

@@ -41,7 +41,7 @@ class ElementMatrixCache {
   std::map<const cms::ReducedBody*, ElementMatrices> cache_;
 };
 
-SectionForces FromSix(const Eigen::Ref<const Vec12>& values, int start, double sign) {
+SectionForces FromSix(const Eigen::Ref<const Vec12>& values, Index start, double sign) {
   SectionForces forces;
   forces.force = sign * values.segment<3>(start);
   forces.moment = sign * values.segment<3>(start + 3);
@@ -51,9 +51,9 @@ SectionForces FromSix(const Eigen::Ref<const Vec12>& values, int start, double s
 // Section forces of every node from the element end forces f_e (see the header's convention):
 // node k carries +f_{k−1}(node 2) from the element below and −f_k(node 1) from the one above.
 std::vector<SectionForces> NodeForces(const std::vector<Vec12>& element_forces) {
-  const int elements = static_cast<int>(element_forces.size());
+  const Index elements = std::ssize(element_forces);
   std::vector<SectionForces> nodes(elements + 1);
-  for (int k = 0; k <= elements; ++k) {
+  for (Index k = 0; k <= elements; ++k) {
     const bool below = k > 0, above = k < elements;
     SectionForces sum;
     if (below) {
@@ -76,16 +76,16 @@ std::vector<SectionForces> NodeForces(const std::vector<Vec12>& element_forces) 
 // Replaces the element axial forces by N̄ + c_e − mean(c), c_e = −Σ_{j=1..e} a_j (header).
 void RebuildAxialForces(double mean_axial_force, const std::vector<double>& axial_loads,
                         std::vector<Vec12>& element_forces) {
-  const int elements = static_cast<int>(element_forces.size());
+  const Index elements = std::ssize(element_forces);
   std::vector<double> cumulative(elements, 0.0);
   double sum = 0.0, running = 0.0;
-  for (int e = 0; e < elements; ++e) {
+  for (Index e = 0; e < elements; ++e) {
     if (e > 0 && !axial_loads.empty()) running -= axial_loads[e];
     cumulative[e] = running;
     sum += running;
   }
   const double mean = sum / elements;
-  for (int e = 0; e < elements; ++e) {
+  for (Index e = 0; e < elements; ++e) {
     const double axial = mean_axial_force + cumulative[e] - mean;
     element_forces[e][0] = -axial;  // force on the element at its lower node (tension pulls down)
     element_forces[e][6] = axial;   // at its upper node
@@ -101,12 +101,12 @@ double MembraneForce(const Body& body, const VecX& eta) {
 
 std::vector<SectionForces> ForcesOfBody(const Body& body, const ElementMatrices& matrices, const VecX& eta,
                                         const std::vector<double>& axial_loads) {
-  const int elements = body.node_count() - 1;
+  const Index elements = body.node_count() - 1;
   const VecX displacement = body.reduced->mode_shapes * eta;  // d = U η, FE order 6 k + d
   const double membrane = MembraneForce(body, eta);  // N̄, tension positive
   const fe::Mat12 tangent = matrices.stiffness + membrane * matrices.geometric;
   std::vector<Vec12> element_forces(elements);
-  for (int e = 0; e < elements; ++e) element_forces[e] = tangent * displacement.segment<12>(6 * e);
+  for (Index e = 0; e < elements; ++e) element_forces[e] = tangent * displacement.segment<12>(6 * e);
   RebuildAxialForces(membrane, axial_loads, element_forces);
   return NodeForces(element_forces);
 }
@@ -116,21 +116,21 @@ std::vector<std::vector<double>> AxialNodalLoads(const BuiltModel& built, const 
                                                  const LoadParameters& load) {
   const SystemModel& model = built.system;
   std::vector<std::vector<double>> loads(model.bodies().size());
-  for (std::size_t b = 0; b < loads.size(); ++b) loads[b].assign(model.bodies()[b].node_count(), 0.0);
+  for (Index b = 0; b < std::ssize(loads); ++b) loads[b].assign(model.bodies()[b].node_count(), 0.0);
   for (const auto handle : built.nodal_loads) {
     const NodalLoadElement& nodal = built.Get(handle);
-    const int b = model.IndexOf(nodal.bodies()[0]);
+    const Index b = model.IndexOf(nodal.bodies()[0]);
     const Vec3 axis = poses[b].A.col(0);
     const auto& forces = nodal.forces();
     const double scale = nodal.Scale(load);
-    for (std::size_t k = 0; k < forces.size(); ++k) loads[b][k] += scale * axis.dot(forces[k]);
+    for (Index k = 0; k < std::ssize(forces); ++k) loads[b][k] += scale * axis.dot(forces[k]);
   }
   return loads;
 }
 
 }  // namespace
 
-Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta, int element) {
+Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta, Index element) {
   if (element < 0 || element + 1 >= body.node_count()) {
     throw LogicError(fmt::format("ElementEndForces: element {} outside the body's {} elements", element,
                                  body.node_count() - 1));
@@ -142,7 +142,7 @@ Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta,
 
 std::vector<SectionForces> BodyInternalForces(const Body& body, const VecX& eta,
                                               const std::vector<double>& axial_loads) {
-  if (!axial_loads.empty() && static_cast<int>(axial_loads.size()) != body.node_count()) {
+  if (!axial_loads.empty() && std::ssize(axial_loads) != body.node_count()) {
     throw LogicError("BodyInternalForces: one axial load per node expected");
   }
   return ForcesOfBody(body, MakeElementMatrices(body.reduced->spec), eta, axial_loads);
@@ -150,20 +150,20 @@ std::vector<SectionForces> BodyInternalForces(const Body& body, const VecX& eta,
 
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& built, const VecX& q,
                                                               const LoadParameters& load) {
-  std::vector<int> all(built.system.bodies().size());
-  for (std::size_t b = 0; b < all.size(); ++b) all[b] = static_cast<int>(b);
+  std::vector<Index> all(built.system.bodies().size());
+  for (Index b = 0; b < std::ssize(all); ++b) all[b] = b;
   return ComputeInternalForces(built, q, load, all);
 }
 
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& built, const VecX& q,
-                                                              const LoadParameters& load, std::span<const int> bodies) {
+                                                              const LoadParameters& load, std::span<const Index> bodies) {
   const SystemModel& model = built.system;
   const std::vector<BodyPose> poses = model.Poses(q);
   const auto axial_loads = AxialNodalLoads(built, poses, load);
   ElementMatrixCache cache;
   std::vector<std::vector<SectionForces>> result(model.bodies().size());
-  for (const int b : bodies) {
-    const Body& body = model.bodies().at(static_cast<std::size_t>(b));
+  for (const Index b : bodies) {
+    const Body& body = model.bodies().at(b);
     result[b] = ForcesOfBody(body, cache.Get(body), poses[b].eta, axial_loads[b]);
   }
   return result;
@@ -171,29 +171,29 @@ std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& 
 
 std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v) {
   const std::size_t bodies = built.system.bodies().size();
-  std::vector<int> all(bodies > 0 ? bodies - 1 : 0);
-  for (std::size_t j = 0; j < all.size(); ++j) all[j] = static_cast<int>(j);
+  std::vector<Index> all(bodies > 0 ? bodies - 1 : 0);
+  for (Index j = 0; j < std::ssize(all); ++j) all[j] = j;
   return JointInternalForces(built, q, v, all);
 }
 
 std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v,
-                                               std::span<const int> joints) {
+                                               std::span<const Index> joints) {
   const SystemModel& model = built.system;
   const std::size_t bodies = model.bodies().size();
   std::vector<SectionForces> result(bodies > 0 ? bodies - 1 : 0);
   std::vector<bool> wanted(result.size(), false), found(result.size(), false);
-  for (const int j : joints) wanted.at(static_cast<std::size_t>(j)) = true;
+  for (const Index j : joints) wanted.at(j) = true;
   const std::vector<BodyPose> poses = model.Poses(q);
   for (const auto handle : built.couplings) {
     const CouplingElement& coupling = built.Get(handle);
-    const int lower = model.IndexOf(coupling.bodies()[0]);
+    const Index lower = model.IndexOf(coupling.bodies()[0]);
     if (model.IndexOf(coupling.bodies()[1]) != lower + 1 || !wanted[lower]) continue;
     const Vec6 force = coupling.Force(model.StateOf(coupling, poses, v, 0.0, 1.0));
     result[lower].force = force.head<3>();
     result[lower].moment = force.tail<3>();
     found[lower] = true;
   }
-  for (const int j : joints) {
+  for (const Index j : joints) {
     if (!found[j]) throw LogicError(fmt::format("JointInternalForces: no coupling between bodies {} and {}", j, j + 1));
   }
   return result;

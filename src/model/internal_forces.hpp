@@ -62,7 +62,7 @@ std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& 
 // The same for the listed bodies only (result[b] empty for the others): what a transient run reads
 // at its output times (the bit, the top, the probes) without the whole string.
 std::vector<std::vector<SectionForces>> ComputeInternalForces(const BuiltModel& built, const VecX& q,
-                                                              const LoadParameters& load, std::span<const int> bodies);
+                                                              const LoadParameters& load, std::span<const Index> bodies);
 
 // The internal forces of one body from its modal coordinates η (body frame); `axial_loads` are
 // the dead axial nodal loads a_j (N, along the body axis), one per node, or empty.
@@ -72,7 +72,7 @@ std::vector<SectionForces> BodyInternalForces(const Body& body, const VecX& eta,
 // The raw FE end forces of element e (nodes e, e+1) of a body: f_e = (K_e + N̄ K_G,e) d_e,
 // without the axial rebuild above; 12 values in the FE order (forces and moments on the element
 // at node e, then at node e+1), body frame.
-Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta, int element);
+Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta, Index element);
 
 // The internal force at each joint (size bodies − 1; joint j between body j and body j + 1):
 // the coupling force f = K e + C ė (CouplingElement::Force) in the lower body's frame, which is
@@ -80,6 +80,6 @@ Eigen::Matrix<double, 12, 1> ElementEndForces(const Body& body, const VecX& eta,
 std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v);
 // The same for the listed joints only (the others left zero).
 std::vector<SectionForces> JointInternalForces(const BuiltModel& built, const VecX& q, const VecX& v,
-                                               std::span<const int> joints);
+                                               std::span<const Index> joints);
 
 }  // namespace drillflex::model

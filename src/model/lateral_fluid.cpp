@@ -13,9 +13,9 @@ namespace drillflex::model {
 namespace {
 
 // Tributary length of node k of a body: half the distance to each neighbour inside the body.
-double TributaryLength(const Body& body, int k) {
+double TributaryLength(const Body& body, Index k) {
   const auto& nodes = body.reduced->node_positions;
-  const int last = body.node_count() - 1;
+  const Index last = body.node_count() - 1;
   const double below = k > 0 ? nodes[k].x() - nodes[k - 1].x() : 0.0;
   const double above = k < last ? nodes[k + 1].x() - nodes[k].x() : 0.0;
   return 0.5 * (below + above);
@@ -34,14 +34,13 @@ LateralFluid MakeLateralFluid(const ModelInput& input, const std::vector<Body>& 
   fluid.kinematic_viscosity = fluid.density > 0.0 ? input.fluid->viscosity / fluid.density : 0.0;
   fluid.added_mass_override = input.fluid->added_mass_coefficient_override;
   const double inside = input.fluid->internal_density.value_or(input.fluid->density);
-  std::optional<well::HoleProfile> hole;
-  if (input.trajectory && !input.hole.empty()) hole.emplace(input.hole);
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  const well::HoleProfile* hole = input.well && !input.well->hole.empty() ? &input.well->hole : nullptr;
+  for (Index b = 0; b < std::ssize(bodies); ++b) {
     const Body& body = bodies[b];
     const AveragedAreas areas = AverageAreas(input.string.components.at(body.component));
-    for (int k = 0; k < body.node_count(); ++k) {
+    for (Index k = 0; k < body.node_count(); ++k) {
       LateralFluidNode node;
-      node.body = static_cast<int>(b);
+      node.body = b;
       node.node = k;
       node.length = TributaryLength(body, k);
       node.internal_mass = inside * areas.bore * node.length;
@@ -73,7 +72,7 @@ void AttachLateralFluid(const ModelInput& input, double circular_frequency, std:
     body.fluid_lateral_mass = VecX::Zero(body.node_count());
     body.fluid_lateral_damping = VecX::Zero(body.node_count());
   }
-  for (std::size_t i = 0; i < fluid.nodes.size(); ++i) {
+  for (Index i = 0; i < std::ssize(fluid.nodes); ++i) {
     const LateralFluidNode& node = fluid.nodes[i];
     const NodeFluidTerms terms = ComputeNodeFluidTerms(fluid, i, circular_frequency);
     bodies[node.body].fluid_lateral_mass[node.node] = terms.mass;
@@ -115,7 +114,7 @@ LateralFluidMatrices ComputeLateralFluidMatrices(const SystemModel& model, const
                                               double circular_frequency, FluidPart part) {
   const auto poses = model.Poses(q);
   std::vector<Eigen::Triplet<double>> mass, damping;
-  for (std::size_t i = 0; i < fluid.nodes.size(); ++i) {
+  for (Index i = 0; i < std::ssize(fluid.nodes); ++i) {
     const LateralFluidNode& node = fluid.nodes[i];
     NodeFluidTerms terms = ComputeNodeFluidTerms(fluid, i, circular_frequency);
     if (part == FluidPart::Annulus) terms.mass -= node.internal_mass;
@@ -123,17 +122,17 @@ LateralFluidMatrices ComputeLateralFluidMatrices(const SystemModel& model, const
     if (terms.mass == 0.0 && terms.damping == 0.0) continue;
     const MatX jacobian = LateralNodeJacobian(model, poses, node);
     const MatX product = jacobian.transpose() * jacobian;
-    const int offset = model.bodies()[node.body].v_offset;
+    const Index offset = model.bodies()[node.body].v_offset;
     for (Eigen::Index r = 0; r < product.rows(); ++r) {
       for (Eigen::Index c = 0; c < product.cols(); ++c) {
         if (product(r, c) == 0.0) continue;
-        const int row = offset + static_cast<int>(r), col = offset + static_cast<int>(c);
+        const Index row = offset + r, col = offset + c;
         if (terms.mass != 0.0) mass.emplace_back(row, col, terms.mass * product(r, c));
         if (terms.damping != 0.0) damping.emplace_back(row, col, terms.damping * product(r, c));
       }
     }
   }
-  const int n = model.num_velocities();
+  const Index n = model.num_velocities();
   LateralFluidMatrices matrices{SparseMat(n, n), SparseMat(n, n)};
   matrices.mass.setFromTriplets(mass.begin(), mass.end());
   matrices.damping.setFromTriplets(damping.begin(), damping.end());
@@ -142,7 +141,7 @@ LateralFluidMatrices ComputeLateralFluidMatrices(const SystemModel& model, const
 
 std::vector<AnnulusGroup> ComputeAnnulusGroups(const SystemModel& model, const LateralFluid& fluid, const VecX& q) {
   const auto poses = model.Poses(q);
-  const int n = model.num_velocities();
+  const Index n = model.num_velocities();
   std::vector<AnnulusGroup> groups;
   std::vector<std::vector<Eigen::Triplet<double>>> triplets;
   for (const LateralFluidNode& node : fluid.nodes) {
@@ -155,18 +154,20 @@ std::vector<AnnulusGroup> ComputeAnnulusGroups(const SystemModel& model, const L
       triplets.emplace_back();
       group = groups.end() - 1;
     }
-    auto& list = triplets[static_cast<std::size_t>(group - groups.begin())];
+    auto& list = triplets[group - groups.begin()];
     const MatX jacobian = LateralNodeJacobian(model, poses, node);
     const MatX product = (fluid.density * kPi * node.rod_radius * node.rod_radius * node.length) *
                          (jacobian.transpose() * jacobian);
-    const int offset = model.bodies()[node.body].v_offset;
+    const Index offset = model.bodies()[node.body].v_offset;
     for (Eigen::Index r = 0; r < product.rows(); ++r) {
       for (Eigen::Index c = 0; c < product.cols(); ++c) {
         if (product(r, c) != 0.0) list.emplace_back(offset + r, offset + c, product(r, c));
       }
     }
   }
-  for (std::size_t g = 0; g < groups.size(); ++g) groups[g].unit_mass.setFromTriplets(triplets[g].begin(), triplets[g].end());
+  for (Index g = 0; g < std::ssize(groups); ++g) {
+    groups[g].unit_mass.setFromTriplets(triplets[g].begin(), triplets[g].end());
+  }
   return groups;
 }
 

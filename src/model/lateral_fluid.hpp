@@ -29,8 +29,8 @@
 namespace drillflex::model {
 
 struct LateralFluidNode {
-  int body = 0;
-  int node = 0;
+  Index body = 0;
+  Index node = 0;
   double internal_mass = 0.0;  // ρ_f,i A_i L_k, kg
   double length = 0.0;         // tributary length L_k, m
   double rod_radius = 0.0;     // a = OD/2, m

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,11 +12,10 @@
 #include "fe/material.hpp"
 #include "model/bit_rock.hpp"
 #include "model/drives.hpp"
+#include "model/load_parameters.hpp"
 #include "model/spring_elements.hpp"
 #include "model/string_config.hpp"
-#include "model/wall_contact.hpp"
-#include "well/hole.hpp"
-#include "well/trajectory.hpp"
+#include "model/wellbore.hpp"
 
 namespace drillflex::model {
 
@@ -30,9 +30,10 @@ struct ModelInput {
   std::vector<Load> initial_loads;
   double gravity = 0.0;              // m/s², along global +z
   std::optional<FluidConfig> fluid;
-  // The well the string lies in (bit at bit_md); none: straight along +x from the origin.
-  std::optional<well::Trajectory> trajectory;
-  std::vector<well::HoleSection> hole;  // with a trajectory: wall contact at every node
+  // The well the string lies in (bit at bit_md), held once and shared read-only by the model built
+  // from it (its wall contacts) and the analyses; none: straight along +x from the origin. With a
+  // hole (not empty): wall contact at every node.
+  std::shared_ptr<const Wellbore> well;
   double bit_md = 0.0;
   Operation operation;  // WOB and torque on bit act at the bit (s = 0)
   // The string's motion for the wall friction of a static analysis (torque and drag): with it, every

@@ -13,20 +13,19 @@ using so3::Skew;
 NodalLoadElement::NodalLoadElement(const Body* body, std::vector<Vec3> forces, std::vector<Vec3> moments,
                                    LoadGroup group, double value)
     : ForceElement({body}), forces_(std::move(forces)), moments_(std::move(moments)), group_(group), value_(value) {
-  if (static_cast<int>(forces_.size()) != body->node_count() ||
-      static_cast<int>(moments_.size()) != body->node_count()) {
+  if (std::ssize(forces_) != body->node_count() || std::ssize(moments_) != body->node_count()) {
     throw LogicError("NodalLoadElement: one force and one moment per node expected");
   }
   // The residual's node sums as products with A's entries (ResidualSums in the header), a = the
   // entries column by column: (AᵀF)_i = Σ_j A(j, i) F(j) = Σ_j a_{j+3i} F(j).
   const cms::ReducedBody& reduced = *body->reduced;
-  const int nf = body->flexible_count;
+  const Index nf = body->flexible_count;
   force_sum_.setZero();
   moment_sum_.setZero();
   modal_by_rotation_.setZero(nf, 9);
   moment_by_rotation_.setZero();
   offset_load_modes_.setZero(9, nf);
-  for (int k = 0; k < body->node_count(); ++k) {
+  for (Index k = 0; k < body->node_count(); ++k) {
     const Vec3& force = forces_[k];
     const Vec3& moment = moments_[k];
     force_sum_ += force;
@@ -34,30 +33,30 @@ NodalLoadElement::NodalLoadElement(const Body* body, std::vector<Vec3> forces, s
     const auto& phi = reduced.node_translation_modes[k];
     const auto& psi = reduced.node_rotation_modes[k];
     const Vec3& position = reduced.node_positions[k];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        const int c = j + 3 * i;
+    for (Index i = 0; i < 3; ++i) {
+      for (Index j = 0; j < 3; ++j) {
+        const Index c = j + 3 * i;
         modal_by_rotation_.col(c) += force(j) * phi.row(i).transpose() + moment(j) * psi.row(i).transpose();
         moment_by_rotation_.col(c) += force(j) * position.cross(Vec3::Unit(i));
       }
     }
-    for (int j = 0; j < 3; ++j) offset_load_modes_.middleRows<3>(3 * j) += force(j) * phi;
+    for (Index j = 0; j < 3; ++j) offset_load_modes_.middleRows<3>(3 * j) += force(j) * phi;
   }
   // Ĝ_i = Σ_e (A_e − mean A) G_e with A_e = Σ_{k>e} F_k(i) (header).
   const std::vector<MatX>& elements = reduced.element_modal_geometric_stiffness;
-  const int element_count = static_cast<int>(elements.size());
+  const Index element_count = std::ssize(elements);
   if (element_count == body->node_count() - 1 && element_count > 1) {
     gradient_by_axis_.assign(3, MatX::Zero(nf, nf));
-    for (int i = 0; i < 3; ++i) {
+    for (Index i = 0; i < 3; ++i) {
       std::vector<double> above(element_count, 0.0);
       double sum = 0.0;
-      for (int e = element_count - 1; e >= 0; --e) {
+      for (Index e = element_count - 1; e >= 0; --e) {
         sum += forces_[e + 1](i);
         above[e] = sum;
       }
       double mean = 0.0;
       for (double value : above) mean += value / element_count;
-      for (int e = 0; e < element_count; ++e) gradient_by_axis_[i] += (above[e] - mean) * elements[e];
+      for (Index e = 0; e < element_count; ++e) gradient_by_axis_[i] += (above[e] - mean) * elements[e];
     }
     bool any = false;
     for (const MatX& g : gradient_by_axis_) any = any || !g.isZero(0.0);
@@ -80,7 +79,7 @@ double NodalLoadElement::GradientEnergy(const BodyPose& pose, double load_factor
   if (gradient_by_axis_.empty()) return 0.0;
   const Vec3 axis = pose.A.col(0);
   double energy = 0.0;
-  for (int i = 0; i < 3; ++i) energy += axis(i) * pose.eta.dot(gradient_by_axis_[i] * pose.eta);
+  for (Index i = 0; i < 3; ++i) energy += axis(i) * pose.eta.dot(gradient_by_axis_[i] * pose.eta);
   return 0.5 * load_factor * energy;
 }
 
@@ -92,11 +91,11 @@ namespace {
 void AddAxialGradient(const std::vector<MatX>& by_axis, const BodyPose& pose, double lambda, bool with_matrices,
                       ElementContribution& out) {
   if (by_axis.empty()) return;
-  const int nf = static_cast<int>(pose.eta.size());
+  const Index nf = pose.eta.size();
   const Vec3 axis = pose.A.col(0);
   Eigen::Matrix<double, Eigen::Dynamic, 3> products(nf, 3);  // P
   Vec3 squares;
-  for (int i = 0; i < 3; ++i) {
+  for (Index i = 0; i < 3; ++i) {
     products.col(i) = by_axis[i] * pose.eta;
     squares(i) = pose.eta.dot(products.col(i));
   }
@@ -106,7 +105,7 @@ void AddAxialGradient(const std::vector<MatX>& by_axis, const BodyPose& pose, do
   out.force.segment<3>(3) += 0.5 * lambda * Vec3::UnitX().cross(body_squares);
   if (!with_matrices) return;
   auto eta_eta = out.stiffness.bottomRightCorner(nf, nf);
-  for (int i = 0; i < 3; ++i) eta_eta += (lambda * axis(i)) * by_axis[i];
+  for (Index i = 0; i < 3; ++i) eta_eta += (lambda * axis(i)) * by_axis[i];
   const MatX eta_theta = -lambda * products * pose.A * skew_x;
   out.stiffness.block(6, 3, nf, 3) += eta_theta;
   out.stiffness.block(3, 6, 3, nf) += eta_theta.transpose();
@@ -123,8 +122,8 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
   const Body& body = *bodies()[0];
   const BodyPose& pose = *state.poses[0];
   const cms::ReducedBody& reduced = *body.reduced;
-  const int nf = body.flexible_count;
-  const int nodes = body.node_count();
+  const Index nf = body.flexible_count;
+  const Index nodes = body.node_count();
   const double lambda = Scale(state.parameters);
   // Per node, in the body frame, F̂_k = AᵀF_k and M̂_k = AᵀM_k. The residual carries −f_ext:
   //   −λ (Σ F_k;  Σ u_k × F̂_k + M̂_k;  Σ Φ_kᵀ F̂_k + Ψ_kᵀ M̂_k),
@@ -139,7 +138,7 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
     const Eigen::Matrix<double, 9, 1> p = offset_load_modes_ * pose.eta;
     const Mat3 elastic = Eigen::Map<const Mat3>(p.data()) * pose.A;  // column i: Σ_j A(j, i) p_j
     Vec3 moment = moment_by_rotation_ * a + pose.A.transpose() * moment_sum_;
-    for (int i = 0; i < 3; ++i) moment += elastic.col(i).cross(Vec3::Unit(i));
+    for (Index i = 0; i < 3; ++i) moment += elastic.col(i).cross(Vec3::Unit(i));
     out.force.head<3>() -= lambda * force_sum_;
     out.force.segment<3>(3) -= lambda * moment;
     out.force.tail(nf).noalias() -= lambda * (modal_by_rotation_ * a);
@@ -152,7 +151,7 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
   if (with_matrices) skews.setZero(6 * nodes, 3);
   Vec3 force_sum = Vec3::Zero(), moment_sum = Vec3::Zero();
   Mat3 rotation_rotation = Mat3::Zero();
-  for (int k = 0; k < nodes; ++k) {
+  for (Index k = 0; k < nodes; ++k) {
     if (forces_[k].isZero(0.0) && moments_[k].isZero(0.0)) continue;
     const Vec3 offset = pose.NodeOffset(body, k);
     const Vec3 force_body = pose.A.transpose() * forces_[k];
@@ -175,7 +174,7 @@ void NodalLoadElement::DoEvaluate(const ElementState& state, bool with_matrices,
   out.stiffness.block<3, 3>(3, 3) -= lambda * rotation_rotation;
   out.stiffness.block(6, 3, nf, 3).noalias() -= lambda * reduced.mode_shapes.transpose().lazyProduct(skews);
   // θη: only the force rows (F̂̃_k, the translations Φ_k); F̂̃ᵀ = −F̂̃.
-  for (int k = 0; k < nodes; ++k) skews.middleRows<3>(6 * k + 3).setZero();
+  for (Index k = 0; k < nodes; ++k) skews.middleRows<3>(6 * k + 3).setZero();
   out.stiffness.block(3, 6, 3, nf).noalias() -= lambda * skews.transpose().lazyProduct(reduced.mode_shapes);
   AddAxialGradient(gradient_by_axis_, pose, lambda, true, out);
 }
@@ -184,7 +183,7 @@ double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {
   const Body& body = *bodies()[0];
   const BodyPose& pose = *state.poses[0];
   double energy = 0.0;
-  for (int k = 0; k < body.node_count(); ++k) {
+  for (Index k = 0; k < body.node_count(); ++k) {
     const Vec3 rest = NodeReferencePosition(body, k);
     energy -= Scale(state.parameters) * forces_[k].dot(pose.NodePosition(body, k) - rest);
   }
@@ -194,7 +193,7 @@ double NodalLoadElement::DoPotentialEnergy(const ElementState& state) const {
 double NodalLoadElement::DoPotentialEnergyChange(const ElementState& from, const ElementState& to) const {
   const Body& body = *bodies()[0];
   double change = 0.0;
-  for (int k = 0; k < body.node_count(); ++k) {
+  for (Index k = 0; k < body.node_count(); ++k) {
     if (forces_[k].isZero(0.0) && moments_[k].isZero(0.0)) continue;
     const NodeMove move = NodeMoveBetween(body, *from.poses[0], *to.poses[0], k);
     change -= forces_[k].dot(move.translation) + moments_[k].dot(move.rotation);

@@ -27,7 +27,7 @@ struct Scratch {
   cms::Matrix3X right_full;                             // 3 × n
 };
 
-Scratch& ThreadScratch(int size) {
+Scratch& ThreadScratch(Index size) {
   thread_local Scratch scratch;
   scratch.jacobian_t.resize(size, 6);
   for (Factor* f : {&scratch.position, &scratch.velocity, &scratch.angular_velocity, &scratch.work, &scratch.lever}) {
@@ -40,7 +40,7 @@ Scratch& ThreadScratch(int size) {
 // N_bᵀ: rows δr = [A, 0], δθ = [ũ_k, I], δη = [Φ_kᵀ, Ψ_kᵀ].
 void FillJacobianTranspose(const Mat3& A, const Mat3& skew_offset, const cms::Matrix3X& phi, const cms::Matrix3X& psi,
                            Eigen::Matrix<double, Eigen::Dynamic, 6>& jt) {
-  const int nf = static_cast<int>(phi.cols());
+  const Index nf = phi.cols();
   jt.block<3, 3>(0, 0) = A;
   jt.block<3, 3>(0, 3).setZero();
   jt.block<3, 3>(3, 0) = skew_offset;
@@ -62,7 +62,7 @@ void FillFactor(const Mat3& A, const Eigen::Matrix<double, Eigen::Dynamic, 6>& j
 // destination column (contiguous), the three columns of a combined; plain loops that the compiler
 // vectorizes (Eigen's small dynamic products are several times slower here).
 template <typename Right>
-void SubtractProduct(MatX& out, int r0, int c0, const Factor& a, const Right& b) {
+void SubtractProduct(MatX& out, Index r0, Index c0, const Factor& a, const Right& b) {
   const Eigen::Index rows = a.rows(), ld = out.outerStride();
   const double* __restrict a0 = a.data();
   const double* __restrict a1 = a0 + rows;
@@ -82,7 +82,7 @@ void MultiplyFactor(const Factor& a, const Mat3& b, Factor& out) {
   const double* __restrict a0 = a.data();
   const double* __restrict a1 = a0 + rows;
   const double* __restrict a2 = a1 + rows;
-  for (int j = 0; j < 3; ++j) {
+  for (Index j = 0; j < 3; ++j) {
     double* __restrict d = out.data() + j * rows;
     const double b0 = b(0, j), b1 = b(1, j), b2 = b(2, j);
     for (Eigen::Index i = 0; i < rows; ++i) {
@@ -95,17 +95,17 @@ void MultiplyFactor(const Factor& a, const Mat3& b, Factor& out) {
 // The modal rows of out (its last modes.rows() rows) += scale · modes · b (modes n_f × 3).
 void AddModalRows(const Factor& modes, const Mat3& b, double scale, Factor& out) {
   const Eigen::Index nf = modes.rows();
-  for (int j = 0; j < 3; ++j) {
+  for (Index j = 0; j < 3; ++j) {
     out.col(j).tail(nf) += scale * (modes.col(0) * b(0, j) + modes.col(1) * b(1, j) + modes.col(2) * b(2, j));
   }
 }
 
 }  // namespace
 
-void AddNodeForce(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion, const Vec3& force,
+void AddNodeForce(const Body& body, const BodyPose& pose, Index node, const NodeMotion& motion, const Vec3& force,
                   const Vec3& moment, const NodeForceJacobian* jacobian, bool with_matrices,
-                  ElementContribution& out, int offset) {
-  const int nf = body.flexible_count;
+                  ElementContribution& out, Index offset) {
+  const Index nf = body.flexible_count;
   const auto& phi = body.reduced->node_translation_modes[node];
   const auto& psi = body.reduced->node_rotation_modes[node];
   const Vec3 force_body = pose.A.transpose() * force;
@@ -116,7 +116,7 @@ void AddNodeForce(const Body& body, const BodyPose& pose, int node, const NodeMo
   out.force.segment(offset + 6, nf).noalias() -= phi.transpose() * force_body;
   out.force.segment(offset + 6, nf).noalias() -= psi.transpose() * moment_body;
   if (!with_matrices) return;
-  const int n = body.velocity_count();
+  const Index n = body.velocity_count();
   const Mat3& A = pose.A;
   const Mat3 skew_offset = Skew(motion.offset);
   const Mat3 skew_force = Skew(force_body), skew_moment = Skew(moment_body);
@@ -162,10 +162,10 @@ void AddNodeForce(const Body& body, const BodyPose& pose, int node, const NodeMo
 namespace {
 
 // The matrices of AddPointForce (formulas in node_force.hpp; body-frame factors as above).
-void SubtractPointForceMatrices(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion,
+void SubtractPointForceMatrices(const Body& body, const BodyPose& pose, Index node, const NodeMotion& motion,
                                 const Vec3& f, const Vec3& l, const PointForceJacobian& J, ElementContribution& out,
-                                int o) {
-  const int nf = body.flexible_count;
+                                Index o) {
+  const Index nf = body.flexible_count;
   const auto& phi = body.reduced->node_translation_modes[node];
   const auto& psi = body.reduced->node_rotation_modes[node];
   const Mat3& A = pose.A;
@@ -222,14 +222,14 @@ void SubtractPointForceMatrices(const Body& body, const BodyPose& pose, int node
 
 }  // namespace
 
-void AddPointForce(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion, const Vec3& force,
+void AddPointForce(const Body& body, const BodyPose& pose, Index node, const NodeMotion& motion, const Vec3& force,
                    const Vec3& lever, const PointForceJacobian* jacobian, bool with_matrices,
-                   ElementContribution& out, int offset) {
+                   ElementContribution& out, Index offset) {
   if (jacobian == nullptr) {
     AddNodeForce(body, pose, node, motion, force, lever.cross(force), nullptr, with_matrices, out, offset);
     return;
   }
-  const int nf = body.flexible_count;
+  const Index nf = body.flexible_count;
   const auto& phi = body.reduced->node_translation_modes[node];
   const auto& psi = body.reduced->node_rotation_modes[node];
   const Vec3 f = pose.A.transpose() * force, l = pose.A.transpose() * lever;

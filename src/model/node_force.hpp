@@ -44,9 +44,9 @@ struct NodeForceJacobian {
 // above to out.stiffness and out.damping (which must be sized and zeroed by the caller, as
 // ForceElement::Evaluate does); `jacobian` = nullptr means F and M do not depend on the node's
 // motion (dead loads: only the geometric part H(F, M) remains).
-void AddNodeForce(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion, const Vec3& force,
+void AddNodeForce(const Body& body, const BodyPose& pose, Index node, const NodeMotion& motion, const Vec3& force,
                   const Vec3& moment, const NodeForceJacobian* jacobian, bool with_matrices,
-                  ElementContribution& out, int offset = 0);
+                  ElementContribution& out, Index offset = 0);
 
 // Derivatives of the global force at the point r_k + ℓ, and of the lever ℓ (global), with
 // respect to the node's position, velocity and angular velocity (the lever depends on r_k only).
@@ -60,8 +60,8 @@ struct PointForceJacobian {
 // AddNodeForce for the force `force` applied at r_k + `lever` (moment lever × force about the
 // node), with the same conventions; `jacobian` = nullptr: force and lever do not depend on the
 // motion.
-void AddPointForce(const Body& body, const BodyPose& pose, int node, const NodeMotion& motion, const Vec3& force,
+void AddPointForce(const Body& body, const BodyPose& pose, Index node, const NodeMotion& motion, const Vec3& force,
                    const Vec3& lever, const PointForceJacobian* jacobian, bool with_matrices,
-                   ElementContribution& out, int offset = 0);
+                   ElementContribution& out, Index offset = 0);
 
 }  // namespace drillflex::model

@@ -4,12 +4,12 @@
 
 namespace drillflex::model {
 
-Vec3 NodeReferencePosition(const Body& body, int node) {
+Vec3 NodeReferencePosition(const Body& body, Index node) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   return body.reference_position + frame * body.reduced->node_positions[node];
 }
 
-NodeMotion ComputeNodeMotion(const Body& body, const BodyPose& pose, int node,
+NodeMotion ComputeNodeMotion(const Body& body, const BodyPose& pose, Index node,
                              const Eigen::Ref<const VecX>& body_velocity) {
   const auto& phi = body.reduced->node_translation_modes[node];
   const auto& psi = body.reduced->node_rotation_modes[node];
@@ -25,7 +25,7 @@ NodeMotion ComputeNodeMotion(const Body& body, const BodyPose& pose, int node,
   return motion;
 }
 
-NodeRates ComputeBodyFrameNodeRates(const Body& body, const BodyPose& pose, int node, const VecX& body_velocity) {
+NodeRates ComputeBodyFrameNodeRates(const Body& body, const BodyPose& pose, Index node, const VecX& body_velocity) {
   const cms::ReducedBody& reduced = *body.reduced;
   const Vec3 velocity = pose.A.transpose() * body_velocity.head<3>();
   const Vec3 omega = body_velocity.segment<3>(3);
@@ -36,10 +36,10 @@ NodeRates ComputeBodyFrameNodeRates(const Body& body, const BodyPose& pose, int 
   return rates;
 }
 
-NodeRates ComputeStringFrameNodeRates(const Body& body, const BodyPose& pose, const VecX& v, int node) {
+NodeRates ComputeStringFrameNodeRates(const Body& body, const BodyPose& pose, const VecX& v, Index node) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();
   const Mat3 to_string = frame.transpose() * pose.A;
-  const int n_f = body.flexible_count;
+  const Index n_f = body.flexible_count;
   const Vec3 velocity = v.segment<3>(body.v_offset);
   const Vec3 omega = v.segment<3>(body.v_offset + 3);
   const auto eta_dot = v.segment(body.v_offset + 6, n_f);
@@ -51,7 +51,7 @@ NodeRates ComputeStringFrameNodeRates(const Body& body, const BodyPose& pose, co
   return rates;
 }
 
-NodeDisplacement ComputeNodeDisplacement(const Body& body, const BodyPose& pose, int node) {
+NodeDisplacement ComputeNodeDisplacement(const Body& body, const BodyPose& pose, Index node) {
   const Mat3 frame = body.reference_orientation.toRotationMatrix();  // string frame at the body
   const Vec3 reference = NodeReferencePosition(body, node);
   NodeDisplacement motion;
@@ -69,8 +69,8 @@ FrameMotion ComputeFrameMotion(const BodyPose& pose, const VecX& body_velocity, 
 }
 
 BodyFrameNodeMotion ComputeBodyFrameNodeMotion(const Body& body, const BodyPose& pose, const FrameMotion& frame,
-                                               const VecX& body_velocity, const VecX& body_acceleration, int node) {
-  const int nf = body.flexible_count;
+                                               const VecX& body_velocity, const VecX& body_acceleration, Index node) {
+  const Index nf = body.flexible_count;
   const auto& phi = body.reduced->node_translation_modes[node];
   BodyFrameNodeMotion motion;
   motion.offset = pose.NodeOffset(body, node);
@@ -82,7 +82,7 @@ BodyFrameNodeMotion ComputeBodyFrameNodeMotion(const Body& body, const BodyPose&
   return motion;
 }
 
-void NodeVelocityJacobian(const Body& body, const BodyPose& pose, int node, const Vec3& offset,
+void NodeVelocityJacobian(const Body& body, const BodyPose& pose, Index node, const Vec3& offset,
                           Eigen::Matrix<double, 3, Eigen::Dynamic>& jacobian) {
   jacobian.resize(3, body.velocity_count());
   jacobian.leftCols<3>() = pose.A.transpose();
@@ -90,7 +90,7 @@ void NodeVelocityJacobian(const Body& body, const BodyPose& pose, int node, cons
   jacobian.rightCols(body.flexible_count) = body.reduced->node_translation_modes[node];
 }
 
-MatX NodeTranslationJacobian(const Body& body, const BodyPose& pose, int node) {
+MatX NodeTranslationJacobian(const Body& body, const BodyPose& pose, Index node) {
   MatX jacobian(3, body.velocity_count());
   jacobian.leftCols<3>() = Mat3::Identity();
   jacobian.middleCols<3>(3) = -pose.A * so3::Skew(pose.NodeOffset(body, node));

@@ -19,7 +19,7 @@
 namespace drillflex::model {
 
 // r_k of the undeformed placement (η = 0, the reference pose), global, m.
-Vec3 NodeReferencePosition(const Body& body, int node);
+Vec3 NodeReferencePosition(const Body& body, Index node);
 
 // The motion of one node of a body at a state, global (the force elements': model/node_force.hpp).
 struct NodeMotion {
@@ -33,7 +33,7 @@ struct NodeMotion {
 };
 
 // The motion of `node` from the body's pose and its velocity block (ṙ, ω, η̇) (size 6 + n_f).
-NodeMotion ComputeNodeMotion(const Body& body, const BodyPose& pose, int node,
+NodeMotion ComputeNodeMotion(const Body& body, const BodyPose& pose, Index node,
                              const Eigen::Ref<const VecX>& body_velocity);
 
 // A velocity-level vector at a node: its translation (m/s, or m per unit of a mode) and rotation
@@ -45,12 +45,12 @@ struct NodeRates {
 
 // Body frame, from the body's velocity block (ṙ, ω, η̇): t_k = Aᵀṙ + ω × u_k + Φ_k η̇ and
 // w_k = ω + Ψ_k η̇.
-NodeRates ComputeBodyFrameNodeRates(const Body& body, const BodyPose& pose, int node, const VecX& body_velocity);
+NodeRates ComputeBodyFrameNodeRates(const Body& body, const BodyPose& pose, Index node, const VecX& body_velocity);
 
 // String frame (the body's reference orientation), from a vector v of the system's velocity
 // coordinates (a mode shape or an increment δv): A_refᵀ (ṙ + A (ω × u_k + Φ_k η̇)) and
 // A_refᵀ A (ω + Ψ_k η̇).
-NodeRates ComputeStringFrameNodeRates(const Body& body, const BodyPose& pose, const VecX& v, int node);
+NodeRates ComputeStringFrameNodeRates(const Body& body, const BodyPose& pose, const VecX& v, Index node);
 
 // A node relative to its undeformed placement, in the string frame at the node (the body's
 // reference orientation): u = A_refᵀ (r_k − r_k,ref), θ = Log(A_refᵀ A A_k,elastic) with
@@ -60,7 +60,7 @@ struct NodeDisplacement {
   Vec3 displacement = Vec3::Zero();  // string frame, m
   Vec3 rotation = Vec3::Zero();      // string frame, rad (rotation vector)
 };
-NodeDisplacement ComputeNodeDisplacement(const Body& body, const BodyPose& pose, int node);
+NodeDisplacement ComputeNodeDisplacement(const Body& body, const BodyPose& pose, Index node);
 
 // The frame's motion in its own axes at (q, v, a): p = Aᵀṙ (m/s), Aᵀr̈ (m/s²), ω (rad/s), ω̇ (rad/s²).
 struct FrameMotion {
@@ -78,15 +78,15 @@ struct BodyFrameNodeMotion {
   Vec3 modal_velocity;  // Φ_k η̇, m/s
 };
 BodyFrameNodeMotion ComputeBodyFrameNodeMotion(const Body& body, const BodyPose& pose, const FrameMotion& frame,
-                                               const VecX& body_velocity, const VecX& body_acceleration, int node);
+                                               const VecX& body_velocity, const VecX& body_acceleration, Index node);
 
 // J_k = [Aᵀ, −ũ_k, Φ_k] (3 × (6 + n_f)): node k's body-frame velocity t_k = J_k v_b, u_k its `offset`.
 // The fluid's lumps' (model/fluid_inertia.hpp) and the linear analyses' J_lat (model/lateral_fluid.hpp: its
 // last two rows).
-void NodeVelocityJacobian(const Body& body, const BodyPose& pose, int node, const Vec3& offset,
+void NodeVelocityJacobian(const Body& body, const BodyPose& pose, Index node, const Vec3& offset,
                           Eigen::Matrix<double, 3, Eigen::Dynamic>& jacobian);
 
 // L_k = [I, −A ũ_k, A Φ_k] (3 × (6 + n_f)): node k's global velocity ṙ_k = L_k v_b.
-MatX NodeTranslationJacobian(const Body& body, const BodyPose& pose, int node);
+MatX NodeTranslationJacobian(const Body& body, const BodyPose& pose, Index node);
 
 }  // namespace drillflex::model

@@ -44,7 +44,7 @@ ScaledSpring Scaled(const Vec6& stiffness, const Vec6& damping, double factor) {
 
 }  // namespace
 
-CouplingElement::CouplingElement(const Body* lower, int lower_node, const Body* upper, int upper_node,
+CouplingElement::CouplingElement(const Body* lower, Index lower_node, const Body* upper, Index upper_node,
                                  const Vec6& stiffness, const Vec6& damping, const Mat3& built_in_rotation,
                                  const Vec3& placement_kink)
     : ForceElement({lower, upper}), lower_node_(lower_node), upper_node_(upper_node), stiffness_(stiffness),
@@ -79,7 +79,7 @@ double CouplingElement::DoPotentialEnergy(const ElementState& state) const {
   return 0.5 * state.parameters.coupling_factor * strain.dot(stiffness_.cwiseProduct(strain));
 }
 
-SupportElement::SupportElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
+SupportElement::SupportElement(const Body* body, Index node, const Vec3& position, const Mat3& frame,
                                const Vec6& stiffness, const Vec6& damping, bool holds_bit)
     : ForceElement({body}), node_(node), stiffness_(stiffness), damping_(damping), holds_bit_(holds_bit) {
   ground_.r = ground_.reference = position;

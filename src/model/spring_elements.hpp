@@ -19,7 +19,7 @@ class CouplingElement : public ForceElement {
   // their reference placement along a curved well. It is taken as stress-free at load factor 0 and
   // fades linearly with the load factor, so that the placement is an equilibrium where the static
   // continuation starts and the straight pipe's bending is fully felt at load factor 1.
-  CouplingElement(const Body* lower, int lower_node, const Body* upper, int upper_node, const Vec6& stiffness,
+  CouplingElement(const Body* lower, Index lower_node, const Body* upper, Index upper_node, const Vec6& stiffness,
                   const Vec6& damping, const Mat3& built_in_rotation = Mat3::Identity(),
                   const Vec3& placement_kink = Vec3::Zero());
   std::string Describe() const override;
@@ -33,7 +33,7 @@ class CouplingElement : public ForceElement {
 
  private:
   CouplingKinematics Kinematics(const ElementState& state) const;
-  int lower_node_, upper_node_;
+  Index lower_node_, upper_node_;
   Vec6 stiffness_, damping_;
   Mat3 built_in_rotation_;
   Vec3 placement_kink_;
@@ -44,12 +44,12 @@ class SupportElement : public ForceElement {
   // Holds `node` of `body` at `position` with the string frame `frame` (columns x, y, z);
   // stiffness and damping 0 in the free directions.
   // `holds_bit`: the node is the bit's (LoadParameters::bit_support_factor scales it).
-  SupportElement(const Body* body, int node, const Vec3& position, const Mat3& frame, const Vec6& stiffness,
+  SupportElement(const Body* body, Index node, const Vec3& position, const Mat3& frame, const Vec6& stiffness,
                  const Vec6& damping, bool holds_bit = false);
   std::string Describe() const override;
   // The reaction the support exerts on the string, in the string frame (force N, moment N·m).
   Vec6 Reaction(const ElementState& state) const;
-  int node() const { return node_; }
+  Index node() const { return node_; }
   const Vec6& stiffness() const { return stiffness_; }  // as built (factor 1)
   bool holds_bit() const { return holds_bit_; }
 
@@ -60,7 +60,7 @@ class SupportElement : public ForceElement {
  private:
   CouplingKinematics Kinematics(const ElementState& state) const;
   double Factor(const ElementState& state) const { return holds_bit_ ? state.parameters.bit_support_factor : 1.0; }
-  int node_;
+  Index node_;
   BodyPose ground_;
   Vec6 stiffness_, damping_;
   bool holds_bit_ = false;

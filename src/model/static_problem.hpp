@@ -23,8 +23,8 @@ class StaticModelProblem : public solvers::StaticProblem {
                               Ramp ramp = Ramp::kLoads)
       : model_(model), base_(parameters), load_(parameters), ramp_(ramp) {}
 
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   // Twists keep the bodies' shapes (SystemModel::IncrementKeepingShape).
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.IncrementKeepingShape(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
@@ -52,7 +52,7 @@ class StaticModelProblem : public solvers::StaticProblem {
     return model_.LargestLateralNodeTranslation(q, dv);
   }
   VecX StateResolution(const VecX& q) const override { return model_.StateResolution(q); }
-  std::string DescribeCoordinate(int index) const override { return model_.DescribeCoordinate(index); }
+  std::string DescribeCoordinate(Index index) const override { return model_.DescribeCoordinate(index); }
   double EnergyChange(const VecX& from, const VecX& to) const override {
     return model_.PotentialEnergyChange(from, to, Load());
   }

@@ -18,7 +18,7 @@ EndStiffness SemiInfiniteBeamEndStiffness(double bending_rigidity, double founda
   return {bending_rigidity * p * s, bending_rigidity * p, bending_rigidity * s};
 }
 
-StringAboveElement::StringAboveElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
+StringAboveElement::StringAboveElement(const Body* body, Index node, const Vec3& position, const Mat3& frame,
                                        const StringAboveParameters& parameters)
     : ForceElement({body}), node_(node), parameters_(parameters) {
   ground_.r = ground_.reference = position;

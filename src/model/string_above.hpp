@@ -66,7 +66,7 @@ EndStiffness SemiInfiniteBeamEndStiffness(double bending_rigidity, double founda
 class StringAboveElement : public ForceElement {
  public:
   // Holds `node` of `body` (the top) about `position` with the string frame `frame` (columns x, y, z).
-  StringAboveElement(const Body* body, int node, const Vec3& position, const Mat3& frame,
+  StringAboveElement(const Body* body, Index node, const Vec3& position, const Mat3& frame,
                      const StringAboveParameters& parameters);
   std::string Describe() const override;
   // The top's tension T (N) under a parameter block.
@@ -93,7 +93,7 @@ class StringAboveElement : public ForceElement {
 
  private:
   CouplingKinematics Kinematics(const ElementState& state) const;
-  int node_;
+  Index node_;
   BodyPose ground_;
   StringAboveParameters parameters_;
 };

@@ -32,22 +32,23 @@ double BuoyedWeightPerLength(const Component& component, const ModelInput& input
 }
 
 double StringAboveWeight(const ModelInput& input) {
-  if (!input.trajectory || input.string.components.empty()) return 0.0;
+  if (!input.well || input.string.components.empty()) return 0.0;
   const double top_md = input.bit_md - StringLength(input.string);
-  if (top_md <= input.trajectory->start_md()) return 0.0;
-  const double tvd = input.trajectory->Position(top_md).z() - input.trajectory->Position(input.trajectory->start_md()).z();
+  if (top_md <= input.well->trajectory.start_md()) return 0.0;
+  const double tvd = input.well->trajectory.Position(top_md).z() -
+                     input.well->trajectory.Position(input.well->trajectory.start_md()).z();
   return BuoyedWeightPerLength(input.string.components.back(), input) * tvd;
 }
 
 double ModelledStringAxialWeight(const ModelInput& input) {
-  if (!input.trajectory) return 0.0;
+  if (!input.well) return 0.0;
   double weight = 0.0;
   // Each component's weight along the hole: w (TVD at its bottom − TVD at its top).
   double md = input.bit_md;
   for (const Component& component : input.string.components) {
     const double length = component.length * component.count;
     weight += BuoyedWeightPerLength(component, input) *
-              (input.trajectory->Position(md).z() - input.trajectory->Position(md - length).z());
+              (input.well->trajectory.Position(md).z() - input.well->trajectory.Position(md - length).z());
     md -= length;
   }
   return weight;
@@ -101,8 +102,8 @@ double ContactDiameterAt(const StringConfig& string, double s) {
 }
 
 std::optional<double> RadialClearanceAt(const ModelInput& input, double s) {
-  if (!input.trajectory || input.hole.empty()) return std::nullopt;
-  const double hole = well::HoleProfile(input.hole).Diameter(input.bit_md - s);
+  if (!input.well || input.well->hole.empty()) return std::nullopt;
+  const double hole = input.well->hole.Diameter(input.bit_md - s);
   return 0.5 * (hole - ContactDiameterAt(input.string, s));
 }
 

@@ -23,19 +23,19 @@ SystemModel::SystemModel(std::vector<Body> bodies, std::vector<std::unique_ptr<F
     num_positions_ = std::max(num_positions_, body.q_offset + body.position_count());
     num_velocities_ = std::max(num_velocities_, body.v_offset + body.velocity_count());
   }
-  std::vector<std::pair<int, int>> coupled;
+  std::vector<std::pair<Index, Index>> coupled;
   for (const auto& element : elements_) {
-    std::vector<int>& indices = element_bodies_.emplace_back();
+    std::vector<Index>& indices = element_bodies_.emplace_back();
     for (const Body* body : element->bodies()) {
       if (IndexOf(body) < 0) throw LogicError(element->Describe() + " refers to a body outside the model");
-      for (int other : indices) coupled.emplace_back(other, IndexOf(body));
+      for (Index other : indices) coupled.emplace_back(other, IndexOf(body));
       indices.push_back(IndexOf(body));
     }
   }
   body_elements_.resize(bodies_.size());
-  for (std::size_t e = 0; e < element_bodies_.size(); ++e) {
-    const int index = static_cast<int>(e);
-    for (int b : element_bodies_[e]) {
+  for (Index e = 0; e < std::ssize(element_bodies_); ++e) {
+    const Index index = e;
+    for (Index b : element_bodies_[e]) {
       if (body_elements_[b].empty() || body_elements_[b].back() != index) body_elements_[b].push_back(index);
     }
     if (element_bodies_[e].size() > 1) shared_elements_.push_back(index);
@@ -44,15 +44,15 @@ SystemModel::SystemModel(std::vector<Body> bodies, std::vector<std::unique_ptr<F
   mass_pattern_ = BlockPattern(bodies_, {}, num_velocities_);
 }
 
-int SystemModel::IndexOf(const Body* body) const {
+Index SystemModel::IndexOf(const Body* body) const {
   if (bodies_.empty() || body < bodies_.data() || body >= bodies_.data() + bodies_.size()) return -1;
-  return static_cast<int>(body - bodies_.data());
+  return body - bodies_.data();
 }
 
-std::string SystemModel::DescribeCoordinate(int index) const {
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+std::string SystemModel::DescribeCoordinate(Index index) const {
+  for (Index b = 0; b < std::ssize(bodies_); ++b) {
     const Body& body = bodies_[b];
-    const int local = index - body.v_offset;
+    const Index local = index - body.v_offset;
     if (local < 0 || local >= body.velocity_count()) continue;
     static constexpr const char* kFrame[6] = {"frame translation x", "frame translation y", "frame translation z",
                                               "frame rotation x",    "frame rotation y",    "frame rotation z"};
@@ -80,7 +80,7 @@ std::vector<Eigen::Index> SystemModel::BodyCoordinateBlocks() const {
 VecX SystemModel::Increment(const VecX& q, const VecX& dv) const {
   VecX result = q;
   for (const Body& body : bodies_) {
-    const int qo = body.q_offset, vo = body.v_offset;
+    const Index qo = body.q_offset, vo = body.v_offset;
     result.segment<3>(qo) += dv.segment<3>(vo);
     const Quat rotation(q[qo + 3], q[qo + 4], q[qo + 5], q[qo + 6]);
     const Quat updated = so3::Compose(rotation, dv.segment<3>(vo + 3));
@@ -93,7 +93,7 @@ VecX SystemModel::Increment(const VecX& q, const VecX& dv) const {
 VecX SystemModel::IncrementKeepingShape(const VecX& q, const VecX& dv) const {
   VecX result = Increment(q, dv);
   for (const Body& body : bodies_) {
-    const int qo = body.q_offset, vo = body.v_offset, modes = body.flexible_count;
+    const Index qo = body.q_offset, vo = body.v_offset, modes = body.flexible_count;
     const double turn = dv[vo + 3];  // φ: the frame's turn about its own x axis
     if (turn == 0.0) continue;
     // A ← A exp(δθ_⊥) Rx(φ): tilted first, then turned about the tilted axis, so that the turn moves
@@ -116,7 +116,7 @@ VecX SystemModel::IncrementKeepingShape(const VecX& q, const VecX& dv) const {
 void SystemModel::TurnCoordinates(const VecX& dv, VecX& x, bool inverse) const {
   thread_local VecX eta;
   for (const Body& body : bodies_) {
-    const int vo = body.v_offset, modes = body.flexible_count;
+    const Index vo = body.v_offset, modes = body.flexible_count;
     const double turn = inverse ? -dv[vo + 3] : dv[vo + 3];
     // Below 1e-6 rad, |P − I| < 1e-6, far below what Newton notices: taken as 0 (a body vibrating
     // without spinning, where the map cost the V1 cantilever's transient a third of its time).
@@ -137,7 +137,7 @@ VecX SystemModel::StateResolution(const VecX& q) const {
   constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
   VecX resolution(num_velocities_);
   for (const Body& body : bodies_) {
-    const int qo = body.q_offset, vo = body.v_offset;
+    const Index qo = body.q_offset, vo = body.v_offset;
     // The displacement as stored, and the node offsets A u (up to a body length) it is added to.
     resolution.segment<3>(vo).setConstant(kEpsilon * std::max(q.segment<3>(qo).lpNorm<Eigen::Infinity>(), body.length()));
     resolution.segment<3>(vo + 3).setConstant(kEpsilon);
@@ -154,7 +154,7 @@ double SystemModel::LargestLateralNodeTranslation(const VecX& q, const VecX& dv)
     const Vec3 dtheta = dv.segment<3>(body.v_offset + 3);
     const auto deta = dv.segment(body.v_offset + 6, body.flexible_count);
     const Vec3 axis = pose.A.col(0);
-    for (int k = 0; k < body.node_count(); ++k) {
+    for (Index k = 0; k < body.node_count(); ++k) {
       const Vec3 local = dtheta.cross(pose.NodeOffset(body, k)) + body.reduced->node_translation_modes[k] * deta;
       const Vec3 move = dr + pose.A * local;
       largest = std::max(largest, (move - move.dot(axis) * axis).norm());
@@ -183,7 +183,7 @@ void SystemModel::FillState(const ForceElement& element, const std::vector<BodyP
   state.parameters = load;
   state.poses.clear();
   state.velocity.resize(element.local_size());
-  int offset = 0;
+  Index offset = 0;
   for (const Body* body : element.bodies()) {
     state.poses.push_back(&poses[IndexOf(body)]);
     state.velocity.segment(offset, body->velocity_count()) = v.segment(body->v_offset, body->velocity_count());
@@ -191,9 +191,9 @@ void SystemModel::FillState(const ForceElement& element, const std::vector<BodyP
   }
 }
 
-int SystemModel::LocalOffset(int element, int body) const {
-  int offset = 0;
-  for (int b : element_bodies_[element]) {
+Index SystemModel::LocalOffset(Index element, Index body) const {
+  Index offset = 0;
+  for (Index b : element_bodies_[element]) {
     if (b == body) return offset;
     offset += bodies_[b].velocity_count();
   }
@@ -204,22 +204,21 @@ namespace {
 
 // Models of at least this many bodies evaluate their bodies and elements on OpenMP threads; below
 // it the threads cost more than they save (the V1 cantilever's residual takes ~12 µs).
-constexpr std::size_t kParallelBodies = 32;
+constexpr Index kParallelBodies = 32;
 
 // Runs task(i) for i in [0, count), on OpenMP threads when `parallel`. An exception in a task is
 // rethrown here (the first one caught) instead of escaping the parallel region.
 template <typename Task>
-void ForEachIndex(std::size_t count, bool parallel, const Task& task) {
+void ForEachIndex(Index count, bool parallel, const Task& task) {
   if (!parallel) {  // no OpenMP region at all: a small model's residual takes ~12 µs
-    for (std::size_t i = 0; i < count; ++i) task(i);
+    for (Index i = 0; i < count; ++i) task(i);
     return;
   }
   std::exception_ptr failure;
-  const long n = static_cast<long>(count);
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  for (Index i = 0; i < count; ++i) {
     try {
-      task(static_cast<std::size_t>(i));
+      task(i);
     } catch (...) {
 #pragma omp critical(drillflex_model_failure)
       if (!failure) failure = std::current_exception();
@@ -242,22 +241,22 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
   const auto poses = Poses(q);
   const bool moving = !v.isZero(0.0);
   const bool accelerating = !a.isZero(0.0);
-  const bool parallel = bodies_.size() >= kParallelBodies;
+  const bool parallel = std::ssize(bodies_) >= kParallelBodies;
   std::vector<VecX> shared_forces(elements_.size());
-  ForEachIndex(shared_elements_.size(), parallel, [&](std::size_t i) {
-    const int e = shared_elements_[i];
+  ForEachIndex(std::ssize(shared_elements_), parallel, [&](Index i) {
+    const Index e = shared_elements_[i];
     thread_local ElementState state;
     ElementContribution contribution;
     FillState(*elements_[e], poses, v, t, load, state);
     elements_[e]->Evaluate(state, false, contribution);
     shared_forces[e] = std::move(contribution.force);
   });
-  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
+  ForEachIndex(std::ssize(bodies_), parallel, [&](Index b) {
     thread_local ElementState state;
     thread_local ElementContribution contribution;
     thread_local VecX local, velocity;
     const Body& body = bodies_[b];
-    const int n = body.velocity_count();
+    const Index n = body.velocity_count();
     local.setZero(n);
     velocity = v.segment(body.v_offset, n);
     if (accelerating || moving) {
@@ -267,9 +266,9 @@ VecX SystemModel::Residual(double t, const VecX& q, const VecX& v, const VecX& a
     AddElasticForces(body, poses[b], velocity, local);
     auto rows = residual.segment(body.v_offset, n);
     rows = local;
-    for (int e : body_elements_[b]) {
+    for (Index e : body_elements_[b]) {
       if (element_bodies_[e].size() > 1) {
-        rows += shared_forces[e].segment(LocalOffset(e, static_cast<int>(b)), n);
+        rows += shared_forces[e].segment(LocalOffset(e, b), n);
         continue;
       }
       FillState(*elements_[e], poses, v, t, load, state);
@@ -291,9 +290,9 @@ void SystemModel::IterationMatrixInto(SparseMat& matrix, double t, const VecX& q
                                       LoadParameters load, double cK, double cD, double cM) const {
   const profile::Scope scope("model: iteration matrix");
   const auto poses = Poses(q);
-  const bool parallel = bodies_.size() >= kParallelBodies;
+  const bool parallel = std::ssize(bodies_) >= kParallelBodies;
   // cK ∂f/∂q + cD ∂f/∂v of an element, into contribution.stiffness.
-  const auto element_block = [&](int e, ElementState& state, ElementContribution& contribution) {
+  const auto element_block = [&](Index e, ElementState& state, ElementContribution& contribution) {
     FillState(*elements_[e], poses, v, t, load, state);
     contribution.damping_needed = cD != 0.0;
     elements_[e]->Evaluate(state, true, contribution);
@@ -303,20 +302,20 @@ void SystemModel::IterationMatrixInto(SparseMat& matrix, double t, const VecX& q
   // The elements have no mass: with c_K = c_D = 0 (the mass matrix alone) they add nothing.
   const bool with_elements = cK != 0.0 || cD != 0.0;
   std::vector<MatX> shared_blocks(elements_.size());
-  ForEachIndex(with_elements ? shared_elements_.size() : 0, parallel, [&](std::size_t i) {
+  ForEachIndex(with_elements ? std::ssize(shared_elements_) : 0, parallel, [&](Index i) {
     thread_local ElementState state;
     ElementContribution contribution;
     element_block(shared_elements_[i], state, contribution);
     shared_blocks[shared_elements_[i]] = std::move(contribution.stiffness);
   });
   iteration_pattern_.Prepare(matrix);
-  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
+  ForEachIndex(std::ssize(bodies_), parallel, [&](Index b) {
     thread_local ElementState state;
     thread_local ElementContribution contribution;
     thread_local MatX local;
     const Body& body = bodies_[b];
-    const int n = body.velocity_count();
-    const int index = static_cast<int>(b);
+    const Index n = body.velocity_count();
+    const Index index = b;
     iteration_pattern_.ZeroColumns(index, matrix);  // only this body's task writes its columns
     local.setZero(n, n);
     // cK K_in + cD D_in + cM M of the inertia (exact, model/body_inertia_jacobian.hpp).
@@ -327,13 +326,13 @@ void SystemModel::IterationMatrixInto(SparseMat& matrix, double t, const VecX& q
     AddElasticMatrices(body, poses[b], cK, cD, local);
     // The body's own elements (wall contacts, loads, fluid) summed into its dense block first: one
     // scatter into the pattern a body instead of one an element (~10 contacts a body).
-    for (int e : body_elements_[b]) {
+    for (Index e : body_elements_[b]) {
       if (element_bodies_[e].size() > 1 || !with_elements) continue;
       element_block(e, state, contribution);
       local += contribution.stiffness;
     }
-    iteration_pattern_.AddColumns(local, std::span<const int>(&index, 1), index, matrix);
-    for (int e : body_elements_[b]) {
+    iteration_pattern_.AddColumns(local, std::span<const Index>(&index, 1), index, matrix);
+    for (Index e : body_elements_[b]) {
       if (element_bodies_[e].size() > 1 && with_elements) {
         iteration_pattern_.AddColumns(shared_blocks[e], element_bodies_[e], index, matrix);
       }
@@ -344,20 +343,20 @@ void SystemModel::IterationMatrixInto(SparseMat& matrix, double t, const VecX& q
 SparseMat SystemModel::MassMatrix(const VecX& q) const {
   const auto poses = Poses(q);
   SparseMat matrix = mass_pattern_.Zero();
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+  for (Index b = 0; b < std::ssize(bodies_); ++b) {
     MatX mass = BodyMassMatrix(bodies_[b], poses[b]);
     if (HasLateralFluid(bodies_[b])) mass += BodyFluidMassMatrix(bodies_[b], poses[b]);
-    mass_pattern_.Add(mass, {static_cast<int>(b)}, matrix);
+    mass_pattern_.Add(mass, {b}, matrix);
   }
   return matrix;
 }
 
 Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, LoadParameters load) const {
   const auto poses = Poses(q);
-  const bool parallel = bodies_.size() >= kParallelBodies;
+  const bool parallel = std::ssize(bodies_) >= kParallelBodies;
   // Each term on any thread, the sums in the model's order: the same for any number of threads.
   std::vector<double> kinetic(bodies_.size()), elastic(bodies_.size()), potential(elements_.size());
-  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
+  ForEachIndex(std::ssize(bodies_), parallel, [&](Index b) {
     const Body& body = bodies_[b];
     kinetic[b] = BodyKineticEnergy(body, poses[b], v.segment(body.v_offset, body.velocity_count()));
     if (HasLateralFluid(body)) {
@@ -365,11 +364,11 @@ Energies SystemModel::ComputeEnergies(const VecX& q, const VecX& v, LoadParamete
     }
     elastic[b] = BodyElasticEnergy(body, poses[b]);
   });
-  ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
+  ForEachIndex(std::ssize(elements_), parallel, [&](Index e) {
     potential[e] = elements_[e]->PotentialEnergy(StateOf(*elements_[e], poses, v, 0.0, load));
   });
   Energies energies;
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+  for (Index b = 0; b < std::ssize(bodies_); ++b) {
     energies.kinetic += kinetic[b];
     energies.elastic += elastic[b];
   }
@@ -381,13 +380,13 @@ double SystemModel::PotentialEnergyChange(const VecX& from, const VecX& to, Load
   const profile::Scope scope("model: energy change");
   const auto before = Poses(from);
   const auto after = Poses(to);
-  const bool parallel = bodies_.size() >= kParallelBodies;
+  const bool parallel = std::ssize(bodies_) >= kParallelBodies;
   const VecX rest = VecX::Zero(num_velocities_);
   std::vector<double> elastic(bodies_.size()), potential(elements_.size());
-  ForEachIndex(bodies_.size(), parallel, [&](std::size_t b) {
+  ForEachIndex(std::ssize(bodies_), parallel, [&](Index b) {
     elastic[b] = BodyElasticEnergy(bodies_[b], after[b]) - BodyElasticEnergy(bodies_[b], before[b]);
   });
-  ForEachIndex(elements_.size(), parallel, [&](std::size_t e) {
+  ForEachIndex(std::ssize(elements_), parallel, [&](Index e) {
     const ForceElement& element = *elements_[e];
     potential[e] = element.PotentialEnergyChange(StateOf(element, before, rest, 0.0, load),
                                                  StateOf(element, after, rest, 0.0, load));
@@ -406,7 +405,7 @@ std::vector<solvers::PenaltyTerm> SystemModel::PenaltyTerms(const VecX& q, LoadP
   // Each element on any thread into its own slot, gathered in the model's order.
   std::vector<solvers::PenaltyTerm> slots(elements_.size());
   std::vector<char> has(elements_.size(), 0);
-  ForEachIndex(elements_.size(), bodies_.size() >= kParallelBodies, [&](std::size_t e) {
+  ForEachIndex(std::ssize(elements_), std::ssize(bodies_) >= kParallelBodies, [&](Index e) {
     thread_local ElementState state;
     thread_local VecX gradient;
     const ForceElement& element = *elements_[e];
@@ -414,10 +413,10 @@ std::vector<solvers::PenaltyTerm> SystemModel::PenaltyTerms(const VecX& q, LoadP
     solvers::PenaltyTerm& term = slots[e];
     if (!element.Penalty(state, term.value, term.stiffness, gradient)) return;
     has[e] = 1;
-    int local = 0;
-    for (const int b : element_bodies_[e]) {
+    Index local = 0;
+    for (const Index b : element_bodies_[e]) {
       const Body& body = bodies_[b];
-      for (int j = 0; j < body.velocity_count(); ++j, ++local) {
+      for (Index j = 0; j < body.velocity_count(); ++j, ++local) {
         if (gradient[local] == 0.0) continue;
         term.indices.push_back(body.v_offset + j);
         term.gradient.push_back(gradient[local]);
@@ -425,24 +424,24 @@ std::vector<solvers::PenaltyTerm> SystemModel::PenaltyTerms(const VecX& q, LoadP
     }
   });
   std::vector<solvers::PenaltyTerm> terms;
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
+  for (Index e = 0; e < std::ssize(elements_); ++e) {
     if (has[e]) terms.push_back(std::move(slots[e]));
   }
   return terms;
 }
 
-std::pair<int, int> SystemModel::NodeAt(double s) const { return FindNodeAt(bodies_, s); }
+std::pair<Index, Index> SystemModel::NodeAt(double s) const { return FindNodeAt(bodies_, s); }
 
-std::pair<int, int> FindNodeAt(const std::vector<Body>& bodies_, double s) {
-  int best_body = 0, best_node = 0;
+std::pair<Index, Index> FindNodeAt(const std::vector<Body>& bodies_, double s) {
+  Index best_body = 0, best_node = 0;
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+  for (Index b = 0; b < std::ssize(bodies_); ++b) {
     const Body& body = bodies_[b];
-    for (int k = 0; k < body.node_count(); ++k) {
+    for (Index k = 0; k < body.node_count(); ++k) {
       const double distance = std::abs(body.NodeS(k) - s);
       if (distance <= best + 1e-12) {  // ties go to the later (upper) body
         best = distance;
-        best_body = static_cast<int>(b);
+        best_body = b;
         best_node = k;
       }
     }

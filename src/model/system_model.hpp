@@ -34,10 +34,10 @@ class SystemModel {
   // The element a handle names, with its type (the builder made it so: model/element_handle.hpp).
   template <class E>
   const E& Get(ElementHandle<E> handle) const {
-    return static_cast<const E&>(*elements_[static_cast<std::size_t>(handle.index())]);
+    return static_cast<const E&>(*elements_[handle.index()]);
   }
-  int num_positions() const { return num_positions_; }
-  int num_velocities() const { return num_velocities_; }
+  Index num_positions() const { return num_positions_; }
+  Index num_velocities() const { return num_velocities_; }
   double length() const { return length_; }  // of the string, m
 
   VecX ReferencePositions() const;
@@ -101,13 +101,13 @@ class SystemModel {
   // The same into `state`, reusing its storage.
   void FillState(const ForceElement& element, const std::vector<BodyPose>& poses, const VecX& v, double t,
                  LoadParameters load, ElementState& state) const;
-  int IndexOf(const Body* body) const;
+  Index IndexOf(const Body* body) const;
   // Where velocity coordinate `index` sits, for messages: its body, the body's span from the bit
   // and the coordinate's kind (frame translation or rotation, or mode j).
-  std::string DescribeCoordinate(int index) const;
+  std::string DescribeCoordinate(Index index) const;
 
   // The body and node at a distance s from the bit (the nearest node; at a joint, the upper body).
-  std::pair<int, int> NodeAt(double s) const;
+  std::pair<Index, Index> NodeAt(double s) const;
   // The force scale of the model's applied loads (N), for solver tolerances.
   double force_scale() const { return force_scale_; }
   void set_force_scale(double scale) { force_scale_ = scale; }
@@ -115,20 +115,20 @@ class SystemModel {
  private:
   std::vector<Body> bodies_;
   std::vector<std::unique_ptr<ForceElement>> elements_;
-  int num_positions_ = 0;
-  int num_velocities_ = 0;
+  Index num_positions_ = 0;
+  Index num_velocities_ = 0;
   double length_ = 0.0;
   double force_scale_ = 1.0;
-  std::vector<std::vector<int>> element_bodies_;  // body indices of each element
-  std::vector<std::vector<int>> body_elements_;   // per body: the elements touching it, ascending
-  std::vector<int> shared_elements_;              // the elements touching more than one body
+  std::vector<std::vector<Index>> element_bodies_;  // body indices of each element
+  std::vector<std::vector<Index>> body_elements_;   // per body: the elements touching it, ascending
+  std::vector<Index> shared_elements_;              // the elements touching more than one body
   // The first row of body `body` in element `element`'s local vector.
-  int LocalOffset(int element, int body) const;
+  Index LocalOffset(Index element, Index body) const;
   BlockPattern iteration_pattern_;  // body blocks and the blocks of bodies sharing an element
   BlockPattern mass_pattern_;       // body blocks only
 };
 
 // NodeAt over a list of bodies (used while building).
-std::pair<int, int> FindNodeAt(const std::vector<Body>& bodies, double s);
+std::pair<Index, Index> FindNodeAt(const std::vector<Body>& bodies, double s);
 
 }  // namespace drillflex::model

@@ -248,7 +248,7 @@ void CheckParameters(const WallContactParameters& p) {
 
 }  // namespace
 
-WallContactElement::WallContactElement(const Body* body, int node, std::shared_ptr<const Wellbore> wellbore,
+WallContactElement::WallContactElement(const Body* body, Index node, std::shared_ptr<const Wellbore> wellbore,
                                        const WallContactParameters& parameters, double md_guess)
     : ForceElement({body}), node_(node), wellbore_(std::move(wellbore)), parameters_(parameters) {
   if (!wellbore_) throw LogicError("WallContactElement: no wellbore");

@@ -48,17 +48,9 @@
 
 #include "model/force_element.hpp"
 #include "model/node_force.hpp"
-#include "well/hole.hpp"
-#include "well/trajectory.hpp"
+#include "model/wellbore.hpp"
 
 namespace drillflex::model {
-
-// The hole the string lies in: the well path and the hole diameter along it. Shared (read only)
-// by all contact elements of a model.
-struct Wellbore {
-  well::Trajectory trajectory;
-  well::HoleProfile hole;
-};
 
 struct WallContactParameters {
   double contact_radius = 0.0;        // R_c, m (half the contact diameter: body, tool joint, blade)
@@ -97,15 +89,15 @@ class WallContactElement : public ForceElement {
   // `md_guess`: a starting MD for the first closest-point search (e.g. bit_md − s of the node);
   // NaN: the start of the path. Throws LogicError on an invalid parameter, an empty hole
   // profile, or a node outside the body.
-  WallContactElement(const Body* body, int node, std::shared_ptr<const Wellbore> wellbore,
+  WallContactElement(const Body* body, Index node, std::shared_ptr<const Wellbore> wellbore,
                      const WallContactParameters& parameters, double md_guess = kNoGuess);
 
   std::string Describe() const override;
-  int node() const { return node_; }
+  Index node() const { return node_; }
   const WallContactParameters& parameters() const { return parameters_; }  // as built
   // The parameters under a parameter block: its friction coefficients, factor and sliding.
   WallContactParameters EffectiveParameters(const LoadParameters& load) const;
-  const Wellbore& wellbore() const { return *wellbore_; }
+  const std::shared_ptr<const Wellbore>& wellbore() const { return wellbore_; }  // shared with the model's input
 
   // Normal force, friction, contact MD and high-side angle at a state (thread-safe).
   WallContactResult Result(const ElementState& state) const;
@@ -126,7 +118,7 @@ class WallContactElement : public ForceElement {
   bool DoPenalty(const ElementState& state, double& value, double& stiffness, VecX& gradient) const override;
 
  private:
-  int node_;
+  Index node_;
   std::shared_ptr<const Wellbore> wellbore_;
   WallContactParameters parameters_;
   mutable std::atomic<double> md_hint_;

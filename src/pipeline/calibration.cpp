@@ -427,11 +427,13 @@ CalibrationResult Calibrate(const io::Case& c, const io::RigReadings& readings, 
   result.model = settings.model.kind;
   ReadingsModel model(c, readings, settings.model);
   result.bit_diameter = model.bit_diameter();
-  const bool has_casing = model::HasCasedHole(c.input.hole);
+  const std::vector<well::HoleSection> sections =
+      c.input.well ? c.input.well->hole.sections() : std::vector<well::HoleSection>{};
+  const bool has_casing = model::HasCasedHole(sections);
   const ReadingsParameters start = CaseReadingsParameters(c);
   // The cased hole's start: the case's friction (its cased sections' own are a start only when fitted).
   Parameters p{start.open_hole_friction, start.open_hole_friction, 0.0, start.bit_torque_coefficient};
-  for (const well::HoleSection& section : c.input.hole) {
+  for (const well::HoleSection& section : sections) {
     if (section.cased && section.friction) p[1] = *section.friction;
   }
   int torque_readings = 0, on_bottom_torques = 0;

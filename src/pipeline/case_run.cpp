@@ -270,10 +270,10 @@ void CheckBeforeSolving(const io::Case& c, const AnalysisRequest& request) {
   }
   if (request.vibration) {
     const analyses::VibrationSettings settings = CaseVibrationSettings(c);
-    for (std::size_t i = 0; i < settings.excitations.size(); ++i) {
+    for (Index i = 0; i < std::ssize(settings.excitations); ++i) {
       if (settings.excitations[i].type != analyses::ExcitationType::Motor) continue;
       try {
-        analyses::MotorSpeed(settings.excitations[i], c.input, static_cast<int>(i));
+        analyses::MotorSpeed(settings.excitations[i], c.input, i);
       } catch (const InputError& e) {
         if (!e.location().file.empty()) throw;
         throw InputError({c.file, e.location().line, e.location().column}, e.key_path(), e.message());
@@ -297,7 +297,7 @@ CaseResults RunCase(const io::Case& c, const AnalysisRequest& request, const Run
   if (observer.note) {
     observer.note(fmt::format("model: {} bodies, {} coordinates", built.system.bodies().size(),
                               built.system.num_velocities()));
-    if (c.input.operation.hook_load && input.trajectory && input.supports.empty()) {
+    if (c.input.operation.hook_load && input.well && input.supports.empty()) {
       observer.note(fmt::format("operation: WOB {} from the hook load {} (the string's buoyed weight along the hole "
                                 "less it; the pipe above the model, to the surface, weighs {})",
                                 Show(c, input.operation.weight_on_bit, Quantity::WeightOnBit),

@@ -55,7 +55,7 @@ model::LoadParameters Sliding(model::LoadParameters parameters, double axial_spe
 // torque). Empty when the model reaches the surface.
 std::optional<model::ModelInput> PipeAbove(const model::ModelInput& input) {
   const double top_md = input.bit_md - model::StringLength(input.string);
-  if (!input.trajectory || top_md <= input.trajectory->start_md() + 1e-6) return std::nullopt;
+  if (!input.well || top_md <= input.well->trajectory.start_md() + 1e-6) return std::nullopt;
   model::ModelInput above = input;
   above.bit_md = top_md;
   model::Component pipe = input.string.components.back();

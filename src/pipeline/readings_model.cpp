@@ -43,7 +43,7 @@ bool ModelledReading::failed() const { return !std::isfinite(hook_load) || !std:
 double BitDiameter(const io::Case& c) {
   const auto& components = c.input.string.components;
   if (!components.empty() && components.front().type == model::ComponentType::Bit) return components.front().outer_diameter;
-  if (!c.input.hole.empty()) return well::HoleProfile(c.input.hole).Diameter(c.input.bit_md);
+  if (c.input.well && !c.input.well->hole.empty()) return c.input.well->hole.Diameter(c.input.bit_md);
   return components.empty() ? 0.0 : components.front().outer_diameter;
 }
 
@@ -70,7 +70,7 @@ ReadingsModel::ReadingsModel(const io::Case& c, const io::RigReadings& readings,
   if (readings_.rows.empty()) throw InputError({readings_.file, 0, 0}, "", "the readings file has no readings");
   const double shallowest = model::StringLength(c.input.string) - c.input.string.components.back().length *
                                                                       c.input.string.components.back().count;
-  const double deepest = c.input.trajectory ? c.input.trajectory->end_md() : c.well->bit_md;
+  const double deepest = c.input.well ? c.input.well->trajectory.end_md() : c.well->bit_md;
   std::vector<std::size_t> order(readings_.rows.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {

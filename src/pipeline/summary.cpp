@@ -18,9 +18,9 @@ using units::Quantity;
 namespace {
 
 // "bit 3×", "imbalance 1×", "motor 5 lobes": what drives a critical RPM.
-std::string ExcitationName(const io::Case& c, int index) {
-  if (!c.analyses.vibration || index < 0 || index >= static_cast<int>(c.analyses.vibration->excitations.size())) return "?";
-  return analyses::ExcitationName(c.analyses.vibration->excitations[static_cast<std::size_t>(index)]);
+std::string ExcitationName(const io::Case& c, Index index) {
+  if (!c.analyses.vibration || index < 0 || index >= std::ssize(c.analyses.vibration->excitations)) return "?";
+  return analyses::ExcitationName(c.analyses.vibration->excitations[index]);
 }
 
 // The critical RPMs most severe first (at most kListed; the rest by RPM on one line).
@@ -60,7 +60,7 @@ void WriteStaticLimits(std::ostream& out, const io::Case& c, const analyses::Sta
   auto line = [&](const char* label, const analyses::LimitUtilisation& limit) {
     if (limit.component < 0) return fmt::format("{} -", label);
     return fmt::format("{} {:.3g} at {} ({})", label, limit.utilisation, where(limit.s, limit.md),
-                       c.input.string.components.at(static_cast<std::size_t>(limit.component)).name);
+                       c.input.string.components.at(limit.component).name);
   };
   out << fmt::format("  limits (design factor {:.3g}), utilisation = load / limit:\n", limits.design_factor);
   out << "    " << line("yield (von Mises / (yield / design factor))", limits.yield) << "\n";
@@ -255,7 +255,7 @@ void WriteVibration(std::ostream& out, const io::Case& c, const analyses::Vibrat
               << (result.method_note.empty() ? "" : ": " + result.method_note) << "\n";
   }
   const auto peak = std::max_element(result.max_lateral_displacement.begin(), result.max_lateral_displacement.end());
-  const std::size_t i = static_cast<std::size_t>(peak - result.max_lateral_displacement.begin());
+  const Index i = peak - result.max_lateral_displacement.begin();
   out << fmt::format("  largest lateral displacement amplitude {} at {} ({} from the bit)\n",
                            Show(c, *peak, Quantity::Diameter), Show(c, result.rotary_speeds[i], Quantity::RotarySpeed),
                            Show(c, result.s_max_displacement[i], Quantity::Length));
@@ -360,7 +360,7 @@ void WriteTransient(std::ostream& out, const io::Case& c, const analyses::Transi
 }
 
 void WriteTendency(std::ostream& out, const io::Case& c, const analyses::TendencyResult& result) {
-  const analyses::TendencyPoint& steady = result.trace.at(static_cast<std::size_t>(result.steady_index));
+  const analyses::TendencyPoint& steady = result.trace.at(result.steady_index);
   const bool point = c.analyses.tendency && c.analyses.tendency->rss &&
                      c.analyses.tendency->rss->type == analyses::RssType::Point;
   out << fmt::format("tendency: builds {} and turns {} (dogleg {}) at inclination {}, azimuth {}; steerability {:g}, "
@@ -415,7 +415,7 @@ void WriteTransientLimits(std::ostream& out, const io::Case& c, const analyses::
     const std::string md = c.well ? fmt::format(" (MD {})", Show(c, limit.md, Quantity::Length)) : "";
     out << fmt::format("    {} {:.3g} at {} from the bit{} ({}), t = {}{}\n", kWords[k], limit.utilisation,
                        Show(c, limit.s, Quantity::Length), md,
-                       c.input.string.components.at(static_cast<std::size_t>(limit.component)).name,
+                       c.input.string.components.at(limit.component).name,
                        Show(c, envelope.summary_time[k], Quantity::Time, 4),
                        limit.utilisation >= 1.0 ? "  ** BEYOND THE LIMIT **" : "");
   }

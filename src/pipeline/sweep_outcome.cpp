@@ -32,7 +32,7 @@ SurfaceLoads ComputeSurfaceLoads(const CaseResults& results) {
   const double top = model::StringLength(input.string);
   for (const analyses::SupportReaction& reaction : results.static_result->reactions) {
     if (std::abs(reaction.s - top) > 1e-6 * std::max(1.0, top)) continue;
-    const bool pipe_above = input.trajectory && input.supports.empty();
+    const bool pipe_above = input.well && input.supports.empty();
     loads.hook_load = reaction.force.x() + (pipe_above ? model::StringAboveWeight(input) : 0.0);
     loads.surface_torque = -reaction.moment.x();  // the support's moment about x resists the drive's clockwise turn
   }
@@ -52,7 +52,7 @@ void SummarizeStatic(const CaseResults& results, SweepOutcome& outcome) {
     for (const auto& contact : result.contacts) {
       outcome.largest_contact_force = std::max(outcome.largest_contact_force, contact.normal_force);
     }
-  } else if (results.model.input.trajectory) {
+  } else if (results.model.input.well) {
     outcome.largest_contact_force = 0.0;  // in a well, no contact carries force
   }
   if (!result.nodes.empty()) {

@@ -11,7 +11,7 @@ namespace drillflex::solvers {
 using BlockMap = Eigen::Map<MatX>;
 using ConstBlockMap = Eigen::Map<const MatX>;
 
-bool BlockTridiagonalCholesky::Analyze(const SparseMat& pattern, const std::vector<Eigen::Index>& starts) {
+bool BlockTridiagonalCholesky::Analyze(const SparseMat& pattern, const std::vector<Index>& starts) {
   factorized_ = false;
   return assembled_.Analyze(pattern, starts, false) && metric_assembled_.Analyze(pattern, starts, false);
 }
@@ -24,19 +24,19 @@ bool BlockTridiagonalCholesky::Factorize(const double* values, const double* met
   return Factorize(assembled_, &metric_assembled_, shift);
 }
 
-void BlockTridiagonalCholesky::Layout(const std::vector<Eigen::Index>& starts) {
+void BlockTridiagonalCholesky::Layout(const std::vector<Index>& starts) {
   if (starts == starts_ && !storage_.empty()) return;
   starts_ = starts;
-  const std::size_t blocks = starts.size() - 1;
+  const Index blocks = std::ssize(starts) - 1;
   diagonal_.resize(blocks);
   coupling_.resize(blocks > 0 ? blocks - 1 : 0);
-  std::size_t offset = 0;
-  for (std::size_t k = 0; k < blocks; ++k) {
+  Index offset = 0;
+  for (Index k = 0; k < blocks; ++k) {
     diagonal_[k] = offset;
-    offset += static_cast<std::size_t>(size(k) * size(k));
+    offset += size(k) * size(k);
     if (k + 1 < blocks) {
       coupling_[k] = offset;
-      offset += static_cast<std::size_t>(size(k) * size(k + 1));
+      offset += size(k) * size(k + 1);
     }
   }
   storage_.assign(offset, 0.0);
@@ -50,8 +50,8 @@ bool BlockTridiagonalCholesky::Factorize(const SymmetricBlockMatrix& stiffness, 
   factorized_ = false;
   Layout(stiffness.starts());
   double* data = storage_.data();
-  const std::size_t count = diagonal_.size();
-  for (std::size_t k = 0; k < count; ++k) {
+  const Index count = std::ssize(diagonal_);
+  for (Index k = 0; k < count; ++k) {
     BlockMap block(data + diagonal_[k], size(k), size(k));  // D_k + σ M_k
     block = ConstBlockMap(stiffness.diagonal_block(k), size(k), size(k));
     if (metric != nullptr) block += shift * ConstBlockMap(metric->diagonal_block(k), size(k), size(k));
@@ -77,9 +77,9 @@ bool BlockTridiagonalCholesky::Factorize(const SymmetricBlockMatrix& stiffness, 
 void BlockTridiagonalCholesky::SolveInPlace(VecX& x) const {
   if (!factorized_) throw LogicError("BlockTridiagonalCholesky::SolveInPlace without a factorization");
   const double* data = storage_.data();
-  const std::size_t count = diagonal_.size();
+  const Index count = std::ssize(diagonal_);
   // Down the string: y_k = C_k⁻¹ (b_k − T_{k−1}ᵀ y_{k−1}).
-  for (std::size_t k = 0; k < count; ++k) {
+  for (Index k = 0; k < count; ++k) {
     auto part = x.segment(starts_[k], size(k));
     if (k > 0) {
       part.noalias() -= ConstBlockMap(data + coupling_[k - 1], size(k - 1), size(k)).transpose() *
@@ -88,7 +88,7 @@ void BlockTridiagonalCholesky::SolveInPlace(VecX& x) const {
     ConstBlockMap(data + diagonal_[k], size(k), size(k)).triangularView<Eigen::Lower>().solveInPlace(part);
   }
   // Back up: x_k = C_k⁻ᵀ (y_k − T_k x_{k+1}).
-  for (std::size_t k = count; k-- > 0;) {
+  for (Index k = count; k-- > 0;) {
     auto part = x.segment(starts_[k], size(k));
     if (k + 1 < count) {
       part.noalias() -= ConstBlockMap(data + coupling_[k], size(k), size(k + 1)) * x.segment(starts_[k + 1], size(k + 1));

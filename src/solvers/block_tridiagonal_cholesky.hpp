@@ -30,7 +30,7 @@ class BlockTridiagonalCholesky {
   // pattern (compressed, column major; only its lower triangle is read). False, and unusable, when
   // the blocks do not partition the rows or an entry of the lower triangle lies outside the
   // block-tridiagonal structure.
-  bool Analyze(const SparseMat& pattern, const std::vector<Eigen::Index>& starts);
+  bool Analyze(const SparseMat& pattern, const std::vector<Index>& starts);
   // Factorizes the matrix whose lower-triangle values are `values` (in the analysed pattern's order)
   // plus `shift` times `metric_values` (same pattern; null: none). False when it is not positive
   // definite (a block pivot ≤ 0); the factorization is then unusable.
@@ -46,16 +46,16 @@ class BlockTridiagonalCholesky {
   bool analysed() const { return assembled_.analysed(); }
 
  private:
-  void Layout(const std::vector<Eigen::Index>& starts);
+  void Layout(const std::vector<Index>& starts);
   SymmetricBlockMatrix assembled_;  // the matrix of the sparse Factorize, scattered into blocks
   SymmetricBlockMatrix metric_assembled_;
-  std::vector<Eigen::Index> starts_;
+  std::vector<Index> starts_;
   // The factors in one buffer, column major: C_k (lower triangle) and T_k = W_kᵀ = C_k⁻¹ L_kᵀ
   // (n_k × n_{k+1}).
   std::vector<double> storage_;
-  std::vector<std::size_t> diagonal_, coupling_;  // offsets into storage_
+  std::vector<Index> diagonal_, coupling_;  // offsets into storage_
   bool factorized_ = false;
-  Eigen::Index size(std::size_t k) const { return starts_[k + 1] - starts_[k]; }
+  Index size(Index k) const { return starts_[k + 1] - starts_[k]; }
 };
 
 }  // namespace drillflex::solvers

@@ -15,42 +15,42 @@
 namespace drillflex::solvers {
 
 template <typename Scalar>
-bool BlockTridiagonalLuOf<Scalar>::Analyze(Eigen::Index rows, Eigen::Index cols,
-                                 const std::vector<std::pair<Eigen::Index, Eigen::Index>>& entries,
-                                 std::vector<Eigen::Index> starts) {
+bool BlockTridiagonalLuOf<Scalar>::Analyze(Index rows, Index cols,
+                                 const std::vector<std::pair<Index, Index>>& entries,
+                                 std::vector<Index> starts) {
   analyzed_ = false;
-  const Eigen::Index n = rows;
+  const Index n = rows;
   if (cols != n || starts.size() < 2 || starts.front() != 0 || starts.back() != n) return false;
-  for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
+  for (Index k = 0; k + 1 < std::ssize(starts); ++k) {
     if (starts[k + 1] <= starts[k]) return false;
   }
   starts_ = std::move(starts);
-  const std::size_t blocks = starts_.size() - 1;
+  const Index blocks = std::ssize(starts_) - 1;
   diagonal_at_.assign(blocks, 0);
   upper_at_.assign(blocks - 1, 0);
   lower_at_.assign(blocks - 1, 0);
-  std::size_t size = 0;
-  for (std::size_t k = 0; k < blocks; ++k) {
+  Index size = 0;
+  for (Index k = 0; k < blocks; ++k) {
     diagonal_at_[k] = size;
-    size += static_cast<std::size_t>(BlockSize(k) * BlockSize(k));
+    size += BlockSize(k) * BlockSize(k);
     if (k + 1 < blocks) {
       upper_at_[k] = size;
-      size += static_cast<std::size_t>(BlockSize(k) * BlockSize(k + 1));
+      size += BlockSize(k) * BlockSize(k + 1);
       lower_at_[k] = size;
-      size += static_cast<std::size_t>(BlockSize(k + 1) * BlockSize(k));
+      size += BlockSize(k + 1) * BlockSize(k);
     }
   }
-  std::vector<int> block_of(static_cast<std::size_t>(n));
-  for (std::size_t k = 0; k < blocks; ++k) {
-    std::fill(block_of.begin() + starts_[k], block_of.begin() + starts_[k + 1], static_cast<int>(k));
+  std::vector<Index> block_of(n);
+  for (Index k = 0; k < blocks; ++k) {
+    std::fill(block_of.begin() + starts_[k], block_of.begin() + starts_[k + 1], k);
   }
   slot_offsets_.clear();
   slot_offsets_.reserve(entries.size());
   for (const auto& [row, col] : entries) {
-    const auto bi = static_cast<std::size_t>(block_of[static_cast<std::size_t>(row)]);
-    const auto bj = static_cast<std::size_t>(block_of[static_cast<std::size_t>(col)]);
+    const auto bi = block_of[row];
+    const auto bj = block_of[col];
     // Column major within the block, whose rows are those of block bi.
-    const auto at = static_cast<std::size_t>((row - starts_[bi]) + (col - starts_[bj]) * BlockSize(bi));
+    const Index at = (row - starts_[bi]) + (col - starts_[bj]) * BlockSize(bi);
     if (bi == bj) {
       slot_offsets_.push_back(diagonal_at_[bi] + at);
     } else if (bi == bj + 1) {
@@ -63,7 +63,7 @@ bool BlockTridiagonalLuOf<Scalar>::Analyze(Eigen::Index rows, Eigen::Index cols,
   }
   // Consecutive entries that land in consecutive slots (a column's rows within one block) as runs.
   runs_.clear();
-  for (std::size_t s = 0; s < slot_offsets_.size(); ++s) {
+  for (Index s = 0; s < std::ssize(slot_offsets_); ++s) {
     if (!runs_.empty() && runs_.back().from + runs_.back().length == s &&
         runs_.back().to + runs_.back().length == slot_offsets_[s]) {
       ++runs_.back().length;
@@ -75,8 +75,8 @@ bool BlockTridiagonalLuOf<Scalar>::Analyze(Eigen::Index rows, Eigen::Index cols,
   middle_ = blocks / 2;
   coupled_.assign(blocks, Matrix());
   factors_.assign(blocks, SmallLu<Scalar>());
-  for (std::size_t k = 0; k < middle_; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k + 1));
-  for (std::size_t k = middle_ + 1; k < blocks; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k - 1));
+  for (Index k = 0; k < middle_; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k + 1));
+  for (Index k = middle_ + 1; k < blocks; ++k) coupled_[k].resize(BlockSize(k), BlockSize(k - 1));
   analyzed_ = true;
   return true;
 }
@@ -93,16 +93,16 @@ std::pair<double, double> BlockTridiagonalLuOf<Scalar>::Norms() const {
   double row_sum_norm = 0.0, largest2 = 0.0;  // max |a|² (no hypot per entry)
   Eigen::VectorXd rows;
   auto add = [&](const ConstBlock& block) {
-    for (Eigen::Index j = 0; j < block.cols(); ++j) {
+    for (Index j = 0; j < block.cols(); ++j) {
       rows += block.col(j).unaryExpr([](const Scalar& a) { return Magnitude(a); });
       largest2 = std::max(largest2, block.col(j).cwiseAbs2().maxCoeff());
     }
   };
-  for (std::size_t k = 0; k < diagonal_at_.size(); ++k) {
+  for (Index k = 0; k < std::ssize(diagonal_at_); ++k) {
     rows.setZero(BlockSize(k));
     add(Diagonal(k));
     if (k > 0) add(Lower(k - 1));
-    if (k + 1 < diagonal_at_.size()) add(Upper(k));
+    if (k + 1 < std::ssize(diagonal_at_)) add(Upper(k));
     row_sum_norm = std::max(row_sum_norm, rows.maxCoeff());
   }
   return {row_sum_norm, std::sqrt(largest2)};
@@ -110,7 +110,7 @@ std::pair<double, double> BlockTridiagonalLuOf<Scalar>::Norms() const {
 
 template <typename Scalar>
 void BlockTridiagonalLuOf<Scalar>::Factorize(const Sparse& matrix) {
-  if (!analyzed_ || matrix.nonZeros() != static_cast<Eigen::Index>(slot_offsets_.size()) || !matrix.isCompressed()) {
+  if (!analyzed_ || matrix.nonZeros() != std::ssize(slot_offsets_) || !matrix.isCompressed()) {
     throw LogicError(fmt::format("BlockTridiagonalLu::Factorize: the matrix ({} entries) does not have the analysed "
                                  "pattern ({} entries)", matrix.nonZeros(), slot_offsets_.size()));
   }
@@ -126,12 +126,12 @@ template <typename Lu>
 double SmallestPivot2(const Lu& lu) {
   double smallest2 = std::numeric_limits<double>::infinity();
   const auto pivots = lu.matrixLU().diagonal();
-  for (Eigen::Index j = 0; j < pivots.size(); ++j) smallest2 = std::min(smallest2, std::norm(pivots(j)));
+  for (Index j = 0; j < pivots.size(); ++j) smallest2 = std::min(smallest2, std::norm(pivots(j)));
   return smallest2;
 }
 
 // Below this many blocks both sweeps run on the calling thread: a thread's start costs more.
-constexpr std::size_t kParallelBlocks = 16;
+constexpr Index kParallelBlocks = 16;
 
 // Runs the two independent sweeps, side by side on two OpenMP threads when `parallel` and the caller
 // allows more than one thread, one after the other otherwise; an exception in either is rethrown here.
@@ -166,7 +166,7 @@ void RunBoth(bool parallel, const First& first, const Second& second) {
 template <typename Scalar>
 double BlockTridiagonalLuOf<Scalar>::FactorizeFromTop() {  // S_0 … S_{m−1} and X_k
   double smallest2 = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < middle_; ++k) {
+  for (Index k = 0; k < middle_; ++k) {
     if (k == 0) {
       factors_[0].compute(Diagonal(0));
     } else {
@@ -184,8 +184,8 @@ double BlockTridiagonalLuOf<Scalar>::FactorizeFromTop() {  // S_0 … S_{m−1} 
 template <typename Scalar>
 double BlockTridiagonalLuOf<Scalar>::FactorizeFromBottom() {  // T_{N−1} … T_{m+1} and Y_k
   double smallest2 = std::numeric_limits<double>::infinity();
-  const std::size_t last = diagonal_at_.size() - 1;
-  for (std::size_t k = last; k > middle_; --k) {
+  const Index last = std::ssize(diagonal_at_) - 1;
+  for (Index k = last; k > middle_; --k) {
     if (k == last) {
       factors_[k].compute(Diagonal(k));
     } else {
@@ -203,7 +203,7 @@ double BlockTridiagonalLuOf<Scalar>::FactorizeFromBottom() {  // T_{N−1} … T
 template <typename Scalar>
 void BlockTridiagonalLuOf<Scalar>::Factorize() {
   if (!analyzed_) throw LogicError("BlockTridiagonalLu::Factorize before a successful Analyze");
-  const std::size_t blocks = diagonal_at_.size(), m = middle_;
+  const Index blocks = std::ssize(diagonal_at_), m = middle_;
   double top2 = std::numeric_limits<double>::infinity(), bottom2 = top2;
   RunBoth(blocks >= kParallelBlocks, [&] { top2 = FactorizeFromTop(); }, [&] { bottom2 = FactorizeFromBottom(); });
   top_schur_ = Diagonal(m);  // S_m = D_m − L_{m−1} X_{m−1} − U_m Y_{m+1}
@@ -216,20 +216,20 @@ void BlockTridiagonalLuOf<Scalar>::Factorize() {
 template <typename Scalar>
 template <typename Target>
 void BlockTridiagonalLuOf<Scalar>::SolveColumns(Target& x) const {
-  const std::size_t blocks = diagonal_at_.size(), m = middle_;
-  const auto rows = [&](std::size_t k) { return x.middleRows(starts_[k], BlockSize(k)); };
+  const Index blocks = std::ssize(diagonal_at_), m = middle_;
+  const auto rows = [&](Index k) { return x.middleRows(starts_[k], BlockSize(k)); };
   const bool parallel = blocks >= kParallelBlocks;
   RunBoth(
       parallel,
       [&] {  // w_k = S_k⁻¹ (f_k − L_{k−1} w_{k−1}), k < m
-        for (std::size_t k = 0; k < m; ++k) {
+        for (Index k = 0; k < m; ++k) {
           auto block = rows(k);
           if (k > 0) block.noalias() -= Lower(k - 1) * rows(k - 1);
           factors_[k].solveInPlace(block);
         }
       },
       [&] {  // z_k = T_k⁻¹ (f_k − U_k z_{k+1}), k > m
-        for (std::size_t k = blocks - 1; k > m; --k) {
+        for (Index k = blocks - 1; k > m; --k) {
           auto block = rows(k);
           if (k + 1 < blocks) block.noalias() -= Upper(k) * rows(k + 1);
           factors_[k].solveInPlace(block);
@@ -242,10 +242,10 @@ void BlockTridiagonalLuOf<Scalar>::SolveColumns(Target& x) const {
   RunBoth(
       parallel,
       [&] {  // x_k = w_k − X_k x_{k+1}, k < m
-        for (std::size_t k = m; k-- > 0;) rows(k).noalias() -= coupled_[k] * rows(k + 1);
+        for (Index k = m; k-- > 0;) rows(k).noalias() -= coupled_[k] * rows(k + 1);
       },
       [&] {  // x_k = z_k − Y_k x_{k−1}, k > m
-        for (std::size_t k = m + 1; k < blocks; ++k) rows(k).noalias() -= coupled_[k] * rows(k - 1);
+        for (Index k = m + 1; k < blocks; ++k) rows(k).noalias() -= coupled_[k] * rows(k - 1);
       });
 }
 
@@ -271,8 +271,8 @@ template <typename Scalar>
 typename BlockTridiagonalLuOf<Scalar>::Matrix BlockTridiagonalLuOf<Scalar>::Multiply(const Matrix& x) const {
   if (!analyzed_ || x.rows() != starts_.back()) throw LogicError("BlockTridiagonalLu::Multiply: wrong size or no pattern");
   Matrix y(x.rows(), x.cols());
-  const std::size_t blocks = diagonal_at_.size();
-  for (std::size_t k = 0; k < blocks; ++k) {
+  const Index blocks = std::ssize(diagonal_at_);
+  for (Index k = 0; k < blocks; ++k) {
     auto row = y.middleRows(starts_[k], BlockSize(k));
     row.noalias() = Diagonal(k) * x.middleRows(starts_[k], BlockSize(k));
     if (k > 0) row.noalias() += Lower(k - 1) * x.middleRows(starts_[k - 1], BlockSize(k - 1));

@@ -56,10 +56,10 @@ class BlockTridiagonalLuOf {
   // stays unusable, when the blocks do not partition 0 … n − 1 or an entry lies outside the
   // block-tridiagonal structure.
   template <typename PatternScalar>
-  bool Analyze(const Eigen::SparseMatrix<PatternScalar>& pattern, std::vector<Eigen::Index> starts) {
-    std::vector<std::pair<Eigen::Index, Eigen::Index>> entries;  // (row, column) of each stored entry
-    entries.reserve(static_cast<std::size_t>(pattern.nonZeros()));
-    for (Eigen::Index col = 0; col < pattern.outerSize(); ++col) {
+  bool Analyze(const Eigen::SparseMatrix<PatternScalar>& pattern, std::vector<Index> starts) {
+    std::vector<std::pair<Index, Index>> entries;  // (row, column) of each stored entry
+    entries.reserve(pattern.nonZeros());
+    for (Index col = 0; col < pattern.outerSize(); ++col) {
       for (typename Eigen::SparseMatrix<PatternScalar>::InnerIterator it(pattern, col); it; ++it) {
         entries.emplace_back(it.row(), col);
       }
@@ -70,8 +70,8 @@ class BlockTridiagonalLuOf {
 
   // The block storage: its size, where each stored entry of the analysed pattern goes (in the
   // pattern's order), and the values (entries of the blocks outside the pattern stay zero).
-  std::size_t storage_size() const { return storage_.size(); }
-  const std::vector<std::size_t>& slot_offsets() const { return slot_offsets_; }
+  Index storage_size() const { return std::ssize(storage_); }
+  const std::vector<Index>& slot_offsets() const { return slot_offsets_; }
   Scalar* values() { return storage_.data(); }
   const Scalar* values() const { return storage_.data(); }
   // ‖A‖∞ with |a| measured as |Re a| + |Im a| (|a| if real), and max |a_ij|, of the values held.
@@ -92,33 +92,33 @@ class BlockTridiagonalLuOf {
   Matrix Multiply(const Matrix& x) const;
 
  private:
-  bool Analyze(Eigen::Index rows, Eigen::Index cols, const std::vector<std::pair<Eigen::Index, Eigen::Index>>& entries,
-               std::vector<Eigen::Index> starts);
+  bool Analyze(Index rows, Index cols, const std::vector<std::pair<Index, Index>>& entries,
+               std::vector<Index> starts);
   // The two sweeps of the factorization (header); each returns the smallest |u_jj|² of its blocks.
   double FactorizeFromTop();
   double FactorizeFromBottom();
   // x ← A⁻¹ x for a vector or a matrix of right-hand sides.
   template <typename Target>
   void SolveColumns(Target& x) const;
-  Eigen::Index BlockSize(std::size_t k) const { return starts_[k + 1] - starts_[k]; }
+  Index BlockSize(Index k) const { return starts_[k + 1] - starts_[k]; }
   using ConstBlock = Eigen::Map<const Matrix>;
-  ConstBlock Diagonal(std::size_t k) const { return {storage_.data() + diagonal_at_[k], BlockSize(k), BlockSize(k)}; }
-  ConstBlock Upper(std::size_t k) const { return {storage_.data() + upper_at_[k], BlockSize(k), BlockSize(k + 1)}; }
-  ConstBlock Lower(std::size_t k) const { return {storage_.data() + lower_at_[k], BlockSize(k + 1), BlockSize(k)}; }
+  ConstBlock Diagonal(Index k) const { return {storage_.data() + diagonal_at_[k], BlockSize(k), BlockSize(k)}; }
+  ConstBlock Upper(Index k) const { return {storage_.data() + upper_at_[k], BlockSize(k), BlockSize(k + 1)}; }
+  ConstBlock Lower(Index k) const { return {storage_.data() + lower_at_[k], BlockSize(k + 1), BlockSize(k)}; }
 
   bool analyzed_ = false;
-  std::vector<Eigen::Index> starts_;
+  std::vector<Index> starts_;
   std::vector<Scalar> storage_;  // D_0, U_0, L_0, D_1, U_1, L_1, …, D_N (each column major)
-  std::vector<std::size_t> diagonal_at_, upper_at_, lower_at_;  // where D_k, U_k, L_k begin
-  std::vector<std::size_t> slot_offsets_;
+  std::vector<Index> diagonal_at_, upper_at_, lower_at_;  // where D_k, U_k, L_k begin
+  std::vector<Index> slot_offsets_;
   // The same as runs of entries that are consecutive in both (a column's rows within one block):
   // the pattern's entries [from, from + length) go to the storage at [to, to + length). A string's
   // matrix copies in ~50k runs of a body's 18 rows instead of ~1e6 single entries.
   struct Run {
-    std::size_t from, to, length;
+    Index from, to, length;
   };
   std::vector<Run> runs_;
-  std::size_t middle_ = 0;                // m = ⌊N/2⌋, where the two sweeps meet
+  Index middle_ = 0;                // m = ⌊N/2⌋, where the two sweeps meet
   std::vector<SmallLu<Scalar>> factors_;  // LU of S_k (k ≤ m) and T_k (k > m)
   std::vector<Matrix> coupled_;           // X_k = S_k⁻¹ U_k (k < m), Y_k = T_k⁻¹ L_{k−1} (k > m)
   Matrix top_schur_, bottom_schur_;       // S_k and T_k being formed (one each sweep)

@@ -30,12 +30,12 @@ BucklingResult FromReciprocals(const VecX& nu, const MatX& vectors, Eigen::Index
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](Eigen::Index a, Eigen::Index b) { return nu[a] > nu[b]; });
-  order.resize(std::min(order.size(), static_cast<size_t>(count)));
+  order.resize(std::min<Index>(std::ssize(order), count));
   BucklingResult result;
-  result.multipliers.resize(static_cast<Eigen::Index>(order.size()));
-  result.modes.resize(vectors.rows(), static_cast<Eigen::Index>(order.size()));
-  for (size_t i = 0; i < order.size(); ++i) {
-    const auto j = static_cast<Eigen::Index>(i);
+  result.multipliers.resize(std::ssize(order));
+  result.modes.resize(vectors.rows(), std::ssize(order));
+  for (Index i = 0; i < std::ssize(order); ++i) {
+    const Index j = i;
     result.multipliers[j] = 1.0 / nu[order[i]];
     result.modes.col(j) = vectors.col(order[i]);
   }
@@ -78,7 +78,7 @@ class DeflatedProduct {
 
 }  // namespace
 
-BucklingResult SolveBucklingDense(const SparseMat& K, const SparseMat& K_G, int count) {
+BucklingResult SolveBucklingDense(const SparseMat& K, const SparseMat& K_G, Index count) {
   CheckInputs(K, K_G);
   const Eigen::Index n = K.rows();
   if (count <= 0 || n == 0) return {VecX(0), MatX(n, 0)};
@@ -92,10 +92,10 @@ BucklingResult SolveBucklingDense(const SparseMat& K, const SparseMat& K_G, int 
   return FromReciprocals(pairs.values, pairs.vectors, count);
 }
 
-BucklingResult SolveBucklingLanczos(const SparseMat& K, const SparseMat& K_G, int count) {
+BucklingResult SolveBucklingLanczos(const SparseMat& K, const SparseMat& K_G, Index count) {
   CheckInputs(K, K_G);
   const Eigen::Index n = K.rows();
-  const Eigen::Index wanted = std::min<Eigen::Index>(std::max(count, 0), n);
+  const Eigen::Index wanted = std::min<Eigen::Index>(std::max<Index>(count, 0), n);
   if (wanted == 0) return {VecX(0), MatX(n, 0)};
   if (3 * wanted >= n) return SolveBucklingDense(K, K_G, count);
   using BOp = Spectra::SparseCholesky<double>;
@@ -144,7 +144,7 @@ BucklingResult SolveBucklingLanczos(const SparseMat& K, const SparseMat& K_G, in
   return FromReciprocals(locked_nu, locked, wanted);
 }
 
-BucklingResult SolveBuckling(const SparseMat& K, const SparseMat& K_G, int count) {
+BucklingResult SolveBuckling(const SparseMat& K, const SparseMat& K_G, Index count) {
   if (K.rows() <= kDenseBucklingLimit) return SolveBucklingDense(K, K_G, count);
   return SolveBucklingLanczos(K, K_G, count);
 }

@@ -25,9 +25,9 @@ struct BucklingResult {
 // The `count` smallest positive load multipliers λ with (K + λ K_G) x = 0. Throws SolverError if
 // K is not positive definite (the structure must be supported) or Lanczos does not converge,
 // LogicError on bad sizes or unsymmetric matrices.
-BucklingResult SolveBuckling(const SparseMat& K, const SparseMat& K_G, int count = 1);
+BucklingResult SolveBuckling(const SparseMat& K, const SparseMat& K_G, Index count = 1);
 
-BucklingResult SolveBucklingDense(const SparseMat& K, const SparseMat& K_G, int count = 1);
-BucklingResult SolveBucklingLanczos(const SparseMat& K, const SparseMat& K_G, int count = 1);
+BucklingResult SolveBucklingDense(const SparseMat& K, const SparseMat& K_G, Index count = 1);
+BucklingResult SolveBucklingLanczos(const SparseMat& K, const SparseMat& K_G, Index count = 1);
 
 }  // namespace drillflex::solvers

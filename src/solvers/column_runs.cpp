@@ -12,12 +12,12 @@ void ColumnRuns::Analyze(const SparseMat& pattern) {
   entries_ = pattern.nonZeros();
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
-  for (Eigen::Index j = 0; j < cols_; ++j) {
+  for (Index j = 0; j < cols_; ++j) {
     for (int p = outer[j]; p < outer[j + 1]; ++p) {
       if (p > outer[j] && inner[p] == inner[p - 1] + 1) {
         ++runs_.back().length;
       } else {
-        runs_.push_back({j, inner[p], static_cast<std::size_t>(p), 1});
+        runs_.push_back({j, inner[p], p, 1});
       }
     }
   }

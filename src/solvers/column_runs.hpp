@@ -21,12 +21,12 @@ class ColumnRuns {
 
  private:
   struct Run {
-    Eigen::Index column, row;
-    std::size_t first;  // index of its first value
-    Eigen::Index length;
+    Index column, row;
+    Index first;  // index of its first value
+    Index length;
   };
   std::vector<Run> runs_;
-  Eigen::Index rows_ = 0, cols_ = 0, entries_ = -1;
+  Index rows_ = 0, cols_ = 0, entries_ = -1;
 };
 
 }  // namespace drillflex::solvers

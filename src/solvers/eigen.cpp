@@ -51,19 +51,19 @@ bool SolveDenseDefinite(const MatX& a, const MatX& b, DenseDefinitePairs& pairs)
 
 ModalResult SelectNearest(const VecX& eigenvalues, const MatX& vectors, Eigen::Index count,
                           double shift) {
-  std::vector<Eigen::Index> order(static_cast<size_t>(eigenvalues.size()));
+  std::vector<Index> order(eigenvalues.size());
   std::iota(order.begin(), order.end(), Eigen::Index{0});
   std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
     return std::abs(eigenvalues[a] - shift) < std::abs(eigenvalues[b] - shift);
   });
-  order.resize(static_cast<size_t>(std::min<Eigen::Index>(count, eigenvalues.size())));
+  order.resize(std::min<Index>(count, eigenvalues.size()));
   std::stable_sort(order.begin(), order.end(),
                    [&](Eigen::Index a, Eigen::Index b) { return eigenvalues[a] < eigenvalues[b]; });
   ModalResult result;
-  result.eigenvalues.resize(static_cast<Eigen::Index>(order.size()));
-  result.vectors.resize(vectors.rows(), static_cast<Eigen::Index>(order.size()));
-  for (size_t i = 0; i < order.size(); ++i) {
-    const auto column = static_cast<Eigen::Index>(i);
+  result.eigenvalues.resize(std::ssize(order));
+  result.vectors.resize(vectors.rows(), std::ssize(order));
+  for (Index i = 0; i < std::ssize(order); ++i) {
+    const Index column = i;
     result.eigenvalues[column] = eigenvalues[order[i]];
     result.vectors.col(column) = vectors.col(order[i]);
   }
@@ -73,7 +73,7 @@ ModalResult SelectNearest(const VecX& eigenvalues, const MatX& vectors, Eigen::I
 
 }  // namespace detail
 
-ModalResult SolveModesDense(const SparseMat& K, const SparseMat& M, int count, double shift) {
+ModalResult SolveModesDense(const SparseMat& K, const SparseMat& M, Index count, double shift) {
   const Eigen::Index n = K.rows();
   detail::CheckSymmetric(K, n, "K");
   detail::CheckSymmetric(M, n, "M");
@@ -94,7 +94,7 @@ ModalResult SolveModesDense(const SparseMat& K, const SparseMat& M, int count, d
   return result;
 }
 
-ModalResult SolveModes(const SparseMat& K, const SparseMat& M, int count, double shift) {
+ModalResult SolveModes(const SparseMat& K, const SparseMat& M, Index count, double shift) {
   if (K.rows() <= kDenseModalLimit) return SolveModesDense(K, M, count, shift);
   return SolveModesLanczos(K, M, count, shift);
 }
@@ -125,7 +125,7 @@ MatX StateSpaceMatrix(const MatX& K, const MatX& D, const MatX& M) {
 }  // namespace
 
 ComplexModes SolveDampedModes(const SparseMat& K, const SparseMat& D, const SparseMat& M,
-                              int count) {
+                              Index count) {
   const Eigen::Index n = K.rows();
   if (K.cols() != n || D.rows() != n || D.cols() != n || M.rows() != n || M.cols() != n) {
     throw LogicError("SolveDampedModes: K, D and M must be square and of the same size");
@@ -134,7 +134,7 @@ ComplexModes SolveDampedModes(const SparseMat& K, const SparseMat& D, const Spar
   return SolveDampedModes(MatX(K), MatX(D), MatX(M), count);
 }
 
-ComplexModes SolveDampedModes(const MatX& K, const MatX& D, const MatX& M, int count,
+ComplexModes SolveDampedModes(const MatX& K, const MatX& D, const MatX& M, Index count,
                               bool with_vectors) {
   const Eigen::Index n = K.rows();
   if (K.cols() != n || D.rows() != n || D.cols() != n || M.rows() != n || M.cols() != n) {
@@ -153,8 +153,8 @@ ComplexModes SolveDampedModes(const MatX& K, const MatX& D, const MatX& M, int c
   std::stable_sort(kept.begin(), kept.end(), [&](Eigen::Index a, Eigen::Index b) {
     return std::abs(all_values[a]) < std::abs(all_values[b]);
   });
-  kept.resize(std::min(kept.size(), static_cast<size_t>(std::max(count, 0))));
-  const auto m = static_cast<Eigen::Index>(kept.size());
+  kept.resize(std::min<Index>(std::ssize(kept), std::max<Index>(count, 0)));
+  const Index m = std::ssize(kept);
   ComplexModes modes;
   modes.eigenvalues.resize(m);
   if (with_vectors) modes.vectors.resize(n, m);
@@ -162,9 +162,9 @@ ComplexModes SolveDampedModes(const MatX& K, const MatX& D, const MatX& M, int c
   modes.damped_frequencies.resize(m);
   modes.damping_ratios.resize(m);
   for (Eigen::Index j = 0; j < m; ++j) {
-    const std::complex<double> s = all_values[kept[static_cast<size_t>(j)]];
+    const std::complex<double> s = all_values[kept[j]];
     if (with_vectors) {
-      Eigen::VectorXcd x = solver.vectors.col(kept[static_cast<size_t>(j)]).head(n);
+      Eigen::VectorXcd x = solver.vectors.col(kept[j]).head(n);
       Eigen::Index largest = 0;
       x.cwiseAbs().maxCoeff(&largest);
       x *= std::abs(x[largest]) / x[largest];  // largest entry real and positive

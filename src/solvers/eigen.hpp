@@ -34,13 +34,13 @@ struct ModalResult {
 // modes. Dense at n ≤ kDenseModalLimit, Lanczos above. count is clamped to n. Throws SolverError
 // if M is not positive definite or the iteration does not converge, LogicError on bad sizes or
 // unsymmetric matrices.
-ModalResult SolveModes(const SparseMat& K, const SparseMat& M, int count, double shift = 0.0);
+ModalResult SolveModes(const SparseMat& K, const SparseMat& M, Index count, double shift = 0.0);
 
 // The two paths of SolveModes, callable directly (the Lanczos one falls back to dense when count
 // is close to n).
-ModalResult SolveModesDense(const SparseMat& K, const SparseMat& M, int count,
+ModalResult SolveModesDense(const SparseMat& K, const SparseMat& M, Index count,
                             double shift = 0.0);
-ModalResult SolveModesLanczos(const SparseMat& K, const SparseMat& M, int count,
+ModalResult SolveModesLanczos(const SparseMat& K, const SparseMat& M, Index count,
                               double shift = 0.0);
 
 // Natural frequencies (Hz) of eigenvalues ω² (negative round-off values give 0).
@@ -60,12 +60,12 @@ struct ComplexModes {
 // [[0, I], [−M⁻¹K, −M⁻¹D]] (dense, O(n³)). D need not be symmetric. Throws SolverError if M is
 // not positive definite or the eigen solver fails.
 ComplexModes SolveDampedModes(const SparseMat& K, const SparseMat& D, const SparseMat& M,
-                              int count);
+                              Index count);
 
 // The same on dense matrices (e.g. a problem projected on a modal basis: r × r); D may be
 // non-symmetric (damping plus a skew gyroscopic Ω G). Without vectors (`vectors` left empty) when
 // with_vectors is false: about three times faster.
-ComplexModes SolveDampedModes(const MatX& K, const MatX& D, const MatX& M, int count,
+ComplexModes SolveDampedModes(const MatX& K, const MatX& D, const MatX& M, Index count,
                               bool with_vectors = true);
 
 }  // namespace drillflex::solvers

@@ -121,11 +121,11 @@ void RefineByRayleighQuotient(const SparseMat& K, const SparseMat& M, LanczosPai
 
 }  // namespace
 
-ModalResult SolveModesLanczos(const SparseMat& K, const SparseMat& M, int count, double shift) {
+ModalResult SolveModesLanczos(const SparseMat& K, const SparseMat& M, Index count, double shift) {
   const Eigen::Index n = K.rows();
   detail::CheckSymmetric(K, n, "K");
   detail::CheckSymmetric(M, n, "M");
-  const Eigen::Index wanted = std::min<Eigen::Index>(std::max(count, 0), n);
+  const Eigen::Index wanted = std::min<Eigen::Index>(std::max<Index>(count, 0), n);
   if (wanted == 0) return {VecX(0), MatX(n, 0)};
   // Spectra needs nev < ncv ≤ n; near-full spectra are a dense job anyway.
   if (3 * wanted >= n) return SolveModesDense(K, M, count, shift);

@@ -43,7 +43,7 @@ constexpr double kCorrectionShift = 1e3;
 // a·p: a penalty term's gradient along p.
 double Along(const PenaltyTerm& term, const VecX& p) {
   double sum = 0.0;
-  for (std::size_t j = 0; j < term.indices.size(); ++j) sum += term.gradient[j] * p[term.indices[j]];
+  for (Index j = 0; j < std::ssize(term.indices); ++j) sum += term.gradient[j] * p[term.indices[j]];
   return sum;
 }
 
@@ -375,7 +375,7 @@ Step Minimizer::ContactStep(const SparseMat& k, ShiftedCholesky& plain, const Ve
   if (terms.empty()) return Subproblem(plain, g, radius, result);
   const std::size_t count = terms.size();
   auto add = [](const PenaltyTerm& term, double scale, VecX& v) {
-    for (std::size_t j = 0; j < term.indices.size(); ++j) v[term.indices[j]] += scale * term.gradient[j];
+    for (Index j = 0; j < std::ssize(term.indices); ++j) v[term.indices[j]] += scale * term.gradient[j];
   };
   std::vector<char> touching(count), active(count);
   VecX smooth = g;  // g without the touching contacts' k δ a

@@ -39,7 +39,7 @@ GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Problem& problem, c
 }
 
 void GeneralizedAlphaIntegrator::Initialize(double time, const VecX& q, const VecX& v) {
-  const int n = problem_.num_velocities();
+  const Index n = problem_.num_velocities();
   if (q.size() != problem_.num_positions() || v.size() != n) {
     throw LogicError("generalized-α: the initial q or v has the wrong size");
   }
@@ -66,7 +66,7 @@ void GeneralizedAlphaIntegrator::Initialize(double time, const VecX& q, const Ve
 }
 
 void GeneralizedAlphaIntegrator::Initialize(const GeneralizedAlphaState& state) {
-  const int n = problem_.num_velocities();
+  const Index n = problem_.num_velocities();
   if (state.q.size() != problem_.num_positions() || state.v.size() != n || state.acceleration.size() != n ||
       state.pseudo_acceleration.size() != n) {
     throw LogicError("generalized-α: the initial state has the wrong sizes");

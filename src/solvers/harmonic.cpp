@@ -49,7 +49,7 @@ bool AllFinite(const SparseMat& matrix) {
 // The values of `matrix` laid onto the (sorted, compressed) pattern `pattern`, which must contain
 // every entry of `matrix`.
 std::vector<double> ValuesOnPattern(const SparseMat& matrix, const SparseMat& pattern) {
-  std::vector<double> values(static_cast<std::size_t>(pattern.nonZeros()), 0.0);
+  std::vector<double> values(pattern.nonZeros(), 0.0);
   if (matrix.size() == 0) return values;
   for (Eigen::Index col = 0; col < pattern.outerSize(); ++col) {
     Eigen::Index slot = pattern.outerIndexPtr()[col];
@@ -59,7 +59,7 @@ std::vector<double> ValuesOnPattern(const SparseMat& matrix, const SparseMat& pa
       if (slot == end || pattern.innerIndexPtr()[slot] != it.row()) {
         throw LogicError("HarmonicSolver: an entry lies outside the union pattern");
       }
-      values[static_cast<std::size_t>(slot)] += it.value();
+      values[slot] += it.value();
     }
   }
   return values;
@@ -73,7 +73,7 @@ struct MatricesOnStorage {
   std::vector<double> stiffness, mass, damping, gyroscopic;  // empty D, G: none
   // The frequency terms: those with entries on more than a quarter of the pattern as values on the
   // storage (dense_terms), the others as their nonzeros (place in the storage, value) in `terms`.
-  std::vector<std::vector<std::pair<std::size_t, double>>> terms;
+  std::vector<std::vector<std::pair<Index, double>>> terms;
   std::vector<std::vector<double>> dense_terms;
 };
 
@@ -136,13 +136,13 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, std::vector<SparseMat> terms
   w.matrix.makeCompressed();
   if (!options.block_starts.empty()) w.blocks.Analyze(pattern, options.block_starts);
   // A pattern slot's place in the storage the values are assembled in.
-  const std::vector<std::size_t>* offsets = w.blocks.analyzed() ? &w.blocks.slot_offsets() : nullptr;
-  const std::size_t storage = offsets ? w.blocks.storage_size() : static_cast<std::size_t>(pattern.nonZeros());
+  const std::vector<Index>* offsets = w.blocks.analyzed() ? &w.blocks.slot_offsets() : nullptr;
+  const Index storage = offsets ? w.blocks.storage_size() : pattern.nonZeros();
   auto on_storage = [&](const SparseMat& matrix) {
     std::vector<double> values = ValuesOnPattern(matrix, pattern);
     if (!offsets) return values;
     std::vector<double> placed(storage, 0.0);
-    for (std::size_t slot = 0; slot < values.size(); ++slot) placed[(*offsets)[slot]] = values[slot];
+    for (Index slot = 0; slot < std::ssize(values); ++slot) placed[(*offsets)[slot]] = values[slot];
     return placed;
   };
   MatricesOnStorage& m = w.on_storage;
@@ -158,7 +158,7 @@ HarmonicSolver::HarmonicSolver(LinearSystem system, std::vector<SparseMat> terms
       continue;
     }
     const std::vector<double> values = ValuesOnPattern(term, pattern);
-    for (std::size_t slot = 0; slot < values.size(); ++slot) {
+    for (Index slot = 0; slot < std::ssize(values); ++slot) {
       if (values[slot] != 0.0) nonzeros.emplace_back(offsets ? (*offsets)[slot] : slot, values[slot]);
     }
   }
@@ -204,7 +204,7 @@ double BackwardError(double matrix_norm, const ComplexMat& loads, const ComplexM
 void AssembleOnStorage(const MatricesOnStorage& m, double frequency, double rotor_speed,
                        const std::vector<FrequencyTermCoefficients>& terms, Complex* values, Eigen::ArrayXd& imaginary) {
   const double omega2 = frequency * frequency;
-  const auto entries = static_cast<Eigen::Index>(m.stiffness.size());
+  const Index entries = std::ssize(m.stiffness);
   using Strided = Eigen::Map<Eigen::ArrayXd, 0, Eigen::InnerStride<2>>;  // the real or imaginary parts
   Strided real(reinterpret_cast<double*>(values), entries);
   auto array = [entries](const std::vector<double>& v) { return Eigen::Map<const Eigen::ArrayXd>(v.data(), entries); };
@@ -212,13 +212,13 @@ void AssembleOnStorage(const MatricesOnStorage& m, double frequency, double roto
   real = array(m.stiffness) - omega2 * array(m.mass);
   if (!m.damping.empty()) imaginary += frequency * array(m.damping);
   if (!m.gyroscopic.empty() && rotor_speed != 0.0) imaginary += frequency * rotor_speed * array(m.gyroscopic);
-  for (std::size_t t = 0; t < terms.size(); ++t) {
+  for (Index t = 0; t < std::ssize(terms); ++t) {
     if (m.dense_terms[t].empty()) continue;
     if (terms[t].mass != 0.0) real -= omega2 * terms[t].mass * array(m.dense_terms[t]);
     if (terms[t].damping != 0.0) imaginary += frequency * terms[t].damping * array(m.dense_terms[t]);
   }
   Strided(reinterpret_cast<double*>(values) + 1, entries) = imaginary;
-  for (std::size_t t = 0; t < terms.size(); ++t) {
+  for (Index t = 0; t < std::ssize(terms); ++t) {
     const Complex factor(-omega2 * terms[t].mass, frequency * terms[t].damping);
     if (factor == Complex(0.0, 0.0)) continue;
     for (const auto& [at, value] : m.terms[t]) values[at] += factor * value;
@@ -272,9 +272,9 @@ ComplexMat HarmonicSolver::Solve(double frequency, const ComplexMat& loads, doub
       if (error <= kBlockBackwardErrorTolerance) return x;
     }
     ++w.block_fallbacks;  // a small pivot or a missed backward error: the general LU decides
-    const std::vector<std::size_t>& offsets = w.blocks.slot_offsets();
+    const std::vector<Index>& offsets = w.blocks.slot_offsets();
     Complex* pattern_values = w.matrix.valuePtr();
-    for (std::size_t slot = 0; slot < offsets.size(); ++slot) pattern_values[slot] = values[offsets[slot]];
+    for (Index slot = 0; slot < std::ssize(offsets); ++slot) pattern_values[slot] = values[offsets[slot]];
   }
   double largest2 = 0.0;  // max |a_ij|² (std::norm: no hypot per entry and frequency)
   for (Eigen::Index k = 0; k < w.matrix.nonZeros(); ++k) largest2 = std::max(largest2, std::norm(w.matrix.valuePtr()[k]));
@@ -310,8 +310,8 @@ void SweepHarmonicResponse(const LinearSystem& system, const HarmonicSweep& swee
   }
   if (!loads || !sink) throw LogicError("SweepHarmonicResponse: loads and sink must be set");
   HarmonicSolver solver(system, options);
-  for (std::size_t j = 0; j < sweep.frequencies.size(); ++j) {
-    const auto point = static_cast<Eigen::Index>(j);
+  for (Index j = 0; j < std::ssize(sweep.frequencies); ++j) {
+    const Index point = j;
     const double frequency = sweep.frequencies[j];
     const double rotor_speed = sweep.rotor_speeds.empty() ? 0.0 : sweep.rotor_speeds[j];
     const ComplexMat response = solver.Solve(frequency, loads(point, frequency), rotor_speed);

@@ -16,8 +16,8 @@ void IterationMatrixLu::SetBlocks(std::vector<Eigen::Index> starts) {
 }
 
 bool IterationMatrixLu::SameBlockPattern(const SparseMat& matrix) const {
-  if (!analysed_ || !matrix.isCompressed() || matrix.rows() + 1 != static_cast<Eigen::Index>(analysed_outer_.size()) ||
-      matrix.nonZeros() != static_cast<Eigen::Index>(analysed_inner_.size())) {
+  if (!analysed_ || !matrix.isCompressed() || matrix.rows() + 1 != std::ssize(analysed_outer_) ||
+      matrix.nonZeros() != std::ssize(analysed_inner_)) {
     return false;
   }
   return std::equal(analysed_outer_.begin(), analysed_outer_.end(), matrix.outerIndexPtr()) &&

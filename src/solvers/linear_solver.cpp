@@ -40,7 +40,7 @@ bool IsNumericallySymmetric(const SparseMat& matrix, double norm) {
       if (i == j) continue;
       const int* begin = inner + outer[i];
       const int* end = inner + outer[i + 1];
-      const int* found = std::lower_bound(begin, end, static_cast<int>(j));
+      const int* found = std::lower_bound(begin, end, j);
       const double mirror = (found != end && *found == j) ? values[found - inner] : 0.0;
       const double difference = values[k] - mirror;
       asymmetry += difference * difference;

@@ -33,7 +33,7 @@ std::string LargestEntry(const StaticProblem& problem, const VecX& residual) {
   if (residual.size() == 0 || !residual.allFinite()) return "no finite residual";
   Eigen::Index row = 0;
   const double largest = residual.cwiseAbs().maxCoeff(&row);
-  return fmt::format("largest {:.3e} at {}", largest, problem.DescribeCoordinate(static_cast<int>(row)));
+  return fmt::format("largest {:.3e} at {}", largest, problem.DescribeCoordinate(row));
 }
 
 // Newton iterations at the load factor currently set on the problem.
@@ -472,11 +472,11 @@ std::string FailureMessage(const StepOutcome& outcome, const FailurePlace& place
 
 }  // namespace
 
-StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
+NewtonResult SolveStatic(StaticProblem& problem, const VecX& q_start,
                          const NewtonOptions& options) {
   const profile::Scope scope("static: Newton");
   CheckArguments(problem, q_start, options);
-  StaticResult result;
+  NewtonResult result;
   result.force_scale = DetermineForceScale(problem, q_start, options);
   // The tolerance, but never below the residual's round-off floor: a residual at the floor is as
   // small as the state can make it.

@@ -83,17 +83,24 @@ struct NewtonOptions {
   std::function<void(const std::string&)> log;
 };
 
-struct StaticResult {
-  VecX q;                     // the equilibrium (or, if not converged, the last converged state)
+// What a static solve found, whoever found it: the state and how far the search went. Newton's own
+// result (NewtonResult) and the static analysis's (analyses::StaticOutcome, then analyses::StaticResult
+// with the quantities derived from the state) extend it; none repeats its fields.
+struct StaticSolution {
   bool converged = false;
-  int iterations = 0;         // Newton iterations over all load steps, failed ones included
-  double residual_norm = 0.0; // |R|₂ at q (N)
+  VecX q;                      // the equilibrium (or, if not converged, where the search stopped)
+  int iterations = 0;          // iterations (Newton: over all load steps, failed ones included)
+  int load_steps = 0;          // accepted load steps
+  double residual_norm = 0.0;  // |R|₂ at q (N)
+};
+
+// Newton's raw result: the solution, and the solver's own account of it.
+struct NewtonResult : StaticSolution {
   double force_scale = 0.0;   // the scale the tolerance was relative to (N)
   // The residual tolerance applied (N): residual_tolerance × force_scale, or the residual's
   // round-off floor where that is larger (StaticProblem::StateResolution).
   double tolerance = 0.0;
   double load_factor = 0.0;   // λ of q (1 when converged)
-  int load_steps = 0;         // accepted load steps
   int rejected_steps = 0;     // load steps that failed and were cut
   std::vector<double> residual_history;  // |R|₂ at each iteration of the last accepted step
 };
@@ -103,7 +110,7 @@ struct StaticResult {
 // the last λ tried). Throws SolverError on failure (unless throw_on_failure is false) and never
 // returns non-finite values. Uses CanReuseIterationMatrix(): a reusable matrix is factorized once
 // per load step and refreshed only when a step along it makes no progress.
-StaticResult SolveStatic(StaticProblem& problem, const VecX& q_start,
+NewtonResult SolveStatic(StaticProblem& problem, const VecX& q_start,
                          const NewtonOptions& options = {});
 
 }  // namespace drillflex::solvers

@@ -11,7 +11,7 @@
 namespace drillflex::solvers {
 namespace {
 
-void CheckSize(const VecX& x, int expected, const char* name) {
+void CheckSize(const VecX& x, Index expected, const char* name) {
   if (x.size() != expected) {
     std::string message = "FiniteDifferenceIterationMatrix: ";
     message.append(name).append(" has size ").append(std::to_string(x.size()));
@@ -23,10 +23,10 @@ void CheckSize(const VecX& x, int expected, const char* name) {
 // Adds coefficient · (R(x + h e_j) − R(x − h e_j)) / (2h) for every column j to `dense`,
 // where `evaluate(j, step)` returns R with the j-th variable perturbed by `step`.
 template <typename Evaluate>
-void AddCentralDifferences(int n, double coefficient, const Evaluate& evaluate,
+void AddCentralDifferences(Index n, double coefficient, const Evaluate& evaluate,
                            const std::vector<double>& steps, MatX& dense) {
-  for (int j = 0; j < n; ++j) {
-    const double step = steps[static_cast<size_t>(j)];
+  for (Index j = 0; j < n; ++j) {
+    const double step = steps[j];
     const VecX plus = evaluate(j, step);
     const VecX minus = evaluate(j, -step);
     dense.col(j) += (coefficient / (2.0 * step)) * (plus - minus);
@@ -34,9 +34,9 @@ void AddCentralDifferences(int n, double coefficient, const Evaluate& evaluate,
 }
 
 std::vector<double> RelativeSteps(const VecX& x, double h) {
-  std::vector<double> steps(static_cast<size_t>(x.size()));
+  std::vector<double> steps(x.size());
   for (Eigen::Index j = 0; j < x.size(); ++j) {
-    steps[static_cast<size_t>(j)] = h * std::max(1.0, std::abs(x[j]));
+    steps[j] = h * std::max(1.0, std::abs(x[j]));
   }
   return steps;
 }
@@ -46,16 +46,16 @@ std::vector<double> RelativeSteps(const VecX& x, double h) {
 SparseMat FiniteDifferenceIterationMatrix(const Problem& problem, double t, const VecX& q,
                                           const VecX& v, const VecX& a, double cK, double cD,
                                           double cM, double h) {
-  const int n = problem.num_velocities();
+  const Index n = problem.num_velocities();
   CheckSize(q, problem.num_positions(), "q");
   CheckSize(v, n, "v");
   CheckSize(a, n, "a");
   MatX dense = MatX::Zero(n, n);
   if (cK != 0.0) {
-    const std::vector<double> steps(static_cast<size_t>(n), h);
+    const std::vector<double> steps(n, h);
     AddCentralDifferences(
         n, cK,
-        [&](int j, double step) {
+        [&](Index j, double step) {
           VecX dv = VecX::Zero(n);
           dv[j] = step;
           return problem.Residual(t, problem.Increment(q, dv), v, a);
@@ -65,7 +65,7 @@ SparseMat FiniteDifferenceIterationMatrix(const Problem& problem, double t, cons
   if (cD != 0.0) {
     AddCentralDifferences(
         n, cD,
-        [&](int j, double step) {
+        [&](Index j, double step) {
           VecX perturbed = v;
           perturbed[j] += step;
           return problem.Residual(t, q, perturbed, a);
@@ -75,7 +75,7 @@ SparseMat FiniteDifferenceIterationMatrix(const Problem& problem, double t, cons
   if (cM != 0.0) {
     AddCentralDifferences(
         n, cM,
-        [&](int j, double step) {
+        [&](Index j, double step) {
           VecX perturbed = a;
           perturbed[j] += step;
           return problem.Residual(t, q, v, perturbed);

@@ -23,7 +23,7 @@ namespace drillflex::solvers {
 struct PenaltyTerm {
   double value = 0.0;      // δ at the state (< 0: the gap), m
   double stiffness = 0.0;  // k, N/m
-  std::vector<int> indices;       // the coordinates of v the gradient covers
+  std::vector<Index> indices;     // the coordinates of v the gradient covers
   std::vector<double> gradient;   // ∂δ/∂v there, one per index
 };
 
@@ -32,9 +32,9 @@ class Problem {
   virtual ~Problem() = default;
 
   // Size of the position storage q (e.g. 7 per free rigid body: 3 translations + a quaternion).
-  virtual int num_positions() const = 0;
+  virtual Index num_positions() const = 0;
   // Size of v, a and of a position increment dv (e.g. 6 per free rigid body).
-  virtual int num_velocities() const = 0;
+  virtual Index num_velocities() const = 0;
 
   // q ⊕ dv: applies the tangent-space increment dv to q (rotation-aware, e.g. so3::Compose for
   // quaternions; plain addition for Euclidean coordinates).
@@ -98,7 +98,7 @@ class StaticProblem : public Problem {
 
   // Where coordinate `index` of v (or a residual row) sits in the problem, for messages: e.g. the
   // body and its distance from the bit. Default: the index alone.
-  virtual std::string DescribeCoordinate(int index) const { return "coordinate " + std::to_string(index); }
+  virtual std::string DescribeCoordinate(Index index) const { return "coordinate " + std::to_string(index); }
 
   // Π(to) − Π(from), J: the change of the total potential energy between two states at the present
   // load factor, for a problem whose residual (v = a = 0) is the gradient of Π along Increment

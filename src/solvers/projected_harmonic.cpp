@@ -31,13 +31,13 @@ double OrthogonalizeInMass(const MatX& basis, Eigen::Index filled, const SparseM
 // Vᵀ A V over the rows where A has entries (an annulus group's matrix lives on its bodies only).
 MatX Project(const SparseMat& matrix, const MatX& basis) {
   if (matrix.size() == 0) return MatX();
-  std::vector<bool> used(static_cast<std::size_t>(matrix.rows()), false);
+  std::vector<bool> used(matrix.rows(), false);
   for (Eigen::Index col = 0; col < matrix.outerSize(); ++col) {
-    for (SparseMat::InnerIterator it(matrix, col); it; ++it) used[static_cast<std::size_t>(it.row())] = true;
+    for (SparseMat::InnerIterator it(matrix, col); it; ++it) used[it.row()] = true;
   }
   std::vector<Eigen::Index> rows;
-  for (std::size_t i = 0; i < used.size(); ++i) {
-    if (used[i]) rows.push_back(static_cast<Eigen::Index>(i));
+  for (Index i = 0; i < std::ssize(used); ++i) {
+    if (used[i]) rows.push_back(i);
   }
   const MatX product = matrix * basis;
   return basis(rows, Eigen::all).transpose() * product(rows, Eigen::all);
@@ -91,7 +91,7 @@ std::vector<Eigen::Index> PatternsAt(const KrylovBasisOptions& options, double o
       columns.push_back(c);
       continue;
     }
-    const FrequencyBand& band = options.pattern_bands[static_cast<std::size_t>(c)];
+    const FrequencyBand& band = options.pattern_bands[c];
     const bool single = !(band.highest > band.lowest);
     const bool near = single ? std::abs(omega - band.lowest) <= 1e-9 * band.lowest
                              : omega >= band.lowest - step && omega <= band.highest + step;
@@ -113,7 +113,7 @@ KrylovBasis BuildKrylovBasis(const SparseMat& K, const SparseMat& M, const MatX&
       options.lowest_frequency > options.highest_frequency || options.shifts < 1 || options.depth < 1) {
     throw LogicError("BuildKrylovBasis: needs 0 <= lowest <= highest frequency, highest > 0, shifts and depth >= 1");
   }
-  if (!options.pattern_bands.empty() && static_cast<Eigen::Index>(options.pattern_bands.size()) != load_patterns.cols()) {
+  if (!options.pattern_bands.empty() && std::ssize(options.pattern_bands) != load_patterns.cols()) {
     throw LogicError(fmt::format("BuildKrylovBasis: {} pattern bands for {} load patterns", options.pattern_bands.size(),
                                  load_patterns.cols()));
   }
@@ -185,7 +185,7 @@ ProjectedHarmonicSolver::ProjectedHarmonicSolver(const LinearSystem& system, con
   }
   // The Ritz modes of (K_r, M_ref,r).
   MatX reference_mass = mass_;
-  for (std::size_t t = 0; t < reference.size(); ++t) reference_mass += reference[t].mass * terms_[t];
+  for (Index t = 0; t < std::ssize(reference); ++t) reference_mass += reference[t].mass * terms_[t];
   const DenseEigenpairs ritz = GeneralizedSymmetricEigen(0.5 * (stiffness_ + stiffness_.transpose()),
                                                          0.5 * (reference_mass + reference_mass.transpose()));
   if (!ritz.converged) {
@@ -209,7 +209,7 @@ Eigen::MatrixXcd ProjectedHarmonicSolver::Assemble(double frequency, double roto
   reduced.imag().setZero();
   if (damping_.size() > 0) reduced.imag() += frequency * damping_;
   if (gyroscopic_.size() > 0 && rotor_speed != 0.0) reduced.imag() += (frequency * rotor_speed) * gyroscopic_;
-  for (std::size_t t = 0; t < terms.size(); ++t) {
+  for (Index t = 0; t < std::ssize(terms); ++t) {
     if (terms[t].mass != 0.0) reduced.real() -= (omega2 * terms[t].mass) * terms_[t];
     if (terms[t].damping != 0.0) reduced.imag() += (frequency * terms[t].damping) * terms_[t];
   }
@@ -285,7 +285,7 @@ ComplexMat ProjectedHarmonicSolver::Solve(double frequency, const ComplexMat& lo
   }
   Eigen::MatrixXcd y;
   bool converged = false;
-  if (2 * near.size() <= static_cast<std::size_t>(reduced.rows())) {
+  if (2 * std::ssize(near) <= reduced.rows()) {
     const NearFarSplit split(reduced, std::move(near), std::move(far));
     if (split.Regular()) {
       y = split.Apply(reduced_loads);

@@ -43,8 +43,7 @@ int EntryIndex(const SparseMat& matrix, int row, int column) {
 }
 
 bool SamePattern(const SparseMat& a, const std::vector<int>& outer, const std::vector<int>& inner) {
-  return a.isCompressed() && static_cast<std::size_t>(a.outerSize() + 1) == outer.size() &&
-         static_cast<std::size_t>(a.nonZeros()) == inner.size() &&
+  return a.isCompressed() && a.outerSize() + 1 == std::ssize(outer) && a.nonZeros() == std::ssize(inner) &&
          std::equal(outer.begin(), outer.end(), a.outerIndexPtr()) &&
          std::equal(inner.begin(), inner.end(), a.innerIndexPtr());
 }
@@ -82,13 +81,13 @@ void ShiftedCholesky::Build(const SparseMat& stiffness) {
   metric_.makeCompressed();
   if (stiffness_.nonZeros() != metric_.nonZeros()) throw LogicError("ShiftedCholesky: the patterns differ");
   original_.assign(stiffness_.valuePtr(), stiffness_.valuePtr() + stiffness_.nonZeros());
-  from_entry_.assign(static_cast<std::size_t>(stiffness_.nonZeros()), -1);
-  from_transposed_.assign(static_cast<std::size_t>(stiffness_.nonZeros()), -1);
+  from_entry_.assign(stiffness_.nonZeros(), -1);
+  from_transposed_.assign(stiffness_.nonZeros(), -1);
   for (int j = 0; j < stiffness_.outerSize(); ++j) {
     for (int k = stiffness_.outerIndexPtr()[j]; k < stiffness_.outerIndexPtr()[j + 1]; ++k) {
       const int i = stiffness_.innerIndexPtr()[k];
-      from_entry_[static_cast<std::size_t>(k)] = EntryIndex(first, i, j);
-      from_transposed_[static_cast<std::size_t>(k)] = EntryIndex(first, j, i);
+      from_entry_[k] = EntryIndex(first, i, j);
+      from_transposed_[k] = EntryIndex(first, j, i);
     }
   }
   banded_ = FactorizeInOwnOrder(stiffness_);
@@ -115,7 +114,7 @@ void ShiftedCholesky::SetStiffness(const SparseMat& stiffness) {
   }
   const double* h = stiffness.valuePtr();
   double* out = stiffness_.valuePtr();
-  for (std::size_t k = 0; k < from_entry_.size(); ++k) {
+  for (Index k = 0; k < std::ssize(from_entry_); ++k) {
     const int a = from_entry_[k], b = from_transposed_[k];
     out[k] = 0.5 * ((a >= 0 ? h[a] : 0.0) + (b >= 0 ? h[b] : 0.0));
   }
@@ -144,7 +143,7 @@ bool ShiftedCholesky::Factorize(double shift) {
   const double* m = metric_.valuePtr();
   const int* outer = stiffness_.outerIndexPtr();
   const int* inner = stiffness_.innerIndexPtr();
-  const int n = static_cast<int>(stiffness_.rows());
+  const int n = static_cast<int>(stiffness_.rows());  // LAPACK's int
   bool ok = false;
   if (by_blocks_) {
     ok = block_factors_.Factorize(block_stiffness_, &block_metric_, shift, metric_coupled_);
@@ -183,14 +182,14 @@ VecX ShiftedCholesky::Solve(const VecX& rhs) const {
   }
   if (!banded_) return factors_->amd.solve(rhs);
   VecX x = rhs;
-  const int n = static_cast<int>(x.size()), ldab = half_bandwidth_ + 1, one = 1;
+  const int n = static_cast<int>(x.size()), ldab = half_bandwidth_ + 1, one = 1;  // LAPACK's int
   int info = 0;
   dpbtrs_("L", &n, &half_bandwidth_, &one, band_.data(), &ldab, x.data(), &n, &info, 1);
   if (info != 0) throw LogicError(fmt::format("ShiftedCholesky::Solve: dpbtrs info {}", info));
   return x;
 }
 
-void ShiftedCholesky::AddOuterProduct(const std::vector<int>& indices, const std::vector<double>& values,
+void ShiftedCholesky::AddOuterProduct(const std::vector<Index>& indices, const std::vector<double>& values,
                                       double scale) {
   factorized_ = false;
   if (by_blocks_) {
@@ -199,12 +198,12 @@ void ShiftedCholesky::AddOuterProduct(const std::vector<int>& indices, const std
     block_stiffness_.AddOuterProduct(indices, values, scale);
     return;
   }
-  for (std::size_t j = 0; j < indices.size(); ++j) {
-    for (std::size_t i = 0; i < indices.size(); ++i) {
+  for (Index j = 0; j < std::ssize(indices); ++j) {
+    for (Index i = 0; i < std::ssize(indices); ++i) {
       stiffness_.coeffRef(indices[i], indices[j]) += scale * values[i] * values[j];
     }
   }
-  if (stiffness_.nonZeros() != static_cast<Eigen::Index>(original_.size()) || !stiffness_.isCompressed()) {
+  if (stiffness_.nonZeros() != std::ssize(original_) || !stiffness_.isCompressed()) {
     throw LogicError("ShiftedCholesky::AddOuterProduct: an entry outside the pattern");
   }
   factorized_ = false;

@@ -45,7 +45,7 @@ class ShiftedCholesky {
 
   // H ← H + scale a aᵀ, a sparse (`indices`, `values`) within H's pattern (a body's dense block):
   // a contact's stiffness k a aᵀ switched on or off. Drops the factorization held.
-  void AddOuterProduct(const std::vector<int>& indices, const std::vector<double>& values, double scale);
+  void AddOuterProduct(const std::vector<Index>& indices, const std::vector<double>& values, double scale);
   // H back to what the constructor was given. Drops the factorization held.
   void RestoreStiffness();
 

@@ -12,7 +12,7 @@
 #include <complex>
 #include <vector>
 
-#include <Eigen/Core>
+#include "core/types.hpp"
 
 namespace drillflex::solvers {
 
@@ -26,21 +26,21 @@ class SmallLu {
   template <typename Derived>
   void compute(const Eigen::MatrixBase<Derived>& a) {
     lu_ = a;
-    const Eigen::Index n = lu_.rows();
-    swaps_.resize(static_cast<std::size_t>(n));
-    for (Eigen::Index k = 0; k < n; ++k) {
-      Eigen::Index pivot = k;
+    const Index n = lu_.rows();
+    swaps_.resize(n);
+    for (Index k = 0; k < n; ++k) {
+      Index pivot = k;
       double largest = Magnitude(lu_(k, k));
-      for (Eigen::Index i = k + 1; i < n; ++i) {
+      for (Index i = k + 1; i < n; ++i) {
         const double size = Magnitude(lu_(i, k));
         if (size > largest) {
           largest = size;
           pivot = i;
         }
       }
-      swaps_[static_cast<std::size_t>(k)] = pivot;
+      swaps_[k] = pivot;
       if (pivot != k) lu_.row(k).swap(lu_.row(pivot));
-      const Eigen::Index rest = n - k - 1;
+      const Index rest = n - k - 1;
       if (largest == 0.0 || rest == 0) continue;
       lu_.col(k).tail(rest) *= Scalar(1.0) / lu_(k, k);
       lu_.bottomRightCorner(rest, rest).noalias() -= lu_.col(k).tail(rest) * lu_.row(k).tail(rest);
@@ -53,9 +53,8 @@ class SmallLu {
   // B ← A⁻¹ B (B a matrix or a vector, or a block of one).
   template <typename Target>
   void solveInPlace(Target&& b) const {
-    for (std::size_t k = 0; k < swaps_.size(); ++k) {
-      const auto row = static_cast<Eigen::Index>(k);
-      if (swaps_[k] != row) b.row(row).swap(b.row(swaps_[k]));
+    for (Index k = 0; k < std::ssize(swaps_); ++k) {
+      if (swaps_[k] != k) b.row(k).swap(b.row(swaps_[k]));
     }
     lu_.template triangularView<Eigen::UnitLower>().solveInPlace(b);
     lu_.template triangularView<Eigen::Upper>().solveInPlace(b);
@@ -74,7 +73,7 @@ class SmallLu {
   static double Magnitude(const std::complex<double>& z) { return std::abs(z.real()) + std::abs(z.imag()); }
 
   Matrix lu_;
-  std::vector<Eigen::Index> swaps_;  // row k was exchanged with row swaps_[k] at step k
+  std::vector<Index> swaps_;  // row k was exchanged with row swaps_[k] at step k
 };
 
 using SmallComplexLu = SmallLu<std::complex<double>>;

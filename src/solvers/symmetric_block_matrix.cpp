@@ -10,45 +10,45 @@
 namespace drillflex::solvers {
 
 using BlockMap = Eigen::Map<const MatX>;
-constexpr std::size_t kOutside = std::numeric_limits<std::size_t>::max();
+constexpr Index kOutside = -1;
 constexpr std::uint32_t kNotRead = std::numeric_limits<std::uint32_t>::max();
 
-bool SymmetricBlockMatrix::Analyze(const SparseMat& pattern, const std::vector<Eigen::Index>& starts,
+bool SymmetricBlockMatrix::Analyze(const SparseMat& pattern, const std::vector<Index>& starts,
                                    bool symmetrize) {
   analysed_ = false;
-  const Eigen::Index n = pattern.rows();
+  const Index n = pattern.rows();
   if (!pattern.isCompressed() || pattern.cols() != n || starts.size() < 2 || starts.front() != 0 ||
       starts.back() != n || !std::is_sorted(starts.begin(), starts.end())) {
     return false;
   }
   starts_ = starts;
-  const std::size_t blocks = starts.size() - 1;
-  block_of_.assign(static_cast<std::size_t>(n), 0);
+  const Index blocks = std::ssize(starts) - 1;
+  block_of_.assign(n, 0);
   diagonal_.resize(blocks);
   below_.resize(blocks > 0 ? blocks - 1 : 0);
-  std::size_t offset = 0;
-  for (std::size_t k = 0; k < blocks; ++k) {
+  Index offset = 0;
+  for (Index k = 0; k < blocks; ++k) {
     if (block_size(k) <= 0) return false;
-    for (Eigen::Index i = starts[k]; i < starts[k + 1]; ++i) block_of_[static_cast<std::size_t>(i)] = k;
+    for (Index i = starts[k]; i < starts[k + 1]; ++i) block_of_[i] = k;
     diagonal_[k] = offset;
-    offset += static_cast<std::size_t>(block_size(k) * block_size(k));
+    offset += block_size(k) * block_size(k);
     if (k + 1 < blocks) {
       below_[k] = offset;
-      offset += static_cast<std::size_t>(block_size(k + 1) * block_size(k));
+      offset += block_size(k + 1) * block_size(k);
     }
   }
-  if (offset >= kNotRead || static_cast<std::size_t>(pattern.nonZeros()) >= kNotRead) return false;
+  if (offset >= kNotRead || pattern.nonZeros() >= kNotRead) return false;
   values_.assign(offset, 0.0);
   symmetrize_ = symmetrize;
-  slot_.assign(static_cast<std::size_t>(pattern.nonZeros()), kNotRead);
+  slot_.assign(pattern.nonZeros(), kNotRead);
   diagonal_entries_.clear();
-  for (Eigen::Index j = 0; j < n; ++j) {
+  for (Index j = 0; j < n; ++j) {
     for (int p = pattern.outerIndexPtr()[j]; p < pattern.outerIndexPtr()[j + 1]; ++p) {
-      const Eigen::Index i = pattern.innerIndexPtr()[p];
+      const Index i = pattern.innerIndexPtr()[p];
       if (i < j && !symmetrize) continue;  // the upper triangle mirrors the lower one
-      const std::size_t slot = Slot(std::max(i, j), std::min(i, j));
+      const Index slot = Slot(std::max(i, j), std::min(i, j));
       if (slot == kOutside) return false;
-      slot_[static_cast<std::size_t>(p)] = static_cast<std::uint32_t>(slot);
+      slot_[p] = static_cast<std::uint32_t>(slot);
       if (symmetrize && i == j) diagonal_entries_.push_back(static_cast<std::uint32_t>(p));
     }
   }
@@ -56,11 +56,11 @@ bool SymmetricBlockMatrix::Analyze(const SparseMat& pattern, const std::vector<E
   return true;
 }
 
-std::size_t SymmetricBlockMatrix::Slot(Eigen::Index row, Eigen::Index column) const {
-  const std::size_t bi = block_of_[static_cast<std::size_t>(row)], bj = block_of_[static_cast<std::size_t>(column)];
+Index SymmetricBlockMatrix::Slot(Index row, Index column) const {
+  const Index bi = block_of_[row], bj = block_of_[column];
   if (bi != bj && bi != bj + 1) return kOutside;
-  const std::size_t base = bi == bj ? diagonal_[bj] : below_[bj];
-  return base + static_cast<std::size_t>((column - starts_[bj]) * block_size(bi) + (row - starts_[bi]));
+  const Index base = bi == bj ? diagonal_[bj] : below_[bj];
+  return base + (column - starts_[bj]) * block_size(bi) + (row - starts_[bi]);
 }
 
 void SymmetricBlockMatrix::Assign(const double* values) {
@@ -70,18 +70,18 @@ void SymmetricBlockMatrix::Assign(const double* values) {
   // Halves of a symmetrized pair: 0 + ½a + ½b is ½(a + b) to the last bit (scaling by ½ is exact),
   // and a diagonal entry's two halves are the entry.
   const double weight = symmetrize_ ? 0.5 : 1.0;
-  for (std::size_t p = 0; p < slot_.size(); ++p) {
+  for (Index p = 0; p < std::ssize(slot_); ++p) {
     if (slot_[p] != kNotRead) data[slot_[p]] += weight * values[p];
   }
   for (const std::uint32_t p : diagonal_entries_) data[slot_[p]] += 0.5 * values[p];
 }
 
-void SymmetricBlockMatrix::AddOuterProduct(const std::vector<int>& indices, const std::vector<double>& values,
+void SymmetricBlockMatrix::AddOuterProduct(const std::vector<Index>& indices, const std::vector<double>& values,
                                            double scale) {
-  for (std::size_t b = 0; b < indices.size(); ++b) {
-    for (std::size_t a = 0; a < indices.size(); ++a) {
+  for (Index b = 0; b < std::ssize(indices); ++b) {
+    for (Index a = 0; a < std::ssize(indices); ++a) {
       if (indices[a] < indices[b]) continue;  // the lower triangle holds the pair
-      const std::size_t slot = Slot(indices[a], indices[b]);
+      const Index slot = Slot(indices[a], indices[b]);
       if (slot == kOutside) throw LogicError("SymmetricBlockMatrix::AddOuterProduct: an entry outside the blocks");
       values_[slot] += scale * values[a] * values[b];
     }
@@ -91,8 +91,8 @@ void SymmetricBlockMatrix::AddOuterProduct(const std::vector<int>& indices, cons
 VecX SymmetricBlockMatrix::Multiply(const std::vector<double>& values, const VecX& x) const {
   if (values.size() != values_.size()) throw LogicError("SymmetricBlockMatrix::Multiply: values of another layout");
   VecX y(x.size());
-  const std::size_t count = diagonal_.size();
-  for (std::size_t k = 0; k < count; ++k) {
+  const Index count = std::ssize(diagonal_);
+  for (Index k = 0; k < count; ++k) {
     auto out = y.segment(starts_[k], block_size(k));
     out.noalias() = BlockMap(values.data() + diagonal_[k], block_size(k), block_size(k))
                         .selfadjointView<Eigen::Lower>() * x.segment(starts_[k], block_size(k));
@@ -110,7 +110,7 @@ VecX SymmetricBlockMatrix::Multiply(const std::vector<double>& values, const Vec
 
 double SymmetricBlockMatrix::LargestDiagonal() const {
   double largest = 0.0;
-  for (std::size_t k = 0; k < diagonal_.size(); ++k) {
+  for (Index k = 0; k < std::ssize(diagonal_); ++k) {
     largest = std::max(largest, BlockMap(values_.data() + diagonal_[k], block_size(k), block_size(k))
                                     .diagonal().cwiseAbs().maxCoeff());
   }
@@ -118,7 +118,7 @@ double SymmetricBlockMatrix::LargestDiagonal() const {
 }
 
 bool SymmetricBlockMatrix::BlockDiagonal() const {
-  for (std::size_t k = 0; k < below_.size(); ++k) {
+  for (Index k = 0; k < std::ssize(below_); ++k) {
     const BlockMap block(values_.data() + below_[k], block_size(k + 1), block_size(k));
     if (!block.isZero(0.0)) return false;
   }

@@ -25,12 +25,12 @@ class SymmetricBlockMatrix {
   // entries of `pattern` (compressed, column major) into them: with `symmetrize`, A(i, j) and A(j, i)
   // each give half of the stored entry, else only the lower triangle is read. False, and unusable,
   // when the blocks do not partition the rows or an entry lies outside the block-tridiagonal shape.
-  bool Analyze(const SparseMat& pattern, const std::vector<Eigen::Index>& starts, bool symmetrize);
+  bool Analyze(const SparseMat& pattern, const std::vector<Index>& starts, bool symmetrize);
   // The values from a matrix of the analysed pattern (its values in the pattern's order).
   void Assign(const double* values);
   // A ← A + scale a aᵀ for a sparse a (`indices`, `values`) within the blocks' shape. Throws LogicError
   // for a pair of coordinates outside it.
-  void AddOuterProduct(const std::vector<int>& indices, const std::vector<double>& values, double scale);
+  void AddOuterProduct(const std::vector<Index>& indices, const std::vector<double>& values, double scale);
   // A x; the same with another set of values of this layout (`values()` of a copy).
   VecX Multiply(const VecX& x) const { return Multiply(values_, x); }
   VecX Multiply(const std::vector<double>& values, const VecX& x) const;
@@ -42,13 +42,13 @@ class SymmetricBlockMatrix {
   bool BlockDiagonal() const;
 
   bool analysed() const { return analysed_; }
-  Eigen::Index rows() const { return starts_.empty() ? 0 : starts_.back(); }
-  std::size_t block_count() const { return diagonal_.size(); }
-  Eigen::Index block_start(std::size_t k) const { return starts_[k]; }
-  Eigen::Index block_size(std::size_t k) const { return starts_[k + 1] - starts_[k]; }
-  const double* diagonal_block(std::size_t k) const { return values_.data() + diagonal_[k]; }
-  const double* below_block(std::size_t k) const { return values_.data() + below_[k]; }
-  const std::vector<Eigen::Index>& starts() const { return starts_; }
+  Index rows() const { return starts_.empty() ? 0 : starts_.back(); }
+  Index block_count() const { return std::ssize(diagonal_); }
+  Index block_start(Index k) const { return starts_[k]; }
+  Index block_size(Index k) const { return starts_[k + 1] - starts_[k]; }
+  const double* diagonal_block(Index k) const { return values_.data() + diagonal_[k]; }
+  const double* below_block(Index k) const { return values_.data() + below_[k]; }
+  const std::vector<Index>& starts() const { return starts_; }
   // The block values themselves (D_k, L_k one after the other): to keep and put back a copy.
   std::vector<double>& values() { return values_; }
   const std::vector<double>& values() const { return values_; }
@@ -56,10 +56,10 @@ class SymmetricBlockMatrix {
   bool SameLayout(const SymmetricBlockMatrix& other) const { return starts_ == other.starts_; }
 
  private:
-  std::size_t Slot(Eigen::Index row, Eigen::Index column) const;  // row ≥ column; SIZE_MAX outside
-  std::vector<Eigen::Index> starts_;
-  std::vector<std::size_t> block_of_;        // per row
-  std::vector<std::size_t> diagonal_, below_;  // offsets of D_k and L_k in values_
+  Index Slot(Index row, Index column) const;  // row ≥ column; -1 outside
+  std::vector<Index> starts_;
+  std::vector<Index> block_of_;        // per row
+  std::vector<Index> diagonal_, below_;  // offsets of D_k and L_k in values_
   std::vector<double> values_;
   // Per entry of the analysed pattern: its place (kNotRead: an upper entry, not symmetrizing), each
   // entry weighted ½ when symmetrizing, the diagonal's entries (`diagonal_entries_`) a second ½.

@@ -43,8 +43,9 @@ model::ModelInput BentMotorInput(std::optional<double> toolface) {
                              Part(model::ComponentType::Collar, "collars", 6.5, 2.8125, 90.0)};
   input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, 7850.0};
   input.gravity = 9.81;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 30.0 * kDegree, 0.0}, {2000.0, 30.0 * kDegree, 0.0}});
-  input.hole = {well::HoleSection{{}, 8.5 * kIn, {}}};
+  input.well = model::MakeWellbore(
+      well::Trajectory(std::vector<well::SurveyStation>{{0.0, 30.0 * kDegree, 0.0}, {2000.0, 30.0 * kDegree, 0.0}}),
+      std::vector<well::HoleSection>{well::HoleSection{{}, 8.5 * kIn, {}}});
   input.bit_md = 1500.0;
   input.operation.weight_on_bit = 20000.0 * 4.4482216152605;
   return input;

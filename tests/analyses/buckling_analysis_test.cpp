@@ -186,8 +186,9 @@ CollarsInAStraightHole Collars(double inclination, double wob, model::TopConditi
   input.string.components = {testing::Part(model::ComponentType::Collar, 4.75, 2.25, 30.0, 10)};
   input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, 7850.0};
   input.gravity = 9.81;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, inclination, 0.0}, {2000.0, inclination, 0.0}});
-  input.hole = {well::HoleSection{{}, 8.5 * testing::kIn, {}}};
+  input.well = model::MakeWellbore(
+      well::Trajectory(std::vector<well::SurveyStation>{{0.0, inclination, 0.0}, {2000.0, inclination, 0.0}}),
+      std::vector<well::HoleSection>{well::HoleSection{{}, 8.5 * testing::kIn, {}}});
   input.bit_md = 1500.0;
   input.operation.weight_on_bit = wob;
   input.settings.top = top;

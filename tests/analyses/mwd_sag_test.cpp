@@ -94,8 +94,9 @@ TEST(MwdSag, IsTheSlopeOfTheCollarBetweenItsStabilizers) {
   input.gravity = 9.81;
   input.settings.top = model::TopCondition::Free;
   input.settings.contact.stiffness = 1e12;  // a pin on the axis: 6e10 N/m a blade, 2e-7 m under 13 kN
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 90.0 * kDegree, 0.0}, {4000.0 * kFt, 90.0 * kDegree, 0.0}});
-  input.hole = {well::HoleSection{{}, 8.5 * kIn, {}}};
+  input.well = model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{
+                                       {0.0, 90.0 * kDegree, 0.0}, {4000.0 * kFt, 90.0 * kDegree, 0.0}}),
+                                   std::vector<well::HoleSection>{well::HoleSection{{}, 8.5 * kIn, {}}});
   input.bit_md = 3000.0 * kFt;
   cms::ReductionCache cache;
   const model::BuiltModel built = model::BuildSystemModel(input, cache);

@@ -38,7 +38,7 @@ double SoftStringTension(const model::ModelInput& input, const model::BuiltModel
     const double length = std::clamp(s - body.s_start, 0.0, body.length());
     if (length <= 0.0) break;
     const double md = input.bit_md - body.s_start - 0.5 * length;
-    tension += model::BuoyedWeightPerLength(body, input) * length * input.trajectory->Tangent(md).z();
+    tension += model::BuoyedWeightPerLength(body, input) * length * input.well->trajectory.Tangent(md).z();
   }
   return tension;
 }
@@ -139,7 +139,7 @@ TEST(RestingStart, StretchesTheStringByItsSoftStringTension) {
     const double share = b + 1 == bodies.size() ? 0.5 : 1.0;
     const double md = input.bit_md - bodies[b].s_start - 0.5 * share * bodies[b].length();
     tension += share * model::BuoyedWeightPerLength(bodies[b], input) * bodies[b].length() *
-               input.trajectory->Tangent(md).z();
+               input.well->trajectory.Tangent(md).z();
   }
   const double expected = tension * top.length() / top.axial_rigidity;
   std::printf("[ measure  ] top body stretched %.5g mm (T l/EA with T = %.1f N: %.5g mm)\n", 1e3 * stretch, tension,

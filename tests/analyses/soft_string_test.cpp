@@ -58,7 +58,7 @@ model::ModelInput InWell(std::vector<model::Component> components, std::vector<w
   input.materials["steel"] = fe::Material{"steel", 2.1e11, 0.3, kSteelDensity};
   input.gravity = kGravity;
   input.fluid = model::FluidConfig{kMudDensity, 0.02, {}, -1.0};
-  input.trajectory.emplace(std::move(survey));
+  input.well = model::MakeWellbore(well::Trajectory(std::move(survey)));
   input.bit_md = bit_md;
   return input;
 }
@@ -297,7 +297,7 @@ TEST(SoftString, BuildAndTurnWellMatchesAHandComputation) {
 // The survey with each interval cut into `parts` by stations on the same minimum-curvature path.
 model::ModelInput RefinedBuildAndTurn(int parts) {
   const model::ModelInput coarse = BuildAndTurnWell(kBuildAndTurn);
-  const well::Trajectory& path = *coarse.trajectory;
+  const well::Trajectory& path = coarse.well->trajectory;
   std::vector<well::SurveyStation> survey;
   const auto& stations = path.stations();
   for (std::size_t i = 0; i + 1 < stations.size(); ++i) {
@@ -308,7 +308,7 @@ model::ModelInput RefinedBuildAndTurn(int parts) {
   }
   survey.push_back(stations.back());
   model::ModelInput input = coarse;
-  input.trajectory.emplace(std::move(survey));
+  input.well = model::MakeWellbore(well::Trajectory(std::move(survey)), coarse.well->hole.sections());
   return input;
 }
 
@@ -444,7 +444,7 @@ TEST(SoftString, BadInputThrows) {
     return std::string("(no error)");
   };
   model::ModelInput no_well = input;
-  no_well.trajectory.reset();
+  no_well.well.reset();
   EXPECT_EQ(key(no_well), "well");
   model::ModelInput no_string = input;
   no_string.string.components.clear();

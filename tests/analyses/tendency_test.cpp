@@ -48,9 +48,9 @@ model::ModelInput PackedBha() {
   input.fluid = model::FluidConfig{1198.0, 0.02, {}, -1.0};
   input.settings.elements_per_body = 6;
   input.settings.modes_per_body = 4;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, kInclination, kAzimuth},
-                                                            {4000.0 * kFt, kInclination, kAzimuth}});
-  input.hole = {well::HoleSection{{}, 8.5 * kIn, {}}};
+  input.well = model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{
+                                       {0.0, kInclination, kAzimuth}, {4000.0 * kFt, kInclination, kAzimuth}}),
+                                   std::vector<well::HoleSection>{well::HoleSection{{}, 8.5 * kIn, {}}});
   input.bit_md = kBitMd;
   input.operation.weight_on_bit = 25000.0 * kLbf;
   return input;
@@ -65,7 +65,7 @@ model::ModelInput InBuildingHole(model::ModelInput input, double build) {
     const double sigma = arc * i / 40.0;
     stations.push_back({kBitMd - sigma, kInclination - build * sigma, kAzimuth});
   }
-  input.trajectory.emplace(stations);
+  input.well = model::MakeWellbore(well::Trajectory(stations), input.well->hole.sections());
   return input;
 }
 
@@ -85,15 +85,15 @@ TEST(TendencyHole, EndsAtTheBitAndIsTheCircleOfItsCurvature) {
   const model::ModelInput input = PackedBha();
   const HoleCurvature curvature{3.0 * kDegreesPer100Ft, -1.5 * kDegreesPer100Ft};
   const double arc = 60.0, top = kBitMd - 100.0;
-  const well::Trajectory hole = ConstantCurvatureHole(*input.trajectory, kBitMd, top, arc, curvature);
-  const well::PathFrame bit = input.trajectory->Frame(kBitMd);
-  EXPECT_LT((hole.Position(kBitMd) - input.trajectory->Position(kBitMd)).norm(), 1e-9);
+  const well::Trajectory hole = ConstantCurvatureHole(input.well->trajectory, kBitMd, top, arc, curvature);
+  const well::PathFrame bit = input.well->trajectory.Frame(kBitMd);
+  EXPECT_LT((hole.Position(kBitMd) - input.well->trajectory.Position(kBitMd)).norm(), 1e-9);
   EXPECT_LT((hole.Tangent(kBitMd) - bit.tangent).norm(), 1e-12);
   const Vec3 kappa = curvature.build * bit.high_side + curvature.right * bit.right;
   const double k = kappa.norm();
   const Vec3 n = kappa / k;
   for (const double sigma : {0.5, 17.0, 42.0, 59.5}) {
-    const Vec3 expected = input.trajectory->Position(kBitMd) - std::sin(k * sigma) / k * bit.tangent +
+    const Vec3 expected = input.well->trajectory.Position(kBitMd) - std::sin(k * sigma) / k * bit.tangent +
                           (1.0 - std::cos(k * sigma)) / k * n;
     EXPECT_LT((hole.Position(kBitMd - sigma) - expected).norm(), 1e-9) << sigma;
     EXPECT_NEAR(hole.Curvature(kBitMd - sigma).norm(), k, 1e-12 * k + 1e-15);
@@ -111,7 +111,8 @@ TEST(TendencyHole, CarryingIntoTheSameHoleChangesNothing) {
   model::ModelInput input = PackedBha();
   const model::BuiltModel built = Factory()(input);
   const StaticResult result = RunStaticInWell(input, built, StaticSettings{});
-  const VecX carried = CarryIntoHole(built.system, result.q, built.system, kBitMd, *input.trajectory, *input.trajectory);
+  const VecX carried =
+      CarryIntoHole(built.system, result.q, built.system, kBitMd, input.well->trajectory, input.well->trajectory);
   EXPECT_LT((carried - result.q).lpNorm<Eigen::Infinity>(), 1e-12);
 }
 
@@ -335,8 +336,9 @@ TEST(Tendency, PointTheBitSteersInARotatingString) {
 // stabilizer 30 ft above the near-bit one damps the fulcrum's build, more WOB lessens the pendulum's drop.
 model::ModelInput Assembly(const std::vector<double>& stabilizers_ft, double wob_klbf) {
   model::ModelInput input = PackedBha();
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 30.0 * kDegree, kAzimuth},
-                                                            {4000.0 * kFt, 30.0 * kDegree, kAzimuth}});
+  input.well = model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{
+                                       {0.0, 30.0 * kDegree, kAzimuth}, {4000.0 * kFt, 30.0 * kDegree, kAzimuth}}),
+                                   input.well->hole.sections());
   input.operation.weight_on_bit = wob_klbf * 1000.0 * kLbf;
   model::Component stabilizer = Part(model::ComponentType::Stabilizer, 6.75, 2.8125, 4.0);
   stabilizer.blade_diameter = 8.4375 * kIn;
@@ -374,7 +376,7 @@ TEST(Tendency, FulcrumBuildsPendulumDropsSecondStabilizerDampsWobLessensTheDrop)
 // small-h form of the orthotropic drillability); beds normal to the hole, or parallel to it, not at all.
 TEST(Tendency, FormationTurnsTheHoleTowardTheBeddingsNormal) {
   const double h = 0.01;
-  const well::PathFrame bit = PackedBha().trajectory->Frame(kBitMd);  // 40° toward the east
+  const well::PathFrame bit = PackedBha().well->trajectory.Frame(kBitMd);  // 40° toward the east
   const HoleCurvature flat = FormationDeviation({h, 0.0, 0.0}, bit);
   EXPECT_NEAR(flat.build, -h * std::sin(2.0 * kInclination), 1e-15);
   EXPECT_NEAR(flat.right, 0.0, 1e-15);
@@ -409,7 +411,7 @@ TEST(Tendency, RefusesAStringItCannotTake) {
   input.string.components.front().type = model::ComponentType::Collar;
   EXPECT_EQ(TendencyInputProblem(input)->first, "string");
   input = PackedBha();
-  input.trajectory.reset();
+  input.well.reset();
   EXPECT_EQ(TendencyInputProblem(input)->first, "well");
   EXPECT_FALSE(TendencyInputProblem(PackedBha()).has_value());
   // A point-the-bit system's fulcrum inside the bit, above the string's top, or on a bent motor.

@@ -52,9 +52,9 @@ model::ModelInput HorizontalHoleInput(double bit_od = kBitOd, double bit_id = kB
   input.settings.modes_per_body = 6;
   input.settings.contact.stiffness = kContactStiffness;
   input.gravity = 9.81;
-  input.trajectory.emplace(
-      std::vector<well::SurveyStation>{{0.0, kInclination, kAzimuth}, {500.0, kInclination, kAzimuth}});
-  input.hole = {well::HoleSection{{}, kHoleDiameter, {}}};
+  input.well = model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, kInclination, kAzimuth},
+                                                                                     {500.0, kInclination, kAzimuth}}),
+                                   std::vector<well::HoleSection>{well::HoleSection{{}, kHoleDiameter, {}}});
   input.bit_md = kBitMd;
   model::Support bottom = testing::SupportAt(0.0, {model::kX, model::kY, model::kZ, model::kRx});
   model::Support top = testing::SupportAt(kBitLength + kPipeLength, {model::kY, model::kZ});
@@ -235,7 +235,7 @@ TEST(WallOffsets, ResultsAtListedStationsAreTheWholeStringsThere) {
   }
   ASSERT_GE(joint, 0);
   const int top = static_cast<int>(stations.size()) - 1;
-  const std::vector<int> listed = {top, 0, joint, top / 2, 0};
+  const std::vector<Index> listed = {top, 0, joint, top / 2, 0};
   std::vector<StaticNodeResult> all = StaticNodeResults(s.built, s.result.q, 1.0);
   AddWallOffsets(s.built, s.result.q, all);
   std::vector<StaticNodeResult> some = StaticNodeResults(s.built, s.result.q, 1.0, listed);
@@ -256,7 +256,7 @@ TEST(WallOffsets, ResultsAtListedStationsAreTheWholeStringsThere) {
     EXPECT_EQ(got.clearance, expected.clearance) << listed[i];
   }
   EXPECT_GT(all[joint].force.norm(), 0.0);
-  EXPECT_THROW(AddWallOffsets(s.built, s.result.q, some, std::vector<int>{0}), std::exception);
+  EXPECT_THROW(AddWallOffsets(s.built, s.result.q, some, std::vector<Index>{0}), std::exception);
 }
 
 TEST(WallOffsets, WithoutAWellNothingIsSet) {

@@ -27,11 +27,12 @@ inline model::ModelInput KickOffToTheSouth(int pipe_joints = 30) {
   input.gravity = 9.81;
   input.fluid = model::FluidConfig{1258.0, 0.02, {}, -1.0};
   // Vertical to 2000 ft, then 6°/100 ft toward the south while turning to 225°, held at 30°.
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0},
-                                                            {2000.0 * kFt, 0.0, 180.0 * kDegree},
-                                                            {2500.0 * kFt, 30.0 * kDegree, 225.0 * kDegree},
-                                                            {4000.0 * kFt, 30.0 * kDegree, 225.0 * kDegree}});
-  input.hole = {well::HoleSection{{}, 8.5 * kIn, {}}};
+  input.well = model::MakeWellbore(
+      well::Trajectory(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0},
+                                                        {2000.0 * kFt, 0.0, 180.0 * kDegree},
+                                                        {2500.0 * kFt, 30.0 * kDegree, 225.0 * kDegree},
+                                                        {4000.0 * kFt, 30.0 * kDegree, 225.0 * kDegree}}),
+      std::vector<well::HoleSection>{well::HoleSection{{}, 8.5 * kIn, {}}});
   input.bit_md = 2700.0 * kFt;  // with 30 joints 1008 ft of string: the top is 308 ft up the vertical hole
   input.operation.weight_on_bit = 20000.0 * kLbf;
   return input;

@@ -39,7 +39,7 @@ TEST(CraigBampton, V1CantileverConvergesFromAbove) {
   const fe::BodySpec spec = V1Rod(100);
   const fe::BodyFeModel model = fe::BuildBodyFeModel(spec);
   // Planar (x-y) model with the root node removed; the tip (v, θz) is the last two DOFs.
-  const std::vector<int> dofs = SelectDofs(1, 100, {1, 5});
+  const std::vector<Index> dofs = SelectDofs(1, 100, {1, 5});
   const MatX k = Restrict(MatX(model.stiffness), dofs), m = Restrict(MatX(model.mass), dofs);
   const int n = static_cast<int>(dofs.size());
   const std::vector<double> exact = {3.516015, 22.03449, 61.69721, 120.9019};
@@ -71,10 +71,10 @@ TEST(CraigBampton, V1CantileverConvergesFromAbove) {
 TEST(CraigBampton, DegeneratePairsAreKept) {
   const fe::BodySpec spec = V1Rod(40);
   const fe::BodyFeModel model = fe::BuildBodyFeModel(spec);
-  const std::vector<int> dofs = SelectDofs(1, 40, {0, 1, 2, 3, 4, 5});
+  const std::vector<Index> dofs = SelectDofs(1, 40, {0, 1, 2, 3, 4, 5});
   const MatX k = Restrict(MatX(model.stiffness), dofs), m = Restrict(MatX(model.mass), dofs);
   const int n = static_cast<int>(dofs.size());
-  std::vector<int> tip;
+  std::vector<Index> tip;
   for (int d = n - 6; d < n; ++d) tip.push_back(d);
   const CraigBamptonBasis basis = BuildCraigBamptonBasis(k.sparseView(), m.sparseView(), tip, 4);
   // Fixed-interface eigenvalues come in equal pairs.
@@ -101,7 +101,7 @@ TEST(CraigBampton, ACountCuttingAPairKeepsTheWholePair) {
 
 // Solves K u = f with node 0 clamped (full FE model).
 VecX ClampedStatic(const fe::BodyFeModel& model, const VecX& load) {
-  const std::vector<int> free = SelectDofs(1, model.node_count() - 1, {0, 1, 2, 3, 4, 5});
+  const std::vector<Index> free = SelectDofs(1, model.node_count() - 1, {0, 1, 2, 3, 4, 5});
   const MatX k = Restrict(MatX(model.stiffness), free);
   VecX f(free.size());
   for (std::size_t i = 0; i < free.size(); ++i) f(i) = load(free[i]);
@@ -113,7 +113,7 @@ VecX ClampedStatic(const fe::BodyFeModel& model, const VecX& load) {
 
 TEST(CraigBampton, ConstraintModesMakeEndLoadStaticsExact) {
   const fe::BodyFeModel model = fe::BuildBodyFeModel(V1Rod(10));
-  std::vector<int> boundary = SelectDofs(0, 0, {0, 1, 2, 3, 4, 5});
+  std::vector<Index> boundary = SelectDofs(0, 0, {0, 1, 2, 3, 4, 5});
   for (int d = 60; d < 66; ++d) boundary.push_back(d);
   const CraigBamptonBasis basis = BuildCraigBamptonBasis(model.stiffness, model.mass, boundary, 4);
   VecX load = VecX::Zero(66);
@@ -145,7 +145,7 @@ TEST(CraigBampton, ConstraintModesMakeEndLoadStaticsExact) {
 // pointer, undefined behaviour): the basis is the constraint modes alone, still exact for end loads.
 TEST(CraigBampton, NoFixedInterfaceModesLeavesTheConstraintModes) {
   const fe::BodyFeModel model = fe::BuildBodyFeModel(V1Rod(10));
-  std::vector<int> boundary = SelectDofs(0, 0, {0, 1, 2, 3, 4, 5});
+  std::vector<Index> boundary = SelectDofs(0, 0, {0, 1, 2, 3, 4, 5});
   for (int d = 60; d < 66; ++d) boundary.push_back(d);
   const CraigBamptonBasis basis = BuildCraigBamptonBasis(model.stiffness, model.mass, boundary, 0);
   ASSERT_EQ(basis.transformation.cols(), 12);
@@ -166,7 +166,7 @@ TEST(CraigBampton, ReducedBasisBucklesAtTheEulerLoad) {
   const fe::BodyFeModel model = fe::BuildBodyFeModel(spec);
   const double euler = kPi * kPi * spec.material.youngs_modulus * spec.section.second_moment() /
                        (spec.length * spec.length);
-  std::vector<int> boundary = SelectDofs(0, 0, {0, 1, 2, 3, 4, 5});
+  std::vector<Index> boundary = SelectDofs(0, 0, {0, 1, 2, 3, 4, 5});
   for (int d = 60; d < 66; ++d) boundary.push_back(d);
   double previous = 1e300;
   for (int modes : {2, 6, 10}) {
@@ -175,7 +175,7 @@ TEST(CraigBampton, ReducedBasisBucklesAtTheEulerLoad) {
     const MatX kg =
         basis.transformation.transpose() * (model.geometric_stiffness * basis.transformation);
     // Pinned at node 0 (u, v, w, θx held) and at node 10 (v, w held): keep the other coordinates.
-    std::vector<int> kept = {4, 5, 6, 9, 10, 11};
+    std::vector<Index> kept = {4, 5, 6, 9, 10, 11};
     for (int j = 0; j < modes; ++j) kept.push_back(12 + j);
     const double p =
         LowestEigenvalues(Restrict(basis.reduced_stiffness, kept), Restrict(kg, kept), 1)(0);
@@ -288,7 +288,7 @@ TEST(CraigBampton, MoreInterfaceNodes) {
   // one fourfold (y and z, either span): the 6 asked are completed to 8.
   EXPECT_EQ(body.fixed_interface_mode_count, 8);
   EXPECT_EQ(body.flexible_count, 3 * 6 - 6 + 8);
-  EXPECT_EQ(body.interface_nodes, (std::vector<int>{0, 5, 10}));
+  EXPECT_EQ(body.interface_nodes, (std::vector<Index>{0, 5, 10}));
   const MatX m(model.mass);
   EXPECT_LT((body.mode_shapes.transpose() * m * body.mode_shapes - MatX::Identity(20, 20)).norm(),
             1e-10);

@@ -83,7 +83,7 @@ TEST(BodyFeModel, RigidBodyInertiaOfTheAssembledMass) {
 // Planar (x-y) cantilever bending frequencies, root clamped: λ of K x = ω² M x.
 VecX CantileverOmegaSquared(const BodySpec& spec, int count) {
   const BodyFeModel model = BuildBodyFeModel(spec);
-  const std::vector<int> dofs = SelectDofs(1, spec.element_count, {1, 5});
+  const std::vector<Index> dofs = SelectDofs(1, spec.element_count, {1, 5});
   return LowestEigenvalues(Restrict(MatX(model.stiffness), dofs), Restrict(MatX(model.mass), dofs),
                            count);
 }
@@ -172,7 +172,7 @@ TEST(BodyFeModel, RotaryInertiaLowersBendingFrequencies) {
 }
 
 // Lowest critical load P (compression) of K φ = P K_G φ on the kept DOFs (x-y plane).
-double CriticalLoad(const BodySpec& spec, const std::vector<int>& dofs) {
+double CriticalLoad(const BodySpec& spec, const std::vector<Index>& dofs) {
   const BodyFeModel model = BuildBodyFeModel(spec);
   return LowestEigenvalues(Restrict(MatX(model.stiffness), dofs),
                            Restrict(MatX(model.geometric_stiffness), dofs), 1)(0);
@@ -184,7 +184,7 @@ TEST(BodyFeModel, EulerBucklingLoads) {
   const double l = spec.length;
   const double pi2 = kPi * kPi;
   // Pinned-pinned (v = 0 at both ends; θz free): π² EI / L².
-  std::vector<int> pinned = SelectDofs(1, 19, {1, 5});
+  std::vector<Index> pinned = SelectDofs(1, 19, {1, 5});
   pinned.insert(pinned.begin(), 5);
   pinned.push_back(6 * 20 + 5);
   EXPECT_LT(Rel(CriticalLoad(spec, pinned), pi2 * ei / (l * l)), 1e-3);
@@ -207,7 +207,7 @@ TEST(BodyFeModel, TimoshenkoBucklingFollowsEngesser) {
   const double kga =
       spec.section.shear_coefficient(0.3) * spec.material.shear_modulus() * spec.section.area();
   ASSERT_GT(p_euler / kga, 0.05);
-  std::vector<int> pinned = SelectDofs(1, 19, {1, 5});
+  std::vector<Index> pinned = SelectDofs(1, 19, {1, 5});
   pinned.insert(pinned.begin(), 5);
   pinned.push_back(6 * 20 + 5);
   EXPECT_LT(Rel(CriticalLoad(spec, pinned), p_euler / (1 + p_euler / kga)), 1e-3);

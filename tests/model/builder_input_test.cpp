@@ -36,8 +36,9 @@ TEST(BuildSystemModel, ASectionTooThinToReduceIsAnInputError) {
 TEST(BuildSystemModel, ABitAloneInAWellHasNoWallContact) {
   ModelInput input = testing::RodInput(2, 4, 2);
   input.string.components[0].type = ComponentType::Bit;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}});
-  input.hole = {well::HoleSection{std::nullopt, 0.3, std::nullopt}};
+  input.well =
+      model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}}),
+                          std::vector<well::HoleSection>{well::HoleSection{std::nullopt, 0.3, std::nullopt}});
   input.bit_md = 100.0;
   cms::ReductionCache cache;
   EXPECT_TRUE(BuildSystemModel(input, cache).contacts.empty());

@@ -15,8 +15,8 @@ class ElementProblem : public solvers::Problem {
   ElementProblem(const SystemModel& model, int element) : model_(model), element_(*model.elements()[element]) {}
   template <class E>
   ElementProblem(const SystemModel& model, ElementHandle<E> element) : ElementProblem(model, element.index()) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX&) const override {
     ElementContribution c;

@@ -25,8 +25,9 @@ namespace fluid_inertia_test {
 ModelInput HollowRodInHole() {
   ModelInput input = testing::RodInput(3, 5, 4);
   input.string.components[0].inner_diameter = 0.0254;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}});
-  input.hole = {well::HoleSection{std::nullopt, 0.1524, std::nullopt}};
+  input.well =
+      model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}}),
+                          std::vector<well::HoleSection>{well::HoleSection{std::nullopt, 0.1524, std::nullopt}});
   input.bit_md = 50.0;
   input.fluid = FluidConfig{1200.0, 0.02, std::nullopt, -1.0};
   return input;
@@ -62,8 +63,8 @@ RandomState MakeRandomState(const SystemModel& model, std::mt19937& rng) {
 class MotionPartProblem : public solvers::Problem {
  public:
   explicit MotionPartProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
     return model_.Residual(t, q, v, a, 1.0) - model_.Residual(t, q, Zero(), Zero(), 1.0);
@@ -84,8 +85,8 @@ class MotionPartProblem : public solvers::Problem {
 class FluidProblem : public solvers::Problem {
  public:
   explicit FluidProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double, const VecX& q, const VecX& v, const VecX& a) const override {
     VecX residual = VecX::Zero(num_velocities());

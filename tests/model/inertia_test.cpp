@@ -62,8 +62,8 @@ RandomState MakeRandomState(const SystemModel& model, std::mt19937& rng, const S
 class InertiaProblem : public solvers::Problem {
  public:
   explicit InertiaProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double, const VecX& q, const VecX& v, const VecX& a) const override {
     VecX residual = VecX::Zero(num_velocities());
@@ -97,8 +97,8 @@ class InertiaProblem : public solvers::Problem {
 class MotionPartProblem : public solvers::Problem {
  public:
   explicit MotionPartProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
     return model_.Residual(t, q, v, a, 1.0) - model_.Residual(t, q, Zero(), Zero(), 1.0);

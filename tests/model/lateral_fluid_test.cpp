@@ -16,8 +16,9 @@ namespace lateral_fluid_test {
 ModelInput HollowRodInHole(double viscosity) {
   ModelInput input = testing::RodInput(4, 10, 6);
   input.string.components[0].inner_diameter = 0.0254;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}});
-  input.hole = {well::HoleSection{std::nullopt, 0.1524, std::nullopt}};
+  input.well =
+      model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {100.0, 0.0, 0.0}}),
+                          std::vector<well::HoleSection>{well::HoleSection{std::nullopt, 0.1524, std::nullopt}});
   input.bit_md = 50.0;
   input.fluid = FluidConfig{1200.0, viscosity, std::nullopt, -1.0};
   return input;
@@ -76,8 +77,7 @@ TEST(LateralFluid, ViscousAnnulusFollowsChenWambsganssAtTheFrequency) {
   EXPECT_GT(c.damping, 0.0);
   // Without a well only the bore fluid is left.
   ModelInput dry_hole = input;
-  dry_hole.trajectory.reset();
-  dry_hole.hole.clear();
+  dry_hole.well.reset();
   const BuiltModel straight = BuildSystemModel(dry_hole, cache);
   const LateralFluid no_annulus = MakeLateralFluid(dry_hole, straight.system);
   const LateralFluidMatrices bore =

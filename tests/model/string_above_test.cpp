@@ -119,9 +119,10 @@ ModelInput CollarsInAWell(TopCondition top) {
   input.settings.body_length = 5.0;
   input.settings.top = top;
   input.gravity = 9.81;
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.0, 0.0}, {500.0, 0.0, 0.0}, {1500.0, kPi / 3.0, 0.0},
-                                                           {2500.0, kPi / 3.0, 0.0}});
-  input.hole = {well::HoleSection{{}, 0.2159, {}}};
+  input.well =
+      model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{
+                              {0.0, 0.0, 0.0}, {500.0, 0.0, 0.0}, {1500.0, kPi / 3.0, 0.0}, {2500.0, kPi / 3.0, 0.0}}),
+                          std::vector<well::HoleSection>{well::HoleSection{{}, 0.2159, {}}});
   input.bit_md = 2000.0;
   input.operation.weight_on_bit = 2.0e4;
   return input;

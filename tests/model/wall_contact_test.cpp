@@ -53,8 +53,8 @@ class ForwardedElement : public ForceElement {
 class ElementsProblem : public solvers::Problem {
  public:
   explicit ElementsProblem(const SystemModel& model) : model_(model) {}
-  int num_positions() const override { return model_.num_positions(); }
-  int num_velocities() const override { return model_.num_velocities(); }
+  Index num_positions() const override { return model_.num_positions(); }
+  Index num_velocities() const override { return model_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return model_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX&) const override {
     VecX residual = VecX::Zero(num_velocities());
@@ -128,7 +128,7 @@ ModelInput PipeInput(double length, int bodies, int elements, int modes, const W
   input.settings.elements_per_body = elements;
   input.settings.modes_per_body = modes;
   input.gravity = gravity;
-  input.trajectory = wellbore.trajectory;
+  input.well = MakeWellbore(wellbore.trajectory);  // the path alone: no hole, no contact
   input.bit_md = bit_md;
   return input;
 }
@@ -307,7 +307,7 @@ TEST(NodeForceTest, MotionDependentForcesMatchCentralDifferences) {
     std::vector<std::unique_ptr<ForceElement>> elements;
     std::mt19937 rng(3);
     for (const Body& body : bodies) {
-      for (int k : {0, 2, body.node_count() - 1}) {
+      for (const Index k : {Index{0}, Index{2}, body.node_count() - 1}) {
         elements.push_back(std::make_unique<SyntheticNodeForce>(&body, k, at_point, rng));
       }
     }
@@ -606,7 +606,7 @@ StaticString SolveLyingString(double inclination_deg) {
   solvers::NewtonOptions options;
   options.increment_tolerance = 1e-10;
   options.line_search.enabled = false;
-  const solvers::StaticResult result = solvers::SolveStatic(problem, s.m.system->ReferencePositions(), options);
+  const solvers::NewtonResult result = solvers::SolveStatic(problem, s.m.system->ReferencePositions(), options);
   EXPECT_TRUE(result.converged);
   std::printf("[ measure  ] lying string at %.0f deg: %d iterations, %d load steps (%d rejected), |R| = %.2e N\n",
               inclination_deg, result.iterations, result.load_steps, result.rejected_steps, result.residual_norm);
@@ -707,8 +707,9 @@ namespace wall_contact_test {
 // default Ω_ε R_c for each contact circle, its own radius; the case's friction_velocity replaces it.
 TEST(WallContactBuilder, FrictionVelocityIsTheSpinTimesTheContactRadiusUnlessGiven) {
   ModelInput input = testing::RodInput(3, 5, 4);
-  input.trajectory.emplace(std::vector<well::SurveyStation>{{0.0, 0.5, 0.0}, {100.0, 0.5, 0.0}});
-  input.hole = {well::HoleSection{std::nullopt, 0.1524, std::nullopt}};
+  input.well =
+      model::MakeWellbore(well::Trajectory(std::vector<well::SurveyStation>{{0.0, 0.5, 0.0}, {100.0, 0.5, 0.0}}),
+                          std::vector<well::HoleSection>{well::HoleSection{std::nullopt, 0.1524, std::nullopt}});
   input.bit_md = 50.0;
   input.gravity = 9.81;
   input.settings.contact.friction = 0.25;

@@ -120,7 +120,7 @@ TEST(Calibration, TheStiffStringRecoversWhatMadeItsReadings) { Recover(40, Readi
 // any torque the bit's coefficient.
 TEST(Calibration, WhatTheReadingsCannotDetermineIsLeftOutOrRefused) {
   io::Case c = Well();
-  c.input.hole = {well::HoleSection{{}, 0.2159, {}}};
+  c.input.well = model::MakeWellbore(c.input.well->trajectory, {well::HoleSection{{}, 0.2159, {}}});
   io::RigReadings readings = Readings(Well(), 12, ReadingsModelKind::kSoft, 5u);
   for (io::RigReading& r : readings.rows) r.surface_torque.reset();
   CalibrationSettings settings;

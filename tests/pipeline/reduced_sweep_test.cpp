@@ -55,7 +55,7 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   const double displacement = LargestRelativeError(reduced.max_lateral_displacement, direct.max_lateral_displacement);
   const double ratio = LargestRelativeError(reduced.max_clearance_ratio, direct.max_clearance_ratio);
   const double stress = LargestRelativeError(reduced.max_bending_stress, direct.max_bending_stress);
-  std::printf("reduced sweep: %d basis vectors; largest errors: displacement %.3g %%, "
+  std::printf("reduced sweep: %ld basis vectors; largest errors: displacement %.3g %%, "
               "clearance ratio %.3g %%, bending stress %.3g %%; %zu critical RPMs (direct %zu)\n",
               reduced.basis_size, 100.0 * displacement,
               100.0 * ratio, 100.0 * stress, reduced.critical_rotary_speeds.size(), direct.critical_rotary_speeds.size());
@@ -89,7 +89,7 @@ TEST(ReducedSweep, MatchesTheDirectSweepOnTheBundledExample) {
   analyses::VibrationSettings thin = poor;
   thin.basis_shifts = 10;
   const auto fallback = sweep(thin);
-  std::printf("thin basis: %d vectors, check error %.3g %%\n", fallback.basis_size, 100.0 * fallback.reduced_check_error);
+  std::printf("thin basis: %ld vectors, check error %.3g %%\n", fallback.basis_size, 100.0 * fallback.reduced_check_error);
   EXPECT_GT(fallback.reduced_check_error, analyses::kReducedCheckTolerance);
   EXPECT_EQ(fallback.method, analyses::VibrationMethod::Direct);
   EXPECT_NE(fallback.method_note.find("missed the direct solve"), std::string::npos) << fallback.method_note;

@@ -287,7 +287,8 @@ TEST(Roadmap, TheStiffStringApproachesTheSoftStringAsEIGoesToZero) {
 // climb, N = w sin I / √(1 + μ_k²).
 io::Case CasedAbove150(double inclination_deg) {
   io::Case c = StraightHole(inclination_deg);
-  c.input.hole = {well::HoleSection{150.0, 0.2159, {}, true, 0.15}, well::HoleSection{{}, 0.2159, {}}};
+  c.input.well = model::MakeWellbore(
+      c.input.well->trajectory, {well::HoleSection{150.0, 0.2159, {}, true, 0.15}, well::HoleSection{{}, 0.2159, {}}});
   return c;
 }
 

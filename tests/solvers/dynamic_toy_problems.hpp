@@ -18,8 +18,8 @@ class LinearOscillator final : public Problem {
   LinearOscillator(MatX mass, MatX damping, MatX stiffness)
       : mass_(std::move(mass)), damping_(std::move(damping)), stiffness_(std::move(stiffness)) {}
 
-  int num_positions() const override { return static_cast<int>(mass_.rows()); }
-  int num_velocities() const override { return static_cast<int>(mass_.rows()); }
+  Index num_positions() const override { return mass_.rows(); }
+  Index num_velocities() const override { return mass_.rows(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX& v, const VecX& a) const override {
     return mass_ * a + damping_ * v + stiffness_ * q;
@@ -53,8 +53,8 @@ class DuffingOscillator final : public Problem {
                     double broken_above = std::numeric_limits<double>::infinity())
       : mass_(mass), k_(stiffness), k3_(cubic_stiffness), broken_above_(broken_above) {}
 
-  int num_positions() const override { return 1; }
-  int num_velocities() const override { return 1; }
+  Index num_positions() const override { return 1; }
+  Index num_velocities() const override { return 1; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX&, const VecX& a) const override {
     const double x = q[0];

@@ -26,8 +26,8 @@ class EnergyProblem final : public StaticProblem {
       : n_(n), energy_(std::move(energy)), gradient_(std::move(gradient)), hessian_(std::move(hessian)),
         force_scale_(force_scale) {}
 
-  int num_positions() const override { return n_; }
-  int num_velocities() const override { return n_; }
+  Index num_positions() const override { return n_; }
+  Index num_velocities() const override { return n_; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override { return gradient_(q); }
   SparseMat IterationMatrix(double, const VecX& q, const VecX&, const VecX&, double cK, double,
@@ -243,8 +243,8 @@ TEST(MinimizeEnergy, EndsLikeNewtonOnAConvexProblem) {
 TEST(MinimizeEnergy, AProblemWithoutAnEnergyIsRefused) {
   class NoEnergy final : public StaticProblem {
    public:
-    int num_positions() const override { return 1; }
-    int num_velocities() const override { return 1; }
+    Index num_positions() const override { return 1; }
+    Index num_velocities() const override { return 1; }
     VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
     VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override { return q; }
     SparseMat IterationMatrix(double, const VecX&, const VecX&, const VecX&, double cK, double, double cM) const override {

@@ -38,7 +38,7 @@ TEST(SolveStatic, ConvergesQuadraticallyOnANonlinearSpringChain) {
   const int n = 10;
   const double k = 1.0e3, k3 = 1.0e5, elongation = 0.1;  // f(e*) = 100 + 100 N
   SpringChain chain(n, k, k3, k * elongation + k3 * std::pow(elongation, 3));
-  const StaticResult result = SolveStatic(chain, VecX::Zero(n), PlainNewton());
+  const NewtonResult result = SolveStatic(chain, VecX::Zero(n), PlainNewton());
   ASSERT_TRUE(result.converged);
   EXPECT_LT((result.q - ChainEquilibrium(n, elongation)).norm(), 1e-9);
   // Order of convergence p_k = ln(r_{k+1}/r_k) / ln(r_k/r_{k−1}) → 2 for Newton; taken where
@@ -83,7 +83,7 @@ TEST(SolveStatic, LoadSteppingReachesFullLoadWherePlainNewtonFails) {
   NewtonOptions stepping = plain;
   stepping.load_stepping.enabled = true;
   stepping.load_stepping.min_step = 1e-6;
-  const StaticResult result = SolveStatic(chain, VecX::Zero(n), stepping);
+  const NewtonResult result = SolveStatic(chain, VecX::Zero(n), stepping);
   ASSERT_TRUE(result.converged);
   EXPECT_EQ(result.load_factor, 1.0);
   EXPECT_GT(result.load_steps, 1);
@@ -101,7 +101,7 @@ TEST(SolveStatic, AnIterationBudgetEndsALongContinuationWithAMessage) {
   stepping.max_iterations = 20;
   stepping.load_stepping.enabled = true;
   stepping.load_stepping.min_step = 1e-6;
-  const StaticResult free_run = SolveStatic(chain, VecX::Zero(n), stepping);
+  const NewtonResult free_run = SolveStatic(chain, VecX::Zero(n), stepping);
   ASSERT_TRUE(free_run.converged);
   ASSERT_GT(free_run.iterations, 8);
   stepping.max_total_iterations = 8;
@@ -114,7 +114,7 @@ TEST(SolveStatic, AnIterationBudgetEndsALongContinuationWithAMessage) {
     EXPECT_THAT(std::string(error.what()), Not(HasSubstr("cut below the minimum")));
   }
   stepping.throw_on_failure = false;
-  const StaticResult stopped = SolveStatic(chain, VecX::Zero(n), stepping);
+  const NewtonResult stopped = SolveStatic(chain, VecX::Zero(n), stepping);
   EXPECT_FALSE(stopped.converged);
   EXPECT_LT(stopped.load_factor, 1.0);
   EXPECT_LE(stopped.iterations, 8 + stepping.max_iterations);
@@ -149,7 +149,7 @@ TEST(SolveStatic, FollowsAVonMisesTrussUpToNearItsLimitPoint) {
   const double w_exact = 0.035;  // the limit point is at w ≈ 0.042 m
   VonMisesTruss truss(1.0e7, 1.0, 0.1, probe.InternalForce(w_exact));
   ASSERT_GT(probe.InternalForce(w_exact), 0.97 * probe.LimitLoad());
-  const StaticResult result = SolveStatic(truss, VecX::Zero(1));
+  const NewtonResult result = SolveStatic(truss, VecX::Zero(1));
   ASSERT_TRUE(result.converged);
   EXPECT_NEAR(result.q[0], w_exact, 1e-10);
 }
@@ -163,7 +163,7 @@ TEST(SolveStatic, StopsAtTheLimitPointAndSaysWhere) {
   NewtonOptions options;
   options.throw_on_failure = false;
   options.load_stepping.min_step = 1e-5;
-  const StaticResult result = SolveStatic(truss, VecX::Zero(1), options);
+  const NewtonResult result = SolveStatic(truss, VecX::Zero(1), options);
   EXPECT_FALSE(result.converged);
   const double limit_factor = probe.LimitLoad() / load;
   EXPECT_LE(result.load_factor, limit_factor);
@@ -199,7 +199,7 @@ TEST(SolveStatic, LineSearchRescuesAStepIntoTheInvalidDomain) {
   }
   NewtonOptions searched = plain;
   searched.line_search.enabled = true;
-  const StaticResult result = SolveStatic(problem, start, searched);
+  const NewtonResult result = SolveStatic(problem, start, searched);
   ASSERT_TRUE(result.converged);
   EXPECT_NEAR(result.q[0], 4.0, 1e-7);
 }
@@ -213,7 +213,7 @@ TEST(SolveStatic, LineSearchCutsTheOvershootOfAHardeningChain) {
   NewtonOptions options = PlainNewton();
   options.max_iterations = 20;
   options.line_search.enabled = true;
-  const StaticResult result = SolveStatic(chain, VecX::Zero(n), options);
+  const NewtonResult result = SolveStatic(chain, VecX::Zero(n), options);
   ASSERT_TRUE(result.converged);
   EXPECT_LE(result.iterations, 10);
   EXPECT_LT((result.q - ChainEquilibrium(n, elongation)).cwiseAbs().maxCoeff(), 1e-9);
@@ -239,7 +239,7 @@ TEST(SolveStatic, ReportsWhereAndWhyForAnUnsolvableProblem) {
     EXPECT_THAT(message, HasSubstr("iterations in this step"));
   }
   options.throw_on_failure = false;
-  const StaticResult result = SolveStatic(problem, VecX::Constant(1, 0.7), options);
+  const NewtonResult result = SolveStatic(problem, VecX::Constant(1, 0.7), options);
   EXPECT_FALSE(result.converged);
   EXPECT_EQ(result.load_factor, 0.0);
   EXPECT_EQ(result.q[0], 0.7);
@@ -284,7 +284,7 @@ TEST(SolveStatic, IncrementToleranceStopsAtRoundOff) {
   NewtonOptions options = PlainNewton();
   options.residual_tolerance = 1e-20;
   options.increment_tolerance = 1e-13;
-  const StaticResult result = SolveStatic(chain, VecX::Zero(n), options);
+  const NewtonResult result = SolveStatic(chain, VecX::Zero(n), options);
   ASSERT_TRUE(result.converged);
   EXPECT_LT((result.q - ChainEquilibrium(n, 0.1)).norm(), 1e-11);
   options.increment_tolerance = 0.0;
@@ -297,8 +297,8 @@ class ReusableChain final : public StaticProblem {
  public:
   ReusableChain(int n, double k, double k3, double load, bool reusable = true)
       : chain_(n, k, k3, load), reusable_(reusable) {}
-  int num_positions() const override { return chain_.num_positions(); }
-  int num_velocities() const override { return chain_.num_velocities(); }
+  Index num_positions() const override { return chain_.num_positions(); }
+  Index num_velocities() const override { return chain_.num_velocities(); }
   VecX Increment(const VecX& q, const VecX& dv) const override { return chain_.Increment(q, dv); }
   VecX Residual(double t, const VecX& q, const VecX& v, const VecX& a) const override {
     return chain_.Residual(t, q, v, a);
@@ -320,7 +320,7 @@ class ReusableChain final : public StaticProblem {
 TEST(SolveStatic, ReusesTheIterationMatrixWhenAllowed) {
   // Linear chain (k3 = 0): one matrix, one iteration, exact answer q_i = i P / k.
   ReusableChain linear(8, 500.0, 0.0, 10.0);
-  const StaticResult exact = SolveStatic(linear, VecX::Zero(8));
+  const NewtonResult exact = SolveStatic(linear, VecX::Zero(8));
   ASSERT_TRUE(exact.converged);
   EXPECT_EQ(linear.matrices, 1);
   EXPECT_EQ(exact.iterations, 1);
@@ -331,7 +331,7 @@ TEST(SolveStatic, ReusesTheIterationMatrixWhenAllowed) {
   ReusableChain chain(8, k, k3, k * elongation + k3 * std::pow(elongation, 3));
   NewtonOptions options;
   options.max_iterations = 60;
-  const StaticResult result = SolveStatic(chain, VecX::Zero(8), options);
+  const NewtonResult result = SolveStatic(chain, VecX::Zero(8), options);
   ASSERT_TRUE(result.converged);
   EXPECT_LT(chain.matrices, result.iterations);
   // Linear convergence stops just below |R| ≤ 1e-8 × 110 N; the position error is then bounded
@@ -350,12 +350,12 @@ TEST(SolveStatic, KeepsTheFactorizationWhileTheResidualContracts) {
   NewtonOptions options = PlainNewton();
   options.max_iterations = 40;
   ReusableChain plain(n, k, k3, k * elongation + k3 * std::pow(elongation, 3), false);
-  const StaticResult full = SolveStatic(plain, start, options);
+  const NewtonResult full = SolveStatic(plain, start, options);
   ASSERT_TRUE(full.converged);
   EXPECT_EQ(plain.matrices, full.iterations);
   options.reuse_contraction = 0.25;
   ReusableChain kept(n, k, k3, k * elongation + k3 * std::pow(elongation, 3), false);
-  const StaticResult modified = SolveStatic(kept, start, options);
+  const NewtonResult modified = SolveStatic(kept, start, options);
   ASSERT_TRUE(modified.converged);
   EXPECT_LT(kept.matrices, modified.iterations);
   EXPECT_LT((modified.q - ChainEquilibrium(n, elongation)).cwiseAbs().maxCoeff(), 1e-8);
@@ -372,8 +372,8 @@ TEST(SolveStatic, RejectsAStartOfTheWrongSize) {
 // tension). From rest, Newton's first step wants x₁ = 1/ε = 1e6.
 class SoftAndStiff final : public StaticProblem {
  public:
-  int num_positions() const override { return 2; }
-  int num_velocities() const override { return 2; }
+  Index num_positions() const override { return 2; }
+  Index num_velocities() const override { return 2; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
     VecX r(2);
@@ -412,16 +412,16 @@ TEST(SolveStatic, MassShiftSolvesAgainInsteadOfCuttingAndReachesTheSameRoot) {
   // top is: docs/validation.md, the 3 km bench.)
   NewtonOptions options = SoftAndStiffOptions();
   SoftAndStiff cut_problem;
-  const StaticResult cut = SolveStatic(cut_problem, VecX::Zero(2), options);
+  const NewtonResult cut = SolveStatic(cut_problem, VecX::Zero(2), options);
   options.mass_shift = true;
   int resolved = 0;
   options.log = [&](const std::string& line) { resolved += line.find("not acceptable with shift") != std::string::npos; };
   SoftAndStiff shifted_problem;
-  const StaticResult shifted = SolveStatic(shifted_problem, VecX::Zero(2), options);
+  const NewtonResult shifted = SolveStatic(shifted_problem, VecX::Zero(2), options);
   ASSERT_TRUE(cut.converged);
   ASSERT_TRUE(shifted.converged);
   const double root = 1.0 - SoftAndStiff::kSoft / 3.0;  // x³ + εx = 1 to first order in ε
-  for (const StaticResult* result : {&cut, &shifted}) {
+  for (const NewtonResult* result : {&cut, &shifted}) {
     EXPECT_NEAR(result->q[0], root, 1e-9);
     EXPECT_NEAR(result->q[1], 1.0, 1e-12);
   }
@@ -443,12 +443,12 @@ TEST(SolveStatic, MassShiftEndGameFinishesWithPlainNewtonOnceNearTheRoot) {
   NewtonOptions options = SoftAndStiffOptions();
   options.mass_shift = true;
   SoftAndStiff plain_problem;
-  const StaticResult plain = SolveStatic(plain_problem, VecX::Zero(2), options);
+  const NewtonResult plain = SolveStatic(plain_problem, VecX::Zero(2), options);
   options.end_game_residual = 0.5;
   int end_game_steps = 0;
   options.log = [&](const std::string& line) { end_game_steps += line.find("end game") != std::string::npos; };
   SoftAndStiff problem;
-  const StaticResult finished = SolveStatic(problem, VecX::Zero(2), options);
+  const NewtonResult finished = SolveStatic(problem, VecX::Zero(2), options);
   ASSERT_TRUE(plain.converged);
   ASSERT_TRUE(finished.converged);
   const double root = 1.0 - SoftAndStiff::kSoft / 3.0;
@@ -469,8 +469,8 @@ TEST(SolveStatic, MassShiftEndGameFinishesWithPlainNewtonOnceNearTheRoot) {
 class FarStiffSprings final : public StaticProblem {
  public:
   explicit FarStiffSprings(bool tells_resolution) : tells_resolution_(tells_resolution) {}
-  int num_positions() const override { return 2; }
-  int num_velocities() const override { return 2; }
+  Index num_positions() const override { return 2; }
+  Index num_velocities() const override { return 2; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
     const double first = kStiffness * (q[0] - kWall), second = kStiffness * (q[1] - q[0] - kLength);
@@ -503,7 +503,7 @@ TEST(SolveStatic, ToleranceNeverBelowTheResidualsRoundoffFloor) {
       (VecX(2) << FarStiffSprings::kWall + 1e-3, FarStiffSprings::kWall + FarStiffSprings::kLength + 3e-3).finished();
   const double end = FarStiffSprings::kWall + FarStiffSprings::kLength + 2.0 * FarStiffSprings::kLoad / FarStiffSprings::kStiffness;
   FarStiffSprings told(true);
-  const StaticResult solved = SolveStatic(told, start, options);
+  const NewtonResult solved = SolveStatic(told, start, options);
   const double unit = std::numeric_limits<double>::epsilon() * (FarStiffSprings::kWall + FarStiffSprings::kLength);
   std::printf("round-off tolerance %.3e N (k ε |q| = %.3e N), |R| %.3e N, %d iterations\n", solved.tolerance,
               FarStiffSprings::kStiffness * unit, solved.residual_norm, solved.iterations);

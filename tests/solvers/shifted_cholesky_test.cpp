@@ -119,7 +119,7 @@ TEST_P(ShiftedCholeskyTest, OuterProductsSwitchOnAndBack) {
   ShiftedCholesky cholesky = Make(k, m);
   const int n = 6 * Blocks();
   const MatX before = Stiffness(cholesky, n);
-  const std::vector<int> indices{6, 7, 9};
+  const std::vector<Index> indices{6, 7, 9};
   const std::vector<double> values{1.0, -2.0, 0.5};
   cholesky.AddOuterProduct(indices, values, 4.0);
   MatX expected = before;

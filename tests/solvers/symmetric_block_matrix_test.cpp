@@ -65,7 +65,7 @@ TEST(SymmetricBlockMatrix, AddsAnOuterProductWithinTheBlocks) {
   SymmetricBlockMatrix blocks;
   ASSERT_TRUE(InBlocks(a, true, blocks));
   const std::vector<double> kept = blocks.values();
-  const std::vector<int> indices = {10, 4, 8};  // blocks 2 and 1: neighbours
+  const std::vector<Index> indices = {10, 4, 8};  // blocks 2 and 1: neighbours
   const std::vector<double> values = {0.5, -2.0, 1.5};
   blocks.AddOuterProduct(indices, values, 3.0);
   VecX v = VecX::Zero(a.rows());

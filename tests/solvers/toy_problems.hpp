@@ -19,8 +19,8 @@ class SpringChain final : public StaticProblem {
   SpringChain(int n, double k, double k3, double tip_load)
       : n_(n), k_(k), k3_(k3), tip_load_(tip_load) {}
 
-  int num_positions() const override { return n_; }
-  int num_velocities() const override { return n_; }
+  Index num_positions() const override { return n_; }
+  Index num_velocities() const override { return n_; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
 
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
@@ -72,8 +72,8 @@ class VonMisesTruss final : public StaticProblem {
   VonMisesTruss(double axial_stiffness, double half_span, double height, double load)
       : ea_(axial_stiffness), b_(half_span), h_(height), load_(load) {}
 
-  int num_positions() const override { return 1; }
-  int num_velocities() const override { return 1; }
+  Index num_positions() const override { return 1; }
+  Index num_velocities() const override { return 1; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
 
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
@@ -117,8 +117,8 @@ class ScalarProblem final : public StaticProblem {
   ScalarProblem(ResidualFn residual, DerivativeFn derivative)
       : residual_(residual), derivative_(derivative) {}
 
-  int num_positions() const override { return 1; }
-  int num_velocities() const override { return 1; }
+  Index num_positions() const override { return 1; }
+  Index num_velocities() const override { return 1; }
   VecX Increment(const VecX& q, const VecX& dv) const override { return q + dv; }
   VecX Residual(double, const VecX& q, const VecX&, const VecX&) const override {
     return VecX::Constant(1, residual_(q[0], load_factor_));
@@ -149,8 +149,8 @@ class SpringHeldRigidBody final : public Problem {
       : mass_(mass), inertia_(inertia), k_(stiffness), p_(point_body), y_(anchor_world),
         g_(gravity) {}
 
-  int num_positions() const override { return 7; }
-  int num_velocities() const override { return 6; }
+  Index num_positions() const override { return 7; }
+  Index num_velocities() const override { return 6; }
 
   static Quat Orientation(const VecX& q) { return Quat(q[3], q[4], q[5], q[6]); }
 

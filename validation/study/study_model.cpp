@@ -86,7 +86,7 @@ double TipDeflection(const ModelConfig& config, const model::Load& load, cms::Re
   solvers::NewtonOptions options;  // as recommended for this model (model-orientation notes)
   options.increment_tolerance = 1e-10;
   options.line_search.enabled = false;
-  const solvers::StaticResult result = solvers::SolveStatic(problem, built.system.ReferencePositions(), options);
+  const solvers::NewtonResult result = solvers::SolveStatic(problem, built.system.ReferencePositions(), options);
   const model::Body& tip_body = built.system.bodies().back();
   return built.system.Poses(result.q).back().NodePosition(tip_body, tip_body.node_count() - 1).y();
 }
