@@ -113,7 +113,7 @@ struct DoglegFatigue {
   double utilisation = 0.0;            // the largest fatigue utilisation in it
   double md = 0.0;                     // m, where
   double curvature = 0.0;              // 1/m, the hole's there
-  int component = -1;                  // index in the string
+  Index component = -1;                // index in the string
 };
 // The doglegs of a rotating string's limits (ComputeStringLimits' nodes), by MD from the shallowest.
 std::vector<DoglegFatigue> FatigueDoglegs(const StringLimits& limits);
